@@ -1,0 +1,232 @@
+/* ast.h — the syntax tree produced by the parser (and, later, the XML importer).
+ *
+ * The tree is plain data: every node carries its source location, and later stages
+ * (check.c, lower.c) read it without changing it.  Lists are growable arrays. */
+#ifndef SPHC_AST_H
+#define SPHC_AST_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+typedef struct {
+    const char *file; /* path as given on the command line (or the stdlib file) */
+    int line, col;    /* 1-based */
+} SrcLoc;
+
+/* ---------------------------------------------------------------- expressions */
+
+typedef enum {
+    EX_NUM,    /* num                                         */
+    EX_NAME,   /* name: variable, constant, parameter, local  */
+    EX_VEC,    /* [a, b, c]: args                             */
+    EX_UNARY,  /* op args[0]            (op: '-', '!' = not)  */
+    EX_BINARY, /* args[0] op args[1]                           */
+    EX_CALL,   /* name(args...)  (functions, if(c,a,b) too)   */
+    EX_SKIP    /* the keyword skip                            */
+} ExprKind;
+
+/* Binary and unary operators. */
+typedef enum {
+    OP_ADD, OP_SUB, OP_MUL, OP_DIV, OP_POW,
+    OP_LT, OP_GT, OP_LE, OP_GE, OP_EQ, OP_NE,
+    OP_AND, OP_OR,
+    OP_NEG, OP_NOT
+} OpKind;
+
+typedef struct Expr Expr;
+struct Expr {
+    ExprKind kind;
+    SrcLoc loc;
+    double num;     /* EX_NUM */
+    char *name;     /* EX_NAME, EX_CALL */
+    OpKind op;      /* EX_UNARY, EX_BINARY */
+    Expr **args;    /* EX_VEC, EX_UNARY (1), EX_BINARY (2), EX_CALL */
+    int nargs;
+};
+
+/* "key value" pair: scene settings, body settings, named arguments of a call
+ * such as box(from [..] to [..]) or svk(density 1000, shear 0.7e6). */
+typedef struct {
+    char *key;
+    SrcLoc loc;
+    Expr **values; /* one or more, comma separated in the source */
+    int nvalues;
+} Setting;
+
+typedef struct {
+    Setting *items;
+    int n;
+} SettingList;
+
+/* name(named args): shapes and material uses. */
+typedef struct {
+    char *name;
+    SrcLoc loc;
+    SettingList args;
+} NamedCall;
+
+/* ---------------------------------------------------------------- material laws */
+
+typedef enum {
+    MS_LET,    /* let name = expr                        */
+    MS_STRESS, /* stress name = expr   (2nd Piola-Kirchhoff) */
+    MS_ENERGY, /* energy name = expr   (strain energy density) */
+    MS_STATE,  /* state name = expr    (initial value; later issues) */
+    MS_IF,     /* if cond { body } else { orelse }        */
+    MS_BLOCK   /* named block, e.g. tension { ... }       */
+} MatStmtKind;
+
+typedef struct MatStmt MatStmt;
+typedef struct {
+    MatStmt *items;
+    int n;
+} MatStmtList;
+
+struct MatStmt {
+    MatStmtKind kind;
+    SrcLoc loc;
+    char *name;        /* LET/STRESS/ENERGY/STATE target, BLOCK name */
+    Expr *value;       /* LET/STRESS/ENERGY/STATE value, IF condition */
+    MatStmtList body;  /* IF then-part, BLOCK contents */
+    MatStmtList orelse;/* IF else-part */
+};
+
+typedef struct {
+    char *name;
+    SrcLoc loc;
+    char **params; /* parameter names, e.g. lambda, mu */
+    SrcLoc *param_locs;
+    int nparams;
+    MatStmtList body;
+} MaterialDef;
+
+/* ---------------------------------------------------------------- bodies */
+
+/* Shapes: a primitive call or a union/difference of shapes. */
+typedef struct ShapeExpr ShapeExpr;
+struct ShapeExpr {
+    char op;           /* 0 = primitive, '+' = union, '-' = difference */
+    SrcLoc loc;
+    NamedCall prim;    /* op == 0: box(...), cylinder(...), sphere(...) */
+    ShapeExpr *lhs, *rhs;
+};
+
+typedef enum { BC_VELOCITY, BC_FORCE } BcKind;
+typedef enum { FORCE_NONE, FORCE_POINT, FORCE_SURFACE, FORCE_ACCEL } ForceKind;
+
+/* velocity x, z = expr [from t0] [to t1] [near shape]
+ * force surface z = expr [from t0] [to t1] [near shape] */
+typedef struct {
+    BcKind kind;
+    ForceKind force;   /* BC_FORCE only */
+    SrcLoc loc;
+    int comps;         /* bit mask: 1 = x, 2 = y, 4 = z */
+    SrcLoc comps_loc;
+    Expr *value;
+    Expr *t_from;      /* NULL: from the start */
+    Expr *t_to;        /* NULL: until the end */
+    ShapeExpr *near;   /* NULL: the whole body */
+} BcDecl;
+
+/* measure name plane [p1] [p2] [p3] [p4] */
+typedef struct {
+    char *name;
+    SrcLoc loc;
+    Expr *points[4];
+} MeasureDecl;
+
+typedef enum {
+    BI_SHAPE,    /* shape <shape expr>               */
+    BI_MATERIAL, /* material name(named args)        */
+    BI_SETTING,  /* refine 4, viscosity 0.015, 0.01  */
+    BI_BC,       /* velocity / force                  */
+    BI_MEASURE,  /* measure ...                       */
+    BI_NOTCH     /* notch [p1] [p2] [p3] [p4] (fracture, later) */
+} BodyItemKind;
+
+typedef struct {
+    BodyItemKind kind;
+    SrcLoc loc;
+    ShapeExpr *shape;
+    NamedCall material;
+    Setting setting;
+    BcDecl bc;
+    MeasureDecl measure;
+} BodyItem;
+
+typedef struct {
+    char *name;
+    SrcLoc loc;
+    BodyItem *items;
+    int n;
+} BodyDecl;
+
+/* ---------------------------------------------------------------- expectations */
+
+/* expect period tip.uz = 0.2553 within 3%
+ * expect amplitude tip.uz = 23.2e-3 within 5%
+ * expect energy within 2%
+ * reference tip.uz = expr(t)                                     */
+typedef enum { EXPECT_PERIOD, EXPECT_AMPLITUDE, EXPECT_ENERGY, EXPECT_REFERENCE } ExpectKind;
+
+typedef struct {
+    ExpectKind kind;
+    SrcLoc loc;
+    char *measure;     /* "tip" (NULL for energy) */
+    char *quantity;    /* "uz", "fx", ...          */
+    SrcLoc target_loc;
+    Expr *value;       /* expected value, or reference expression of t */
+    Expr *tolerance;   /* percent; NULL for a bare reference */
+} ExpectDecl;
+
+/* ---------------------------------------------------------------- top level */
+
+typedef enum { IT_IMPORT, IT_SCENE, IT_LET, IT_FN, IT_MATERIAL, IT_BODY, IT_EXPECT } ItemKind;
+
+typedef struct {
+    ItemKind kind;
+    SrcLoc loc;
+    char *name;          /* IMPORT module, LET/FN name */
+    Expr *value;         /* LET value, FN body */
+    char **params;       /* FN parameters */
+    int nparams;
+    SettingList scene;   /* IT_SCENE */
+    MaterialDef material;/* IT_MATERIAL */
+    BodyDecl body;       /* IT_BODY */
+    ExpectDecl expect;   /* IT_EXPECT */
+} Item;
+
+typedef struct {
+    Item *items;
+    int n;
+    const char *file;    /* main model file */
+} Program;
+
+/* ---------------------------------------------------------------- construction (ast.c) */
+
+Expr *ast_num(SrcLoc loc, double v);
+Expr *ast_name(SrcLoc loc, const char *name);
+Expr *ast_unary(SrcLoc loc, OpKind op, Expr *a);
+Expr *ast_binary(SrcLoc loc, OpKind op, Expr *a, Expr *b);
+Expr *ast_call(SrcLoc loc, const char *name, Expr **args, int nargs);
+Expr *ast_vec(SrcLoc loc, Expr **args, int nargs);
+Expr *ast_skip(SrcLoc loc);
+
+/* Append helpers for the growable arrays (ast.c). */
+void ast_push_expr(Expr ***arr, int *n, Expr *e);
+void ast_push_setting(SettingList *l, Setting s);
+void ast_push_matstmt(MatStmtList *l, MatStmt s);
+void ast_push_bodyitem(BodyDecl *b, BodyItem it);
+void ast_push_item(Program *p, Item it);
+void ast_push_name(char ***arr, SrcLoc **locs, int *n, const char *name, SrcLoc loc);
+
+/* Parse a model file into prog (appending its items).  Returns the number of
+ * errors reported (0 on success).  Errors go to stderr as file:line:col. */
+int parse_file(const char *path, Program *prog);
+
+/* Print the tree (sphc --dump=ast). */
+void ast_dump(const Program *p, FILE *out);
+
+const char *op_spelling(OpKind op);
+
+#endif

@@ -1,0 +1,212 @@
+/* sphrt.h — the contract between generated model code and the sphc runtime (libsphrt).
+ *
+ * Generated code (model.c) fills an sph_model with the scene description and the
+ * scene-specific passes (forces, boundary conditions, integrator), then calls sph_main().
+ * The runtime builds particles, neighbour lists and kernel gradients, runs the time loop,
+ * controls dt, monitors stability and writes the output.
+ *
+ * Conventions
+ *  - Vectors of a body are stored compactly with `dim` components: in 2D (plane strain in
+ *    the x–z plane) component 0 is x and component 1 is z; y is the constant out-of-plane
+ *    coordinate `body->y_plane`.  sph_axis(dim, k) gives the 3D axis of component k.
+ *  - Tensors of a body are stored per particle, row-major, dim×dim (`T[i*dim*dim + r*dim + c]`),
+ *    except F, which is stored 3×3 (`F[i*9 + r*3 + c]`) so that 2D plane-strain values
+ *    (F_yy = 1) and 3D values share one layout for output.
+ *  - Pairs are stored per particle (CSR, both directions): nb_start[i] .. nb_start[i+1]-1.
+ *    nb_w[p*dim + k] = V_j ∂W(X_i - X_j)/∂X_i^k  (uncorrected gradient times the neighbour
+ *    volume).  The corrected gradient is L_i · that (body->L).
+ */
+#ifndef SPHRT_H
+#define SPHRT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ------------------------------------------------------------------ geometry */
+
+typedef enum { SPH_BOX, SPH_CYLINDER, SPH_SPHERE } sph_shape_kind;
+
+typedef struct {
+    sph_shape_kind kind;
+    double a[3]; /* box: min corner   cylinder: axis start   sphere: centre */
+    double b[3]; /* box: max corner   cylinder: axis end                    */
+    double r;    /* cylinder, sphere: radius                                */
+    int subtract;/* 1: this primitive is removed from the union of the previous ones */
+} sph_shape;
+
+typedef struct {
+    const sph_shape *prims;
+    int n;
+} sph_region;
+
+/* 1 when point p (3D) lies in the region (union/difference of its primitives). */
+int sph_region_contains(const sph_region *r, const double p[3]);
+/* Distance from p to the region (0 inside). */
+double sph_region_distance(const sph_region *r, const double p[3]);
+
+/* Fill a region with particles on the lattice of spacing dx.  Lattice points are cell
+ * centres: lo + (k + 1/2) dx along each axis, where lo is the region's bounding-box
+ * minimum; a point is kept when it lies inside the region.  In 2D only x and z vary and
+ * every particle gets y = y_plane.  Returns the number of particles and sets *X to a
+ * malloc'ed array of n*dim coordinates (x,z in 2D; x,y,z in 3D). */
+int sph_fill_region(const sph_region *r, int dim, double dx, double y_plane, double **X);
+
+/* ------------------------------------------------------------------ kernels */
+
+typedef enum { SPH_WENDLAND = 0, SPH_CUBIC = 1 } sph_kernel_kind;
+
+/* Kernel value and dW/dr / r (so that grad W = (X_i - X_j) * dwdr_over_r).  h is the
+ * smoothing length; the support is 2h for both kernels. */
+double sph_kernel_w(sph_kernel_kind k, int dim, double r, double h);
+double sph_kernel_dwdr_over_r(sph_kernel_kind k, int dim, double r, double h);
+
+/* ------------------------------------------------------------------ neighbours */
+
+/* Cell-list search in the reference configuration: pairs (i, j), j != i, with
+ * |X_i - X_j| < radius and, when range > 0, |X_i^k - X_j^k| <= (range + 0.01) dx for
+ * every component k (SoliDualSPHysics' nbsrange).  Output in CSR form, each list sorted
+ * by j.  *start has n+1 entries. */
+void sph_neighbours(const double *X, int n, int dim, double radius, int range, double dx,
+                    int **start, int **nb);
+/* The O(n^2) reference used by the tests. */
+void sph_neighbours_brute(const double *X, int n, int dim, double radius, int range,
+                          double dx, int **start, int **nb);
+
+/* For every pair: w = V_j grad_i W_ij (dim values per pair, malloc'ed) and every
+ * particle's correction matrix L_i = M_i^{-T}, M_i = sum_j V_j (X_j - X_i) ⊗ grad_i W_ij,
+ * so that sum_j V_j (X_j - X_i) ⊗ (L_i grad_i W_ij) = I exactly (dim×dim per particle,
+ * malloc'ed).  Where M_i is singular (too few neighbours) L_i = I. */
+void sph_gradients(const double *X, int n, int dim, const int *start, const int *nb,
+                   sph_kernel_kind kernel, double h, double vol, double **w, double **L);
+
+/* ------------------------------------------------------------------ model description */
+
+typedef enum { SPH_VERLET = 0, SPH_SYMPLECTIC = 1 } sph_integrator;
+
+/* A measurement plane: quad p[0..3]; particles whose cell the plane cuts
+ * (distance <= dx/2, projection inside the quad grown by dx/2) are measured.
+ * In 2D the y direction is ignored. */
+typedef struct {
+    const char *name;
+    double p[4][3];
+} sph_measure_desc;
+
+/* A boundary condition's static part; the value comes from generated code. */
+typedef struct {
+    int has_near;       /* restricted to particles near a region */
+    sph_region near;    /* within dx of this region (reference configuration) */
+} sph_bc_desc;
+
+typedef struct sph_body sph_body;
+typedef struct sph_sim sph_sim;
+
+typedef struct {
+    const char *name;
+    sph_region region;
+    int refine;         /* mapfac */
+    int nbsrange;       /* 0: full kernel support */
+    double rho0;        /* density */
+    double c0;          /* reference sound speed, eq. 59 */
+    double y_plane;     /* 2D: y of the plane */
+    const sph_bc_desc *bcs;
+    int nbcs;
+    const sph_measure_desc *measures;
+    int nmeasures;
+} sph_body_desc;
+
+/* Expectations, checked at the end of the run and written to summary.json. */
+typedef enum { SPH_EXPECT_PERIOD, SPH_EXPECT_AMPLITUDE, SPH_EXPECT_ENERGY,
+               SPH_EXPECT_REFERENCE } sph_expect_kind;
+
+typedef struct {
+    sph_expect_kind kind;
+    const char *text;      /* the model line, for reports */
+    int body, measure;     /* which measurement (-1 for energy) */
+    int quantity;          /* 0..2 = ux uy uz, 3..5 = fx fy fz */
+    double value;          /* expected value (period, amplitude) */
+    double tolerance;      /* relative, e.g. 0.03; < 0: report only */
+    double (*reference)(double t); /* SPH_EXPECT_REFERENCE */
+} sph_expect_desc;
+
+typedef struct {
+    const char *name;      /* model name, used for the default output folder */
+    const char *source;    /* model file */
+    int dim;
+    double dp;
+    sph_kernel_kind kernel;
+    double coefh;
+    sph_integrator integrator;
+    double cfl;
+    double dtmin_coef;
+    double dt_fixed;       /* > 0: fixed time step */
+    double t_end;
+    double t_out;
+    double gravity[3];
+    const sph_body_desc *bodies;
+    int nbodies;
+    const sph_expect_desc *expects;
+    int nexpects;
+
+    /* Generated passes. */
+    /* Apply velocity boundary conditions at time t (v set, fix bits set). */
+    void (*velocity_bcs)(sph_sim *s, double t);
+    /* One full time step of size dt from s->t (integrator + forces + BCs). */
+    void (*step)(sph_sim *s, double dt);
+    /* Cauchy stress (xx yy zz xy yz zx) of every particle into body->sigma. */
+    void (*stress_output)(sph_sim *s);
+} sph_model;
+
+/* ------------------------------------------------------------------ state */
+
+struct sph_body {
+    const sph_body_desc *desc;
+    int n, dim;
+    double dx, h, vol, mass, rho0, c0, y_plane;
+
+    double *X;          /* n*dim reference positions */
+    double *u, *v, *a;  /* n*dim displacement, velocity, acceleration */
+    double *F;          /* n*9 deformation gradient (3×3) */
+    double *L;          /* n*dim*dim correction */
+    double *Q;          /* n*dim*dim  P·L (first Piola–Kirchhoff times correction) */
+    double *Cv;         /* n*dim*dim  cof(F)·L for artificial viscosity */
+    double *psi;        /* n strain energy density */
+    double *sigma;      /* n*6 Cauchy stress, filled at output */
+    double *work;       /* n*dim scratch for integrators (symplectic: v at n) */
+    uint8_t *fix;       /* n bit masks: bit k = component k has a prescribed velocity */
+
+    int *nb_start, *nb;   /* CSR neighbour lists */
+    double *nb_w;         /* V_j grad W_ij per pair */
+    long npairs;
+
+    int **bc_list;      /* per BC with `near`: particle indices */
+    int *bc_count;
+    int **ms_list;      /* per measure: particle indices */
+    int *ms_count;
+
+    /* reductions written by the generated update pass */
+    double vmax2, amax2;
+};
+
+struct sph_sim {
+    const sph_model *m;
+    sph_body *bodies;
+    int nbodies;
+    double t, dt;
+    long step;
+    int threads;
+};
+
+/* Entry point of a generated program. */
+int sph_main(const sph_model *m, int argc, char **argv);
+
+/* Component k (0..dim-1) of a compact vector -> 3D axis (0 = x, 1 = y, 2 = z). */
+static inline int sph_axis(int dim, int k) { return dim == 2 ? 2 * k : k; }
+
+#ifdef __cplusplus
+}
+#endif
+#endif
