@@ -206,6 +206,57 @@ int sph_main(const sph_model *m, int argc, char **argv);
 /* Component k (0..dim-1) of a compact vector -> 3D axis (0 = x, 1 = y, 2 = z). */
 static inline int sph_axis(int dim, int k) { return dim == 2 ? 2 * k : k; }
 
+/* ------------------------------------------------------------------ per-particle helpers
+ * Shared by generated code and the runtime (3×3 row-major). */
+
+/* Cofactor (i, j) of F: the (i, j) entry of J F^-T. */
+static inline double sph_cofactor(const double F[9], int i, int j)
+{
+    const int r0 = (i + 1) % 3, r1 = (i + 2) % 3, c0 = (j + 1) % 3, c1 = (j + 2) % 3;
+    return F[3 * r0 + c0] * F[3 * r1 + c1] - F[3 * r0 + c1] * F[3 * r1 + c0];
+}
+
+static inline double sph_det3(const double F[9])
+{
+    return F[0] * sph_cofactor(F, 0, 0) + F[1] * sph_cofactor(F, 0, 1) +
+           F[2] * sph_cofactor(F, 0, 2);
+}
+
+/* C = A B */
+static inline void sph_mat3_mul(const double A[9], const double B[9], double C[9])
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            C[3 * i + j] = A[3 * i] * B[j] + A[3 * i + 1] * B[3 + j] + A[3 * i + 2] * B[6 + j];
+}
+
+/* C = A B^T */
+static inline void sph_mat3_mul_bt(const double A[9], const double B[9], double C[9])
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            C[3 * i + j] = A[3 * i] * B[3 * j] + A[3 * i + 1] * B[3 * j + 1] +
+                           A[3 * i + 2] * B[3 * j + 2];
+}
+
+/* The variables of user expressions (paper Table 1) at one particle. */
+typedef struct {
+    double x0, y0, z0, x, y, z, ux, uy, uz, t, dt, dx;
+} sph_pt;
+
+static inline void sph_point(const sph_body *b, int i, int dim, double t, double dt, sph_pt *p)
+{
+    double X[3] = {0, b->y_plane, 0}, U[3] = {0, 0, 0};
+    for (int k = 0; k < dim; k++) {
+        X[sph_axis(dim, k)] = b->X[(size_t)i * dim + k];
+        U[sph_axis(dim, k)] = b->u[(size_t)i * dim + k];
+    }
+    p->x0 = X[0], p->y0 = X[1], p->z0 = X[2];
+    p->ux = U[0], p->uy = U[1], p->uz = U[2];
+    p->x = X[0] + U[0], p->y = X[1] + U[1], p->z = X[2] + U[2];
+    p->t = t, p->dt = dt, p->dx = b->dx;
+}
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,327 @@
+/* check.c — from the syntax tree to the checked model: constants, functions, laws, the
+ * scene settings, bodies and expectations.  Reports every error it finds. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "diag.h"
+#include "eval.h"
+
+/* ------------------------------------------------------------------ let, fn, material */
+
+static int name_taken(const Model *m, const char *name, SrcLoc loc)
+{
+    for (int i = 0; i < m->nconsts; i++)
+        if (!strcmp(m->consts[i].name, name)) {
+            diag_error(loc, "'%s' is already defined", name);
+            diag_note(m->consts[i].loc, "previous definition of '%s'", name);
+            return 1;
+        }
+    for (int i = 0; i < m->nfns; i++)
+        if (!strcmp(m->fns[i].name, name)) {
+            diag_error(loc, "'%s' is already defined", name);
+            diag_note(m->fns[i].loc, "previous definition of '%s'", name);
+            return 1;
+        }
+    if (builtin_variable(name) >= 0 || builtin_function_arity(name) >= 0) {
+        diag_error(loc, "'%s' is a built-in name and cannot be redefined", name);
+        return 1;
+    }
+    return 0;
+}
+
+static int check_let(Model *m, const Item *it)
+{
+    if (name_taken(m, it->name, it->loc))
+        return -1;
+    double v;
+    if (check_const_expr(m, it->value, "the value of a 'let'", &v))
+        return -1;
+    m->consts[m->nconsts++] = (ConstDef){it->name, v, it->loc};
+    return 0;
+}
+
+static int check_fn(Model *m, const Item *it)
+{
+    if (name_taken(m, it->name, it->loc))
+        return -1;
+    for (int i = 0; i < it->nparams; i++)
+        for (int j = 0; j < i; j++)
+            if (!strcmp(it->params[i], it->params[j])) {
+                diag_error(it->loc, "parameter '%s' of '%s' given twice", it->params[i],
+                           it->name);
+                return -1;
+            }
+    ExprScope s = {m, it->params, it->nparams, 0, 0, "the body of a function"};
+    /* Register first so that the body can be checked; recursion is refused below. */
+    m->fns[m->nfns++] = (FnDef){it->name, it->params, it->nparams, it->value, it->loc};
+    if (check_scalar_expr(&s, it->value, 0)) {
+        m->nfns--;
+        return -1;
+    }
+    return 0;
+}
+
+static int check_law_def(Model *m, const Item *it)
+{
+    for (int i = 0; i < m->nlaws; i++)
+        if (!strcmp(m->laws[i]->name, it->material.name)) {
+            diag_error(it->loc, "material '%s' is already defined", it->material.name);
+            return -1;
+        }
+    m->laws[m->nlaws++] = &it->material;
+    return law_check(m, &it->material);
+}
+
+/* ------------------------------------------------------------------ scene */
+
+static int scene_name(const Setting *s, const char *const *names, int n, int *out)
+{
+    const Expr *e = s->values[0];
+    if (s->nvalues == 1 && e->kind == EX_NAME)
+        for (int i = 0; i < n; i++)
+            if (!strcmp(e->name, names[i])) {
+                *out = i;
+                return 0;
+            }
+    diag_error(e->loc, "'%s' must be one of: %s%s%s", s->key, names[0], n > 1 ? ", " : "",
+               n > 1 ? names[1] : "");
+    return -1;
+}
+
+static int scene_number(const Model *m, const Setting *s, double *out, int positive)
+{
+    if (s->nvalues != 1) {
+        diag_error(s->loc, "'%s' takes one value", s->key);
+        return -1;
+    }
+    if (check_const_expr(m, s->values[0], s->key, out))
+        return -1;
+    if (positive && !(*out > 0)) {
+        diag_error(s->values[0]->loc, "'%s' must be positive (got %g)", s->key, *out);
+        return -1;
+    }
+    return 0;
+}
+
+static int scene_setting(Model *m, const Setting *s)
+{
+    static const char *const kernels[] = {"wendland", "cubic"};
+    static const char *const integrators[] = {"verlet", "symplectic"};
+    int k;
+    double v;
+    if (!strcmp(s->key, "dimension")) {
+        if (scene_number(m, s, &v, 1))
+            return -1;
+        if (v != 2 && v != 3) {
+            diag_error(s->values[0]->loc, "dimension must be 2 or 3 (got %g)", v);
+            return -1;
+        }
+        m->dim = (int)v;
+        return 0;
+    }
+    if (!strcmp(s->key, "kernel")) {
+        if (scene_name(s, kernels, 2, &k))
+            return -1;
+        m->kernel = (KernelKind)k;
+        return 0;
+    }
+    if (!strcmp(s->key, "integrator")) {
+        if (scene_name(s, integrators, 2, &k))
+            return -1;
+        m->integrator = (IntegratorKind)k;
+        return 0;
+    }
+    if (!strcmp(s->key, "gravity"))
+        return s->nvalues == 1 ? check_vec3(m, s->values[0], "gravity", m->gravity) : -1;
+    struct { const char *key; double *dst; } nums[] = {
+        {"dp", &m->dp}, {"coefh", &m->coefh}, {"cfl", &m->cfl}, {"dtmin", &m->dtmin},
+        {"dt", &m->dt}, {"end", &m->t_end}, {"output", &m->t_out},
+    };
+    for (size_t i = 0; i < sizeof nums / sizeof nums[0]; i++)
+        if (!strcmp(s->key, nums[i].key))
+            return scene_number(m, s, nums[i].dst, 1);
+    diag_error(s->loc, "unknown scene setting '%s'", s->key);
+    return -1;
+}
+
+static int check_scene(Model *m, const Item *scene)
+{
+    int bad = 0;
+    for (int i = 0; i < scene->scene.n; i++)
+        bad |= scene_setting(m, &scene->scene.items[i]) != 0;
+    if (bad)
+        return -1;
+    const char *missing = !m->dim ? "dimension" : !(m->dp > 0) ? "dp" : !(m->t_end > 0) ? "end" : NULL;
+    if (missing) {
+        diag_error(scene->loc, "scene needs '%s'", missing);
+        return -1;
+    }
+    if (!(m->t_out > 0))
+        m->t_out = m->t_end / 100.0;
+    if (m->cfl > 1.0)
+        diag_warning(scene->loc, "cfl %g is above 1: the run is likely to be unstable", m->cfl);
+    return 0;
+}
+
+static void scene_defaults(Model *m)
+{
+    m->kernel = KERNEL_WENDLAND;
+    m->integrator = INTEGRATOR_VERLET;
+    m->coefh = 1.0;
+    m->cfl = 0.2;
+    m->dtmin = 0.01;
+}
+
+/* ------------------------------------------------------------------ expectations */
+
+static int find_measure(const Model *m, const ExpectDecl *d, ExpectModel *x)
+{
+    for (int b = 0; b < m->nbodies; b++)
+        for (int k = 0; k < m->bodies[b].nmeasures; k++)
+            if (!strcmp(m->bodies[b].measures[k].name, d->measure)) {
+                x->body = b;
+                x->measure = k;
+                return 0;
+            }
+    diag_error(d->target_loc, "unknown measurement '%s'", d->measure);
+    return -1;
+}
+
+static int quantity_index(const char *q)
+{
+    static const char *const names[] = {"ux", "uy", "uz", "fx", "fy", "fz"};
+    for (int i = 0; i < 6; i++)
+        if (!strcmp(q, names[i]))
+            return i;
+    return -1;
+}
+
+static int check_expect(Model *m, const Item *it)
+{
+    const ExpectDecl *d = &it->expect;
+    ExpectModel *x = &m->expects[m->nexpects];
+    memset(x, 0, sizeof *x);
+    x->kind = d->kind;
+    x->loc = d->loc;
+    x->body = x->measure = -1;
+    x->tolerance = -1;
+    if (d->kind != EXPECT_ENERGY) {
+        if (find_measure(m, d, x))
+            return -1;
+        x->quantity = quantity_index(d->quantity);
+        if (x->quantity < 0) {
+            diag_error(d->target_loc, "unknown quantity '%s' (expected ux, uy, uz, fx, fy or fz)",
+                       d->quantity);
+            return -1;
+        }
+    }
+    if (d->kind == EXPECT_REFERENCE) {
+        static char *const t_only[] = {"t"};
+        ExprScope s = {m, (char **)t_only, 1, 0, 0, "a reference solution (a function of t)"};
+        if (check_scalar_expr(&s, d->value, 0))
+            return -1;
+        x->reference = d->value;
+    } else if (d->kind != EXPECT_ENERGY &&
+               check_const_expr(m, d->value, "the expected value", &x->value)) {
+        return -1;
+    }
+    if (d->tolerance) {
+        if (check_const_expr(m, d->tolerance, "the tolerance", &x->tolerance))
+            return -1;
+        if (!(x->tolerance > 0)) {
+            diag_error(d->tolerance->loc, "the tolerance must be positive");
+            return -1;
+        }
+        x->tolerance /= 100.0;
+    }
+    m->nexpects++;
+    return 0;
+}
+
+/* ------------------------------------------------------------------ the program */
+
+static void allocate(Model *m, const Program *p)
+{
+    size_t n = (size_t)p->n + 1;
+    m->consts = calloc(n, sizeof *m->consts);
+    m->fns = calloc(n, sizeof *m->fns);
+    m->laws = calloc(n, sizeof *m->laws);
+    m->bodies = calloc(n, sizeof *m->bodies);
+    m->expects = calloc(n, sizeof *m->expects);
+}
+
+static int check_definitions(Model *m, const Program *p)
+{
+    int bad = 0;
+    for (int i = 0; i < p->n; i++) {
+        const Item *it = &p->items[i];
+        if (it->kind == IT_LET)
+            bad |= check_let(m, it) != 0;
+        else if (it->kind == IT_FN)
+            bad |= check_fn(m, it) != 0;
+        else if (it->kind == IT_MATERIAL)
+            bad |= check_law_def(m, it) != 0;
+    }
+    return bad;
+}
+
+static int check_scene_item(Model *m, const Program *p)
+{
+    const Item *scene = NULL;
+    for (int i = 0; i < p->n; i++)
+        if (p->items[i].kind == IT_SCENE) {
+            if (scene) {
+                diag_error(p->items[i].loc, "a model has one scene");
+                return 1;
+            }
+            scene = &p->items[i];
+        }
+    if (!scene) {
+        SrcLoc top = {p->file, 1, 1};
+        diag_error(top, "the model has no 'scene { ... }'");
+        return 1;
+    }
+    return check_scene(m, scene) != 0;
+}
+
+static int check_bodies(Model *m, const Program *p)
+{
+    int bad = 0;
+    for (int i = 0; i < p->n; i++) {
+        if (p->items[i].kind != IT_BODY)
+            continue;
+        const BodyDecl *d = &p->items[i].body;
+        for (int b = 0; b < m->nbodies; b++)
+            if (!strcmp(m->bodies[b].name, d->name)) {
+                diag_error(d->loc, "body '%s' is defined twice", d->name);
+                bad = 1;
+            }
+        bad |= check_body(m, d, &m->bodies[m->nbodies++]) != 0;
+    }
+    if (!m->nbodies && !bad) {
+        SrcLoc top = {p->file, 1, 1};
+        diag_error(top, "the model has no body");
+        bad = 1;
+    }
+    return bad;
+}
+
+int check_program(const Program *p, Model *m)
+{
+    const char *name = m->name;
+    memset(m, 0, sizeof *m);
+    m->name = name;
+    m->source = p->file;
+    scene_defaults(m);
+    allocate(m, p);
+    int bad = check_definitions(m, p);
+    if (check_scene_item(m, p))
+        return -1; /* bodies need the dimension */
+    bad |= check_bodies(m, p);
+    for (int i = 0; i < p->n && !bad; i++)
+        if (p->items[i].kind == IT_EXPECT)
+            bad |= check_expect(m, &p->items[i]) != 0;
+    return bad || diag_error_count() ? -1 : 0;
+}

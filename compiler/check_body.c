@@ -1,0 +1,419 @@
+/* check_body.c — checking a body: its shape, material, settings, boundary conditions and
+ * measurement planes. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "diag.h"
+
+/* ------------------------------------------------------------------ shapes */
+
+static const Setting *find_arg(const NamedCall *c, const char *key)
+{
+    for (int i = 0; i < c->args.n; i++)
+        if (strcmp(c->args.items[i].key, key) == 0)
+            return &c->args.items[i];
+    return NULL;
+}
+
+/* Every argument must be one of `allowed`, given once, with one value. */
+static int check_arg_names(const NamedCall *c, const char *const *allowed, int nallowed)
+{
+    int bad = 0;
+    for (int i = 0; i < c->args.n; i++) {
+        const Setting *s = &c->args.items[i];
+        int ok = 0;
+        for (int k = 0; k < nallowed; k++)
+            ok |= strcmp(s->key, allowed[k]) == 0;
+        if (!ok) {
+            diag_error(s->loc, "unknown argument '%s' of %s()", s->key, c->name);
+            bad = 1;
+        }
+        for (int j = 0; j < i; j++)
+            if (strcmp(c->args.items[j].key, s->key) == 0) {
+                diag_error(s->loc, "argument '%s' of %s() given twice", s->key, c->name);
+                bad = 1;
+            }
+        if (s->nvalues != 1) {
+            diag_error(s->loc, "argument '%s' takes one value", s->key);
+            bad = 1;
+        }
+    }
+    return bad ? -1 : 0;
+}
+
+static int need_vec(const Model *m, const NamedCall *c, const char *key, double out[3])
+{
+    const Setting *s = find_arg(c, key);
+    if (!s) {
+        diag_error(c->loc, "%s() needs '%s'", c->name, key);
+        return -1;
+    }
+    return check_vec3(m, s->values[0], key, out);
+}
+
+static int need_positive(const Model *m, const NamedCall *c, const char *key, double *out)
+{
+    const Setting *s = find_arg(c, key);
+    if (!s) {
+        diag_error(c->loc, "%s() needs '%s'", c->name, key);
+        return -1;
+    }
+    if (check_const_expr(m, s->values[0], key, out))
+        return -1;
+    if (!(*out > 0)) {
+        diag_error(s->values[0]->loc, "%s must be positive (got %g)", key, *out);
+        return -1;
+    }
+    return 0;
+}
+
+static int check_box(const Model *m, const NamedCall *c, ShapePrim *p)
+{
+    static const char *const args[] = {"from", "to", "size"};
+    if (check_arg_names(c, args, 3))
+        return -1;
+    p->kind = SHAPE_BOX;
+    if (need_vec(m, c, "from", p->a))
+        return -1;
+    int has_to = find_arg(c, "to") != NULL, has_size = find_arg(c, "size") != NULL;
+    if (has_to == has_size) {
+        diag_error(c->loc, "box() needs either 'to' or 'size'");
+        return -1;
+    }
+    if (need_vec(m, c, has_to ? "to" : "size", p->b))
+        return -1;
+    for (int k = 0; k < 3; k++) {
+        if (has_size)
+            p->b[k] += p->a[k];
+        if (p->b[k] < p->a[k]) {
+            diag_error(c->loc, "box() extent is negative along %c", "xyz"[k]);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static int check_prim(const Model *m, const NamedCall *c, ShapePrim *p)
+{
+    memset(p, 0, sizeof *p);
+    if (strcmp(c->name, "box") == 0)
+        return check_box(m, c, p);
+    if (strcmp(c->name, "cylinder") == 0) {
+        static const char *const args[] = {"from", "to", "radius"};
+        p->kind = SHAPE_CYLINDER;
+        if (check_arg_names(c, args, 3) || need_vec(m, c, "from", p->a) ||
+            need_vec(m, c, "to", p->b) || need_positive(m, c, "radius", &p->r))
+            return -1;
+        return 0;
+    }
+    if (strcmp(c->name, "sphere") == 0) {
+        static const char *const args[] = {"center", "radius"};
+        p->kind = SHAPE_SPHERE;
+        if (check_arg_names(c, args, 2) || need_vec(m, c, "center", p->a) ||
+            need_positive(m, c, "radius", &p->r))
+            return -1;
+        return 0;
+    }
+    diag_error(c->loc, "unknown shape '%s' (expected box, cylinder or sphere)", c->name);
+    return -1;
+}
+
+static void push_prim(Region *r, ShapePrim p)
+{
+    r->prims = realloc(r->prims, (size_t)(r->n + 1) * sizeof *r->prims);
+    r->prims[r->n++] = p;
+}
+
+/* Flatten a shape tree into an ordered list: union adds, difference subtracts. */
+static int flatten(const Model *m, const ShapeExpr *s, int subtract, Region *r)
+{
+    if (s->op == 0) {
+        ShapePrim p;
+        if (check_prim(m, &s->prim, &p))
+            return -1;
+        p.subtract = subtract;
+        push_prim(r, p);
+        return 0;
+    }
+    if (flatten(m, s->lhs, subtract, r))
+        return -1;
+    if (s->op == '-' && s->rhs->op != 0) {
+        diag_error(s->rhs->loc, "only a single shape can be subtracted (write a - b - c)");
+        return -1;
+    }
+    return flatten(m, s->rhs, s->op == '-' ? 1 : subtract, r);
+}
+
+int check_region(const Model *m, const ShapeExpr *s, Region *r)
+{
+    memset(r, 0, sizeof *r);
+    if (flatten(m, s, 0, r))
+        return -1;
+    if (r->prims[0].subtract) {
+        diag_error(s->loc, "a shape cannot start with a subtraction");
+        return -1;
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------------ material */
+
+static const MaterialDef *find_law(const Model *m, const char *name)
+{
+    for (int i = 0; i < m->nlaws; i++)
+        if (strcmp(m->laws[i]->name, name) == 0)
+            return m->laws[i];
+    return NULL;
+}
+
+/* Law parameters that are elastic constants, derived from the body's pair. */
+static int elastic_param(const BodyModel *b, const char *name, double *out)
+{
+    if (!strcmp(name, "lambda")) *out = b->lambda;
+    else if (!strcmp(name, "mu")) *out = b->mu;
+    else if (!strcmp(name, "E")) *out = b->E;
+    else if (!strcmp(name, "nu")) *out = b->nu;
+    else if (!strcmp(name, "K")) *out = b->K;
+    else if (!strcmp(name, "rho")) *out = b->rho0;
+    else return 0;
+    return 1;
+}
+
+/* One named argument of a material use: density, an elastic constant, or a law parameter. */
+static int material_arg(const Model *m, const Setting *s, ElasticInput *el, BodyModel *b,
+                        const MaterialDef *law, int *has_density)
+{
+    double v;
+    if (s->nvalues != 1) {
+        diag_error(s->loc, "argument '%s' takes one value", s->key);
+        return -1;
+    }
+    if (check_const_expr(m, s->values[0], s->key, &v))
+        return -1;
+    const char *k = s->key;
+    if (!strcmp(k, "density")) {
+        if (!(v > 0)) {
+            diag_error(s->values[0]->loc, "density must be positive (got %g)", v);
+            return -1;
+        }
+        b->rho0 = v;
+        *has_density = 1;
+    } else if (!strcmp(k, "young")) el->has_E = 1, el->E = v;
+    else if (!strcmp(k, "poisson")) el->has_nu = 1, el->nu = v;
+    else if (!strcmp(k, "lambda")) el->has_lambda = 1, el->lambda = v;
+    else if (!strcmp(k, "shear") || !strcmp(k, "mu")) el->has_mu = 1, el->mu = v;
+    else if (!strcmp(k, "bulk") || !strcmp(k, "K")) el->has_K = 1, el->K = v;
+    else {
+        for (int i = 0; i < law->nparams; i++)
+            if (!strcmp(law->params[i], k)) {
+                b->law_args[i] = v;
+                return 0;
+            }
+        diag_error(s->loc, "material '%s' has no parameter '%s'", law->name, k);
+        return -1;
+    }
+    return 0;
+}
+
+static int check_material_use(const Model *m, const NamedCall *c, BodyModel *b)
+{
+    const MaterialDef *law = find_law(m, c->name);
+    if (!law) {
+        diag_error(c->loc, "unknown material '%s' (is an 'import' missing?)", c->name);
+        return -1;
+    }
+    b->law = law;
+    b->law_args = calloc((size_t)law->nparams + 1, sizeof(double));
+    for (int i = 0; i < law->nparams; i++)
+        b->law_args[i] = NAN;
+    ElasticInput el = {0};
+    int has_density = 0, bad = 0;
+    for (int i = 0; i < c->args.n; i++)
+        bad |= material_arg(m, &c->args.items[i], &el, b, law, &has_density);
+    if (bad)
+        return -1;
+    if (!has_density) {
+        diag_error(c->loc, "material '%s' needs 'density'", law->name);
+        return -1;
+    }
+    if (elastic_complete(&el, c->loc, b))
+        return -1;
+    for (int i = 0; i < law->nparams; i++) {
+        if (elastic_param(b, law->params[i], &b->law_args[i]))
+            continue;
+        if (isnan(b->law_args[i])) {
+            diag_error(c->loc, "material '%s' needs parameter '%s'", law->name,
+                       law->params[i]);
+            bad = 1;
+        }
+    }
+    return bad ? -1 : 0;
+}
+
+/* ------------------------------------------------------------------ settings */
+
+static int setting_int(const Model *m, const Setting *s, int lo, int *out)
+{
+    double v;
+    if (s->nvalues != 1) {
+        diag_error(s->loc, "'%s' takes one value", s->key);
+        return -1;
+    }
+    if (check_const_expr(m, s->values[0], s->key, &v))
+        return -1;
+    if (v != floor(v) || v < lo || v > 1000) {
+        diag_error(s->values[0]->loc, "'%s' must be an integer >= %d (got %g)", s->key, lo, v);
+        return -1;
+    }
+    *out = (int)v;
+    return 0;
+}
+
+static int check_viscosity(const Model *m, const Setting *s, BodyModel *b)
+{
+    if (s->nvalues < 1 || s->nvalues > 2) {
+        diag_error(s->loc, "'viscosity' takes beta1 and optionally beta2");
+        return -1;
+    }
+    if (check_const_expr(m, s->values[0], "beta1", &b->beta1))
+        return -1;
+    b->beta2 = 0;
+    if (s->nvalues == 2 && check_const_expr(m, s->values[1], "beta2", &b->beta2))
+        return -1;
+    if (b->beta1 < 0 || b->beta2 < 0) {
+        diag_error(s->loc, "artificial viscosity coefficients must not be negative");
+        return -1;
+    }
+    return 0;
+}
+
+static int check_setting(const Model *m, const Setting *s, BodyModel *b)
+{
+    if (!strcmp(s->key, "refine"))
+        return setting_int(m, s, 1, &b->refine);
+    if (!strcmp(s->key, "nbsrange"))
+        return setting_int(m, s, 1, &b->nbsrange);
+    if (!strcmp(s->key, "viscosity"))
+        return check_viscosity(m, s, b);
+    diag_error(s->loc, "unknown body setting '%s' (expected refine, nbsrange or viscosity)",
+               s->key);
+    return -1;
+}
+
+/* ------------------------------------------------------------------ BCs, measures */
+
+static int check_window(const Model *m, const BcDecl *d, BcModel *bc)
+{
+    bc->t0 = -INFINITY;
+    bc->t1 = INFINITY;
+    bc->has_window = d->t_from || d->t_to;
+    if (d->t_from && check_const_expr(m, d->t_from, "start time", &bc->t0))
+        return -1;
+    if (d->t_to && check_const_expr(m, d->t_to, "end time", &bc->t1))
+        return -1;
+    if (bc->t1 < bc->t0) {
+        diag_error(d->loc, "boundary condition ends (t = %g) before it starts (t = %g)",
+                   bc->t1, bc->t0);
+        return -1;
+    }
+    return 0;
+}
+
+static int check_bc(const Model *m, const BcDecl *d, BcModel *bc)
+{
+    memset(bc, 0, sizeof *bc);
+    bc->kind = d->kind;
+    bc->force = d->force;
+    bc->comps = d->comps;
+    bc->value = d->value;
+    bc->loc = d->loc;
+    if (m->dim == 2 && (d->comps & 2)) {
+        /* Plane strain: y is out of plane.  Prescribing it is allowed only as zero-motion
+         * statements that users copy from 3D models; the value is ignored. */
+        if (d->kind == BC_FORCE) {
+            diag_error(d->comps_loc, "a force along y is not possible in a 2D (x-z) model");
+            return -1;
+        }
+        bc->comps &= ~2;
+    }
+    ExprScope s = {m, NULL, 0, 1, 1, "a boundary condition"};
+    int bad = check_scalar_expr(&s, d->value, 1);
+    bad |= check_window(m, d, bc);
+    if (d->near) {
+        bc->has_near = 1;
+        bad |= check_region(m, d->near, &bc->near);
+    }
+    return bad ? -1 : 0;
+}
+
+static int check_measure(const Model *m, const MeasureDecl *d, MeasureModel *ms)
+{
+    ms->name = d->name;
+    ms->loc = d->loc;
+    int bad = 0;
+    for (int k = 0; k < 4; k++)
+        bad |= check_vec3(m, d->points[k], "a plane corner", ms->p[k]);
+    return bad ? -1 : 0;
+}
+
+/* ------------------------------------------------------------------ the body */
+
+static int check_item(Model *m, const BodyItem *it, BodyModel *b, int *nshape, int *nmat)
+{
+    switch (it->kind) {
+    case BI_SHAPE:
+        if ((*nshape)++) {
+            diag_error(it->loc, "body '%s' has more than one shape (combine them with + and -)",
+                       b->name);
+            return -1;
+        }
+        return check_region(m, it->shape, &b->region);
+    case BI_MATERIAL:
+        if ((*nmat)++) {
+            diag_error(it->loc, "body '%s' has more than one material", b->name);
+            return -1;
+        }
+        return check_material_use(m, &it->material, b);
+    case BI_SETTING:
+        return check_setting(m, &it->setting, b);
+    case BI_BC:
+        return check_bc(m, &it->bc, &b->bcs[b->nbcs++]);
+    case BI_MEASURE:
+        for (int i = 0; i < b->nmeasures; i++)
+            if (!strcmp(b->measures[i].name, it->measure.name)) {
+                diag_error(it->loc, "measurement '%s' defined twice", it->measure.name);
+                return -1;
+            }
+        return check_measure(m, &it->measure, &b->measures[b->nmeasures++]);
+    case BI_NOTCH:
+        diag_error(it->loc, "notches need fracture, which this version of sphc does not "
+                            "support yet");
+        return -1;
+    }
+    return -1;
+}
+
+int check_body(Model *m, const BodyDecl *d, BodyModel *b)
+{
+    memset(b, 0, sizeof *b);
+    b->name = d->name;
+    b->loc = d->loc;
+    b->refine = 1;
+    b->bcs = calloc((size_t)d->n + 1, sizeof *b->bcs);
+    b->measures = calloc((size_t)d->n + 1, sizeof *b->measures);
+    int nshape = 0, nmat = 0, bad = 0;
+    /* The material first: other items do not depend on it, but its constants do on nothing. */
+    for (int i = 0; i < d->n; i++)
+        bad |= check_item(m, &d->items[i], b, &nshape, &nmat) != 0;
+    if (!nshape) {
+        diag_error(d->loc, "body '%s' has no shape", d->name);
+        bad = 1;
+    }
+    if (!nmat) {
+        diag_error(d->loc, "body '%s' has no material", d->name);
+        bad = 1;
+    }
+    return bad ? -1 : 0;
+}

@@ -1,0 +1,34 @@
+/* driver.h — locating sphc's files, loading a model with its imports, building it. */
+#ifndef SPHC_DRIVER_H
+#define SPHC_DRIVER_H
+
+#include "ast.h"
+#include "model.h"
+
+typedef struct {
+    const char *input;
+    const char *output;    /* -o */
+    const char *target;    /* cpu | cuda */
+    const char *emit_dir;  /* --emit-c */
+    const char *dump;      /* ast | model | plan */
+    int check_only;
+} Options;
+
+typedef struct {
+    char templates[4096];
+    char stdlib[4096];
+    char include[4096];
+    char lib[4096];        /* folder holding libsphrt.a */
+} Paths;
+
+/* Installed layout (<prefix>/bin/sphc with <prefix>/share/sphc and <prefix>/lib) first,
+ * then the source and build trees sphc was built from; SPHC_HOME overrides both. */
+int find_paths(const char *argv0, Paths *p);
+
+/* Parse the model and every module it imports (stdlib/NAME.sph or NAME.sph beside it). */
+int load_program(const char *path, const Paths *paths, Program *prog);
+
+/* Emit C, compile and link the executable. */
+int build_program(const Model *m, const Options *o, const Paths *paths);
+
+#endif

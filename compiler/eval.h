@@ -1,0 +1,25 @@
+/* eval.h — reference interpreter for checked scalar expressions. */
+#ifndef SPHC_EVAL_H
+#define SPHC_EVAL_H
+
+#include "model.h"
+
+enum { EVAL_OK = 0, EVAL_SKIP = 1, EVAL_NOT_CONSTANT = 2, EVAL_ERROR = 3 };
+
+/* Names bound during evaluation: function parameters or material locals, and optionally
+ * the built-in variables (vars[k] for BUILTIN_VARIABLES[k]). */
+typedef struct EvalEnv {
+    const char *const *names;
+    const double *values;
+    int n;
+    const double *vars;         /* NULL: built-in variables are not available */
+    const struct EvalEnv *parent;
+} EvalEnv;
+
+/* Evaluate e.  Returns EVAL_OK (value in *out), EVAL_SKIP (the expression chose `skip`),
+ * EVAL_NOT_CONSTANT (it needs a variable that env does not provide) or EVAL_ERROR. */
+int eval_expr(const Model *m, const Expr *e, const EvalEnv *env, double *out);
+
+const FnDef *model_find_fn(const Model *m, const char *name);
+
+#endif

@@ -1,0 +1,77 @@
+/* lower.c — from the checked model to per-body kernel plans: dead-feature elimination
+ * (only what the body uses is switched on) and the material law folded for the body's
+ * constants and dimension. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "emit.h"
+#include "plan.h"
+
+static void features(const Model *m, const BodyModel *b, BodyPlan *p)
+{
+    p->viscosity = b->beta1 > 0 || b->beta2 > 0;
+    p->beta2 = b->beta2 > 0;
+    p->gravity = m->gravity[0] != 0 || m->gravity[1] != 0 || m->gravity[2] != 0;
+    p->symplectic = m->integrator == INTEGRATOR_SYMPLECTIC;
+    for (int k = 0; k < b->nbcs; k++) {
+        if (!b->bcs[k].comps)
+            continue; /* only out-of-plane components in 2D: nothing to do */
+        p->velocity_bcs |= b->bcs[k].kind == BC_VELOCITY;
+        p->force_bcs |= b->bcs[k].kind == BC_FORCE;
+    }
+}
+
+int lower_model(const Model *m, BodyPlan *plans)
+{
+    int bad = 0;
+    for (int i = 0; i < m->nbodies; i++) {
+        const BodyModel *b = &m->bodies[i];
+        BodyPlan *p = &plans[i];
+        memset(p, 0, sizeof *p);
+        features(m, b, p);
+        sg_init(&p->law);
+        bad |= law_build(&p->law, m, b->law, b->law_args, m->dim, &p->roots) != 0;
+    }
+    return bad ? -1 : 0;
+}
+
+static int count_ops(const SGraph *g)
+{
+    int n = 0;
+    for (int id = 0; id < g->n; id++)
+        n += g->nodes[id].op > SN_PARAM;
+    return n;
+}
+
+void plan_dump(const Model *m, FILE *out)
+{
+    BodyPlan *plans = calloc((size_t)m->nbodies, sizeof *plans);
+    if (lower_model(m, plans)) {
+        free(plans);
+        return;
+    }
+    for (int i = 0; i < m->nbodies; i++) {
+        const BodyPlan *p = &plans[i];
+        const BodyModel *b = &m->bodies[i];
+        fprintf(out, "body %s: dim %d, law %s, %s integrator\n", b->name, m->dim, b->law->name,
+                p->symplectic ? "symplectic" : "verlet");
+        fprintf(out, "  features: viscosity=%d beta2=%d gravity=%d velocity_bcs=%d "
+                     "force_bcs=%d fracture=0 plasticity=0 contact=0\n",
+                p->viscosity, p->beta2, p->gravity, p->velocity_bcs, p->force_bcs);
+        fprintf(out, "  material law: %d graph nodes\n", count_ops(&p->law));
+        int roots[10];
+        memcpy(roots, p->roots.S, sizeof p->roots.S);
+        roots[9] = p->roots.psi;
+        sg_emit(&p->law, roots, 10, out, "    ");
+        for (int k = 0; k < 9; k++) {
+            fprintf(out, "    S[%d] = ", k);
+            sg_ref(&p->law, p->roots.S[k], out);
+            fputs("\n", out);
+        }
+        fputs("    psi = ", out);
+        sg_ref(&p->law, p->roots.psi, out);
+        fputs("\n", out);
+    }
+    free(plans);
+}

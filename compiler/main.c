@@ -1,0 +1,128 @@
+/* main.c — the sphc driver: options, stages, and the call to the C compiler.
+ *
+ *   sphc [-o NAME] [--target cpu|cuda] [--emit-c DIR] [--dump=ast|model|plan] [--check] FILE
+ */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "ast.h"
+#include "diag.h"
+#include "driver.h"
+#include "emit.h"
+#include "model.h"
+
+static void usage(FILE *f)
+{
+    fputs("usage: sphc [-o NAME] [--target cpu|cuda] [--emit-c DIR] [--dump=ast|model|plan]\n"
+          "            [--check] FILE.sph\n"
+          "Compiles a model into an executable (named after FILE unless -o is given).\n"
+          "  -o NAME          name of the executable\n"
+          "  --target T       cpu (OpenMP, default) or cuda\n"
+          "  --emit-c DIR     keep the generated C source in DIR\n"
+          "  --dump=STAGE     print the syntax tree, checked model or kernel plan and stop\n"
+          "  --check          check the model only\n"
+          "  --version        print the version\n",
+          f);
+}
+
+static int parse_args(int argc, char **argv, Options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->target = "cpu";
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            usage(stdout);
+            exit(0);
+        } else if (!strcmp(a, "--version")) {
+            printf("sphc %s\n", SPHC_VERSION);
+            exit(0);
+        } else if (!strcmp(a, "-o") && i + 1 < argc) {
+            o->output = argv[++i];
+        } else if (!strcmp(a, "--target") && i + 1 < argc) {
+            o->target = argv[++i];
+        } else if (!strncmp(a, "--target=", 9)) {
+            o->target = a + 9;
+        } else if (!strcmp(a, "--emit-c") && i + 1 < argc) {
+            o->emit_dir = argv[++i];
+        } else if (!strncmp(a, "--emit-c=", 9)) {
+            o->emit_dir = a + 9;
+        } else if (!strncmp(a, "--dump=", 7)) {
+            o->dump = a + 7;
+        } else if (!strcmp(a, "--check")) {
+            o->check_only = 1;
+        } else if (a[0] == '-' && a[1]) {
+            diag_fatal_noloc("unknown option '%s' (see sphc --help)", a);
+            return -1;
+        } else if (o->input) {
+            diag_fatal_noloc("more than one model file given ('%s' and '%s')", o->input, a);
+            return -1;
+        } else {
+            o->input = a;
+        }
+    }
+    if (!o->input) {
+        usage(stderr);
+        return -1;
+    }
+    if (strcmp(o->target, "cpu") && strcmp(o->target, "cuda")) {
+        diag_fatal_noloc("unknown target '%s' (expected cpu or cuda)", o->target);
+        return -1;
+    }
+    if (o->dump && strcmp(o->dump, "ast") && strcmp(o->dump, "model") && strcmp(o->dump, "plan")) {
+        diag_fatal_noloc("unknown stage '%s' for --dump (expected ast, model or plan)", o->dump);
+        return -1;
+    }
+    return 0;
+}
+
+/* The file's stem: "cases/beam2d.sph" -> "beam2d". */
+static char *stem(const char *path)
+{
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    char *s = strdup(base);
+    char *dot = strrchr(s, '.');
+    if (dot && dot != s)
+        *dot = 0;
+    for (char *c = s; *c; c++)
+        if (!((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9')))
+            *c = '_';
+    return s;
+}
+
+int main(int argc, char **argv)
+{
+    Options o;
+    if (parse_args(argc, argv, &o))
+        return 2;
+    Paths paths;
+    if (find_paths(argv[0], &paths))
+        return 1;
+    Program prog = {0};
+    if (load_program(o.input, &paths, &prog))
+        return 1;
+    if (o.dump && !strcmp(o.dump, "ast")) {
+        ast_dump(&prog, stdout);
+        return 0;
+    }
+    Model m;
+    m.name = stem(o.output ? o.output : o.input);
+    if (check_program(&prog, &m))
+        return 1;
+    if (o.dump && !strcmp(o.dump, "model")) {
+        model_dump(&m, stdout);
+        return 0;
+    }
+    if (o.dump) {
+        plan_dump(&m, stdout);
+        return diag_error_count() ? 1 : 0;
+    }
+    if (o.check_only)
+        return 0;
+    return build_program(&m, &o, &paths) ? 1 : 0;
+}

@@ -1,0 +1,117 @@
+/* model.h — the checked model: names resolved, constants folded, settings turned into
+ * numbers, elastic constants completed.  Produced by check.c from the AST; read by
+ * lower.c and the emitters.  Expressions stay as AST nodes (already checked) because the
+ * emitters print them as C; the model records what each name refers to. */
+#ifndef SPHC_MODEL_H
+#define SPHC_MODEL_H
+
+#include "ast.h"
+
+typedef enum { SHAPE_BOX, SHAPE_CYLINDER, SHAPE_SPHERE } ShapeKind;
+
+typedef struct {
+    ShapeKind kind;
+    double a[3], b[3], r;
+    int subtract;
+} ShapePrim;
+
+typedef struct {
+    ShapePrim *prims;
+    int n;
+} Region;
+
+typedef struct {
+    char *name;
+    double value;
+    SrcLoc loc;
+} ConstDef;
+
+typedef struct {
+    char *name;
+    char **params;
+    int nparams;
+    Expr *body;
+    SrcLoc loc;
+} FnDef;
+
+typedef struct {
+    BcKind kind;
+    ForceKind force;
+    int comps;          /* bit mask over 3D axes: 1 = x, 2 = y, 4 = z */
+    Expr *value;
+    int has_window;
+    double t0, t1;      /* active for t0 <= t <= t1 */
+    int has_near;
+    Region near;
+    SrcLoc loc;
+} BcModel;
+
+typedef struct {
+    char *name;
+    double p[4][3];
+    SrcLoc loc;
+} MeasureModel;
+
+typedef struct {
+    char *name;
+    SrcLoc loc;
+    Region region;
+    int refine, nbsrange;
+    double rho0;
+    double E, nu, lambda, mu, K;   /* elastic constants, all five derived */
+    double c0;                     /* eq. 59 */
+    double beta1, beta2;           /* artificial viscosity, eq. 58 */
+    const MaterialDef *law;
+    double *law_args;              /* value of each law parameter, in law order */
+    BcModel *bcs;
+    int nbcs;
+    MeasureModel *measures;
+    int nmeasures;
+} BodyModel;
+
+typedef struct {
+    ExpectKind kind;
+    SrcLoc loc;
+    int body, measure, quantity;   /* quantity 0..2 = ux uy uz, 3..5 = fx fy fz */
+    double value, tolerance;       /* tolerance relative (0.03), < 0: report only */
+    Expr *reference;               /* EXPECT_REFERENCE: expression of t */
+} ExpectModel;
+
+typedef enum { KERNEL_WENDLAND = 0, KERNEL_CUBIC = 1 } KernelKind;
+typedef enum { INTEGRATOR_VERLET = 0, INTEGRATOR_SYMPLECTIC = 1 } IntegratorKind;
+
+typedef struct {
+    const char *name;     /* program name (file stem) */
+    const char *source;   /* model file */
+    int dim;
+    double dp, coefh, cfl, dtmin, dt, t_end, t_out;
+    KernelKind kernel;
+    IntegratorKind integrator;
+    double gravity[3];
+    ConstDef *consts;
+    int nconsts;
+    FnDef *fns;
+    int nfns;
+    const MaterialDef **laws;
+    int nlaws;
+    BodyModel *bodies;
+    int nbodies;
+    ExpectModel *expects;
+    int nexpects;
+} Model;
+
+/* Check the program; returns 0 and fills *m when there are no errors. */
+int check_program(const Program *p, Model *m);
+
+/* Print the checked model (sphc --dump=model). */
+void model_dump(const Model *m, FILE *out);
+
+/* Names of the expression variables of paper Table 1, in the order of sph_pt. */
+int builtin_variable(const char *name); /* index or -1 */
+extern const char *const BUILTIN_VARIABLES[];
+extern const int NBUILTIN_VARIABLES;
+
+/* Built-in scalar functions (Table 2): arity or -1 when unknown. */
+int builtin_function_arity(const char *name);
+
+#endif

@@ -1,0 +1,61 @@
+/* model_dump.c — printing the checked model (sphc --dump=model). */
+#include <stdio.h>
+
+#include "model.h"
+
+static void region(FILE *out, const char *what, const Region *r)
+{
+    static const char *const kinds[] = {"box", "cylinder", "sphere"};
+    fprintf(out, "    %s:", what);
+    for (int k = 0; k < r->n; k++) {
+        const ShapePrim *s = &r->prims[k];
+        fprintf(out, " %s%s a=[%g %g %g] b=[%g %g %g] r=%g", s->subtract ? "- " : k ? "+ " : "",
+                kinds[s->kind], s->a[0], s->a[1], s->a[2], s->b[0], s->b[1], s->b[2], s->r);
+    }
+    fputs("\n", out);
+}
+
+static void body(FILE *out, const BodyModel *b)
+{
+    fprintf(out, "  body %s\n", b->name);
+    region(out, "shape", &b->region);
+    fprintf(out, "    refine %d  nbsrange %d  density %g\n", b->refine, b->nbsrange, b->rho0);
+    fprintf(out, "    elastic E %g nu %g lambda %g mu %g K %g  c0 %g m/s\n", b->E, b->nu, b->lambda,
+            b->mu, b->K, b->c0);
+    fprintf(out, "    material %s(", b->law->name);
+    for (int k = 0; k < b->law->nparams; k++)
+        fprintf(out, "%s%s = %g", k ? ", " : "", b->law->params[k], b->law_args[k]);
+    fprintf(out, ")\n    viscosity beta1 %g beta2 %g\n", b->beta1, b->beta2);
+    for (int k = 0; k < b->nbcs; k++) {
+        const BcModel *bc = &b->bcs[k];
+        static const char *const forces[] = {"", " point", " surface", " accel"};
+        fprintf(out, "    bc %d: %s%s comps %s%s%s window [%g, %g]%s (line %d)\n", k,
+                bc->kind == BC_VELOCITY ? "velocity" : "force", forces[bc->force],
+                bc->comps & 1 ? "x" : "", bc->comps & 2 ? "y" : "", bc->comps & 4 ? "z" : "",
+                bc->t0, bc->t1, bc->has_near ? " near shape" : "", bc->loc.line);
+    }
+    for (int k = 0; k < b->nmeasures; k++)
+        fprintf(out, "    measure %s\n", b->measures[k].name);
+}
+
+void model_dump(const Model *m, FILE *out)
+{
+    fprintf(out, "model %s (%s)\n", m->name, m->source);
+    fprintf(out, "  scene: dim %d dp %g kernel %s coefh %g integrator %s cfl %g dtmin %g dt %g "
+                 "end %g output %g gravity [%g %g %g]\n",
+            m->dim, m->dp, m->kernel == KERNEL_WENDLAND ? "wendland" : "cubic", m->coefh,
+            m->integrator == INTEGRATOR_VERLET ? "verlet" : "symplectic", m->cfl, m->dtmin, m->dt,
+            m->t_end, m->t_out, m->gravity[0], m->gravity[1], m->gravity[2]);
+    for (int i = 0; i < m->nconsts; i++)
+        fprintf(out, "  let %s = %.17g\n", m->consts[i].name, m->consts[i].value);
+    for (int i = 0; i < m->nfns; i++)
+        fprintf(out, "  fn %s/%d\n", m->fns[i].name, m->fns[i].nparams);
+    for (int i = 0; i < m->nlaws; i++)
+        fprintf(out, "  material law %s/%d\n", m->laws[i]->name, m->laws[i]->nparams);
+    for (int i = 0; i < m->nbodies; i++)
+        body(out, &m->bodies[i]);
+    for (int i = 0; i < m->nexpects; i++)
+        fprintf(out, "  expect kind %d body %d measure %d quantity %d value %g tolerance %g\n",
+                m->expects[i].kind, m->expects[i].body, m->expects[i].measure,
+                m->expects[i].quantity, m->expects[i].value, m->expects[i].tolerance);
+}

@@ -1,0 +1,23 @@
+/* plan.h — the lowered kernel plan of each body: which features its code needs.
+ * Computed once from the checked model (lower.c); the emitters only read it. */
+#ifndef SPHC_PLAN_H
+#define SPHC_PLAN_H
+
+#include "law.h"
+#include "model.h"
+
+typedef struct {
+    int viscosity;      /* beta1 or beta2 nonzero */
+    int beta2;          /* the quadratic term of eq. 58 */
+    int gravity;        /* nonzero body force */
+    int velocity_bcs;   /* any velocity BC */
+    int force_bcs;      /* any force BC */
+    int symplectic;
+    SGraph law;         /* the material law, constants folded, for this body's dimension */
+    LawRoots roots;
+} BodyPlan;
+
+/* Returns 0, or -1 after reporting. plans has m->nbodies entries. */
+int lower_model(const Model *m, BodyPlan *plans);
+
+#endif

@@ -1,0 +1,59 @@
+/* scalar.h — the scalar expression graph (kernel IR for per-particle math).
+ *
+ * Material laws are evaluated symbolically into this graph: every tensor becomes nine
+ * scalar nodes.  Nodes are hash-consed (common subexpressions are shared) and folded as they
+ * are built (constants, x*0, x*1, x+0, known plane-strain zeros), so the emitted C holds
+ * only the arithmetic a given body needs. */
+#ifndef SPHC_SCALAR_H
+#define SPHC_SCALAR_H
+
+#include <stdio.h>
+
+typedef enum {
+    SN_CONST,  /* v */
+    SN_INPUT,  /* F[(int)v] */
+    SN_PARAM,  /* law parameter (int)v, symbolic (checking only) */
+    SN_ADD, SN_SUB, SN_MUL, SN_DIV, SN_NEG, SN_POW, SN_MIN, SN_MAX,
+    SN_LT, SN_LE, SN_GT, SN_GE, SN_EQ, SN_NE, SN_AND, SN_OR, SN_NOT,
+    SN_CALL,   /* fn(a): sqrt, log, ... */
+    SN_SELECT  /* a ? b : c */
+} SnOp;
+
+typedef struct {
+    SnOp op;
+    int a, b, c;        /* operands (node ids), -1 when unused */
+    double v;           /* SN_CONST value, SN_INPUT / SN_PARAM index */
+    const char *fn;     /* SN_CALL: C function name (static string) */
+    int line;           /* model line of the statement that created it */
+    const char *file;
+} SNode;
+
+typedef struct {
+    SNode *nodes;
+    int n, cap;
+    int *table;         /* hash table of node ids, -1 empty */
+    int tcap;
+    int line;           /* current statement, stamped on new nodes */
+    const char *file;
+} SGraph;
+
+void sg_init(SGraph *g);
+void sg_free(SGraph *g);
+
+int sg_const(SGraph *g, double v);
+int sg_input(SGraph *g, int index);
+int sg_param(SGraph *g, int index);
+int sg_binary(SGraph *g, SnOp op, int a, int b);
+int sg_unary(SGraph *g, SnOp op, int a);         /* SN_NEG, SN_NOT */
+int sg_call(SGraph *g, const char *fn, int a);   /* fn: a C math function name */
+int sg_select(SGraph *g, int c, int a, int b);
+
+int sg_is_const(const SGraph *g, int id, double *v);
+
+/* Emit the nodes reachable from roots as `const double tN = ...;` lines, with a comment
+ * naming the model line each group came from.  name_of(root k) is printed by the caller;
+ * use sg_ref to print an operand (constant, input, or temporary). */
+void sg_emit(const SGraph *g, const int *roots, int nroots, FILE *out, const char *indent);
+void sg_ref(const SGraph *g, int id, FILE *out);
+
+#endif

@@ -1,0 +1,11 @@
+/* source.h — reading model source lines back, for comments in generated code. */
+#ifndef SPHC_SOURCE_H
+#define SPHC_SOURCE_H
+
+/* The text of line `line` of `file`, leading and trailing blanks removed, with any
+ * comment terminator made harmless; "" when unavailable.  Points to a static buffer. */
+const char *source_line_trimmed(const char *file, int line);
+/* The file name without its folders. */
+const char *source_basename(const char *path);
+
+#endif

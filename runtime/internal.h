@@ -1,0 +1,40 @@
+/* internal.h — runtime pieces that generated code does not see. */
+#ifndef SPHRT_INTERNAL_H
+#define SPHRT_INTERNAL_H
+
+#include "output.h"
+#include "sphrt.h"
+
+/* setup.c: particles, neighbours, gradients, selections and arrays of one body. */
+int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m);
+void sph_body_free(sph_body *b);
+
+/* A growable time series of one measured quantity set. */
+typedef struct {
+    double *t;
+    double *val;   /* n rows of `width` values */
+    int n, cap, width;
+} sph_series;
+void sph_series_push(sph_series *s, double t, const double *row);
+
+/* Energies of a body: strain (sum V psi) and kinetic (sum m v^2 / 2). */
+void sph_body_energies(const sph_body *b, double *strain, double *kinetic);
+/* Mean displacement (3) and total force (3, sum m a) over measurement k of body b. */
+void sph_measure(const sph_body *b, int k, double out[6]);
+
+/* monitor.c: stability checks; returns 0 when the state is sane, otherwise fills msg. */
+typedef struct {
+    double e_ref;     /* largest total energy seen (for runaway detection) */
+} sph_monitor;
+int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len);
+
+/* expect.c: evaluate the model's expectations; writes them into the summary and prints a
+ * line each.  Returns the number of failed expectations. */
+typedef struct {
+    sph_series *measures;   /* per (body, measure): rows ux uy uz fx fy fz */
+    int *measure_base;      /* index of body b's first measure in `measures` */
+    sph_series energy;      /* rows: total strain, total kinetic */
+} sph_record;
+int sph_expect_evaluate(const sph_model *m, const sph_record *r, sph_json *j, int quiet);
+
+#endif

@@ -1,0 +1,76 @@
+/* monitor.c — the stability monitor: a separate pass over the state, run every few steps
+ * and before every output, so that a run going unstable stops with a diagnosis and the last
+ * good output kept.  It looks for: non-finite displacement, velocity or acceleration;
+ * det F <= 0 (a particle turned inside out); velocities beyond ten times the sound speed;
+ * and total energy growing a millionfold between two checks. */
+#include <math.h>
+#include <stdio.h>
+
+#include "internal.h"
+
+typedef struct {
+    int particle;
+    const char *what;
+    double value;
+} finding;
+
+static int scan_body(const sph_body *b, finding *f)
+{
+    const int D = b->dim;
+    const double vlim2 = 100.0 * b->c0 * b->c0;
+    for (int i = 0; i < b->n; i++) {
+        double v2 = 0;
+        for (int k = 0; k < D; k++) {
+            const double u = b->u[(size_t)i * D + k], v = b->v[(size_t)i * D + k];
+            const double a = b->a[(size_t)i * D + k];
+            if (!isfinite(u) || !isfinite(v) || !isfinite(a)) {
+                *f = (finding){i, !isfinite(u) ? "displacement is not finite"
+                                  : !isfinite(v) ? "velocity is not finite"
+                                                 : "acceleration is not finite",
+                               !isfinite(u) ? u : !isfinite(v) ? v : a};
+                return 1;
+            }
+            v2 += v * v;
+        }
+        const double J = sph_det3(b->F + (size_t)i * 9);
+        if (!(J > 0)) {
+            *f = (finding){i, "det F <= 0 (particle inverted)", J};
+            return 1;
+        }
+        if (v2 > vlim2) {
+            *f = (finding){i, "speed above 10 c0 (velocity runaway)", sqrt(v2)};
+            return 1;
+        }
+    }
+    return 0;
+}
+
+int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len)
+{
+    double e_total = 0;
+    for (int ib = 0; ib < s->nbodies; ib++) {
+        const sph_body *b = &s->bodies[ib];
+        finding f;
+        if (scan_body(b, &f)) {
+            const double *X = b->X + (size_t)f.particle * b->dim;
+            snprintf(msg, len,
+                     "step %ld, t = %.6g s, body '%s', particle %d (reference position x = %g, "
+                     "%s = %g): %s (value %g)",
+                     s->step, s->t, b->desc->name, f.particle, X[0], b->dim == 2 ? "z" : "y",
+                     X[1], f.what, f.value);
+            return 1;
+        }
+        double es, ek;
+        sph_body_energies(b, &es, &ek);
+        e_total += es + ek;
+    }
+    if (!isfinite(e_total) || (mon->e_ref > 0 && e_total > 1e6 * mon->e_ref)) {
+        snprintf(msg, len, "step %ld, t = %.6g s: total energy %g grew more than a millionfold "
+                           "since the last check (%g): energy runaway",
+                 s->step, s->t, e_total, mon->e_ref);
+        return 1;
+    }
+    if (e_total > mon->e_ref)
+        mon->e_ref = e_total;
+    return 0;
+}

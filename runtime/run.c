@@ -1,0 +1,360 @@
+/* run.c — sph_main: the time loop of a generated program.
+ *
+ * Exit codes: 0 success; 1 an expectation of the model failed; 2 bad command line;
+ * 3 the run went unstable (stopped by the monitor; the last good output is kept);
+ * 4 output could not be written or set-up failed. */
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+typedef struct {
+    const sph_model *m;
+    sph_options opt;
+    double t_end, t_out;
+    sph_sim sim;
+    sph_csv energies;
+    sph_csv *measure_csv;
+    int nmeasures;
+    sph_record rec;
+    char ***frame_files; /* per body: the frame files listed in its pvd */
+    double *frame_times;
+    int nframes;
+    double step_seconds;
+    char unstable[512];
+} run_state;
+
+/* ------------------------------------------------------------------ time step (eq. 64-66) */
+
+static double stable_dt(const run_state *r)
+{
+    const sph_model *m = r->m;
+    if (m->dt_fixed > 0)
+        return m->dt_fixed;
+    double dt = INFINITY;
+    for (int i = 0; i < r->sim.nbodies; i++) {
+        const sph_body *b = &r->sim.bodies[i];
+        double dtv = b->h / (b->c0 + sqrt(b->vmax2));                /* eq. 65 */
+        double dta = b->amax2 > 0 ? sqrt(b->h / sqrt(b->amax2)) : INFINITY; /* eq. 66 */
+        dt = fmin(dt, fmin(dtv, dta));
+    }
+    return m->cfl * dt; /* eq. 64 */
+}
+
+static double dt_floor(const run_state *r)
+{
+    double lo = INFINITY;
+    for (int i = 0; i < r->sim.nbodies; i++)
+        lo = fmin(lo, r->sim.bodies[i].h / r->sim.bodies[i].c0);
+    return r->m->dtmin_coef * lo;
+}
+
+static void initial_speeds(sph_sim *s)
+{
+    for (int i = 0; i < s->nbodies; i++) {
+        sph_body *b = &s->bodies[i];
+        double v2max = 0;
+        for (int p = 0; p < b->n; p++) {
+            double v2 = 0;
+            for (int k = 0; k < b->dim; k++)
+                v2 += b->v[(size_t)p * b->dim + k] * b->v[(size_t)p * b->dim + k];
+            v2max = fmax(v2max, v2);
+        }
+        b->vmax2 = v2max;
+        b->amax2 = 0;
+    }
+}
+
+/* ------------------------------------------------------------------ output */
+
+static char *joinf(const char *fmt, const char *a, const char *b)
+{
+    size_t n = strlen(fmt) + strlen(a) + strlen(b) + 32;
+    char *s = malloc(n);
+    snprintf(s, n, fmt, a, b);
+    return s;
+}
+
+static int open_outputs(run_state *r)
+{
+    const sph_model *m = r->m;
+    char *dir = joinf("%s%s/particles", r->opt.out_dir, "");
+    int bad = sph_mkdirs(dir);
+    free(dir);
+    if (bad)
+        return -1;
+    int ncol = 2 * m->nbodies + 2;
+    const char **cols = calloc((size_t)ncol, sizeof *cols);
+    cols[0] = "time";
+    for (int i = 0; i < m->nbodies; i++) {
+        cols[1 + 2 * i] = joinf("%s_strain%s", m->bodies[i].name, "");
+        cols[2 + 2 * i] = joinf("%s_kinetic%s", m->bodies[i].name, "");
+    }
+    cols[ncol - 1] = "total";
+    char *path = joinf("%s/energies.csv%s", r->opt.out_dir, "");
+    bad = sph_csv_open(&r->energies, path, cols, ncol);
+    free(path);
+    free(cols);
+    r->rec.measure_base = calloc((size_t)m->nbodies, sizeof(int));
+    for (int i = 0; i < m->nbodies; i++) {
+        r->rec.measure_base[i] = r->nmeasures;
+        r->nmeasures += m->bodies[i].nmeasures;
+    }
+    r->measure_csv = calloc((size_t)r->nmeasures + 1, sizeof *r->measure_csv);
+    r->rec.measures = calloc((size_t)r->nmeasures + 1, sizeof *r->rec.measures);
+    r->rec.energy.width = 2;
+    static const char *const mcols[] = {"time", "ux", "uy", "uz", "fx", "fy", "fz"};
+    for (int i = 0; i < m->nbodies; i++)
+        for (int k = 0; k < m->bodies[i].nmeasures; k++) {
+            int q = r->rec.measure_base[i] + k;
+            r->rec.measures[q].width = 6;
+            path = joinf("%s/measure_%s.csv", r->opt.out_dir, m->bodies[i].measures[k].name);
+            bad |= sph_csv_open(&r->measure_csv[q], path, mcols, 7);
+            free(path);
+        }
+    r->frame_files = calloc((size_t)m->nbodies, sizeof(char **));
+    return bad ? -1 : 0;
+}
+
+/* One row of energies and measurements (every output time). */
+static int record(run_state *r)
+{
+    const sph_sim *s = &r->sim;
+    int ncol = 2 * s->nbodies + 2;
+    double *row = calloc((size_t)ncol, sizeof(double)), total[2] = {0, 0};
+    row[0] = s->t;
+    for (int i = 0; i < s->nbodies; i++) {
+        sph_body_energies(&s->bodies[i], &row[1 + 2 * i], &row[2 + 2 * i]);
+        total[0] += row[1 + 2 * i], total[1] += row[2 + 2 * i];
+    }
+    row[ncol - 1] = total[0] + total[1];
+    int bad = sph_csv_row(&r->energies, row);
+    sph_series_push(&r->rec.energy, s->t, total);
+    free(row);
+    for (int i = 0; i < s->nbodies; i++)
+        for (int k = 0; k < s->bodies[i].desc->nmeasures; k++) {
+            int q = r->rec.measure_base[i] + k;
+            double mrow[7];
+            mrow[0] = s->t;
+            sph_measure(&s->bodies[i], k, mrow + 1);
+            bad |= sph_csv_row(&r->measure_csv[q], mrow);
+            sph_series_push(&r->rec.measures[q], s->t, mrow + 1);
+        }
+    return bad;
+}
+
+static int write_frame(run_state *r)
+{
+    const sph_sim *s = &r->sim;
+    r->m->stress_output(&r->sim);
+    r->frame_times = realloc(r->frame_times, (size_t)(r->nframes + 1) * sizeof(double));
+    r->frame_times[r->nframes] = s->t;
+    int bad = 0;
+    for (int i = 0; i < s->nbodies; i++) {
+        const char *name = s->bodies[i].desc->name;
+        char file[256], path[4096];
+        snprintf(file, sizeof file, "%s_%04d.vtu", name, r->nframes);
+        snprintf(path, sizeof path, "%s/particles/%s", r->opt.out_dir, file);
+        bad |= sph_write_vtu(path, &s->bodies[i], s->t);
+        char **list = realloc(r->frame_files[i], (size_t)(r->nframes + 1) * sizeof(char *));
+        list[r->nframes] = strdup(file);
+        r->frame_files[i] = list;
+        snprintf(path, sizeof path, "%s/particles/%s.pvd", r->opt.out_dir, name);
+        bad |= sph_write_pvd(path, (const char *const *)list, r->frame_times, r->nframes + 1);
+    }
+    r->nframes++;
+    return bad | record(r);
+}
+
+static void body_summary(sph_json *j, const sph_body *b)
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    double umax = 0, vmax = 0;
+    const int D = b->dim;
+    for (int i = 0; i < b->n; i++) {
+        double x[3] = {0, b->y_plane, 0}, u2 = 0, v2 = 0;
+        for (int k = 0; k < D; k++) {
+            const double u = b->u[(size_t)i * D + k], v = b->v[(size_t)i * D + k];
+            x[sph_axis(D, k)] = b->X[(size_t)i * D + k] + u;
+            u2 += u * u, v2 += v * v;
+        }
+        for (int k = 0; k < 3; k++)
+            lo[k] = fmin(lo[k], x[k]), hi[k] = fmax(hi[k], x[k]);
+        umax = fmax(umax, u2), vmax = fmax(vmax, v2);
+    }
+    sph_json_key_object(j, NULL);
+    sph_json_str(j, "name", b->desc->name);
+    sph_json_int(j, "particles", b->n);
+    sph_json_int(j, "pairs", b->npairs);
+    sph_json_num(j, "mean_neighbours", (double)b->npairs / b->n);
+    sph_json_num(j, "dx", b->dx);
+    sph_json_num(j, "h", b->h);
+    sph_json_num(j, "c0", b->c0);
+    sph_json_key_object(j, "bbox");
+    sph_json_key_array(j, "min");
+    for (int k = 0; k < 3; k++)
+        sph_json_num(j, NULL, lo[k]);
+    sph_json_end_array(j);
+    sph_json_key_array(j, "max");
+    for (int k = 0; k < 3; k++)
+        sph_json_num(j, NULL, hi[k]);
+    sph_json_end_array(j);
+    sph_json_end_object(j);
+    sph_json_num(j, "max_displacement", sqrt(umax));
+    sph_json_num(j, "max_velocity", sqrt(vmax));
+    sph_json_end_object(j);
+}
+
+static int write_summary(run_state *r, double wall, long particles, long pairs, int *failed)
+{
+    const sph_sim *s = &r->sim;
+    char path[4096];
+    snprintf(path, sizeof path, "%s/summary.json", r->opt.out_dir);
+    sph_json j;
+    if (sph_json_open(&j, path))
+        return -1;
+    sph_json_str(&j, "model", r->m->name);
+    sph_json_str(&j, "source", r->m->source);
+    sph_json_int(&j, "dimension", r->m->dim);
+    sph_json_int(&j, "threads", omp_get_max_threads());
+    sph_json_int(&j, "particles", particles);
+    sph_json_int(&j, "pairs", pairs);
+    sph_json_int(&j, "steps", s->step);
+    sph_json_num(&j, "time", s->t);
+    sph_json_num(&j, "wall_time", wall);
+    sph_json_num(&j, "step_time", r->step_seconds);
+    double ps = (double)particles * (double)s->step;
+    sph_json_num(&j, "ns_per_particle_step", ps > 0 ? 1e9 * r->step_seconds / ps : NAN);
+    sph_json_num(&j, "pair_interactions_per_second",
+                 r->step_seconds > 0 ? (double)pairs * (double)s->step / r->step_seconds : NAN);
+    sph_json_key_object(&j, "stability");
+    sph_json_str(&j, "verdict", r->unstable[0] ? "unstable" : "stable");
+    if (r->unstable[0])
+        sph_json_str(&j, "message", r->unstable);
+    sph_json_end_object(&j);
+    sph_json_key_array(&j, "bodies");
+    for (int i = 0; i < s->nbodies; i++)
+        body_summary(&j, &s->bodies[i]);
+    sph_json_end_array(&j);
+    *failed = r->unstable[0] ? 0 : sph_expect_evaluate(r->m, &r->rec, &j, r->opt.quiet);
+    return sph_json_close(&j);
+}
+
+/* ------------------------------------------------------------------ the loop */
+
+static int check_now(run_state *r, sph_monitor *mon)
+{
+    if (!sph_monitor_check(mon, &r->sim, r->unstable, sizeof r->unstable))
+        return 0;
+    return 1;
+}
+
+/* Runs until t_end or instability; returns 0, or 1 when the monitor stopped it. */
+static int time_loop(run_state *r)
+{
+    sph_sim *s = &r->sim;
+    sph_monitor mon = {0};
+    sph_progress prog;
+    sph_progress_start(&prog, r->t_end, r->opt.quiet);
+    const double floor_dt = dt_floor(r), eps = 1e-9 * r->t_out;
+    double next_out = r->t_out;
+    while (s->t < r->t_end - eps) {
+        double dt = stable_dt(r);
+        if (!(dt >= floor_dt)) {
+            snprintf(r->unstable, sizeof r->unstable,
+                     "step %ld, t = %.6g s: time step collapsed to %g s (below dtmin = %g s)",
+                     s->step, s->t, dt, floor_dt);
+            break;
+        }
+        dt = fmin(dt, fmin(next_out, r->t_end) - s->t); /* land on output times */
+        s->dt = dt;
+        double w0 = sph_wall_time();
+        r->m->step(s, dt);
+        r->step_seconds += sph_wall_time() - w0;
+        s->t += dt;
+        s->step++;
+        int output = s->t >= next_out - eps;
+        if ((output || s->step % 20 == 0) && check_now(r, &mon))
+            break;
+        if (output) {
+            if (write_frame(r))
+                return -1;
+            next_out += r->t_out;
+        }
+        sph_progress_update(&prog, s->t, dt, s->step);
+    }
+    sph_progress_finish(&prog);
+    return r->unstable[0] ? 1 : 0;
+}
+
+static int setup(run_state *r, long *particles, long *pairs)
+{
+    const sph_model *m = r->m;
+    r->sim.m = m;
+    r->sim.nbodies = m->nbodies;
+    r->sim.bodies = calloc((size_t)m->nbodies, sizeof(sph_body));
+    for (int i = 0; i < m->nbodies; i++) {
+        if (sph_body_setup(&r->sim.bodies[i], &m->bodies[i], m))
+            return -1;
+        *particles += r->sim.bodies[i].n;
+        *pairs += r->sim.bodies[i].npairs;
+        if (!r->opt.quiet)
+            printf("%s: body %s: %d particles, dx = %g m, %.1f neighbours each, c0 = %g m/s\n",
+                   m->name, m->bodies[i].name, r->sim.bodies[i].n, r->sim.bodies[i].dx,
+                   (double)r->sim.bodies[i].npairs / r->sim.bodies[i].n, m->bodies[i].c0);
+    }
+    if (m->dt_fixed > 0 && m->dt_fixed > dt_floor(r) / m->dtmin_coef)
+        fprintf(stderr, "%s: warning: the fixed time step %g s exceeds h/c0 = %g s (CFL 1); the "
+                        "run is likely to be unstable\n",
+                m->name, m->dt_fixed, dt_floor(r) / m->dtmin_coef);
+    return 0;
+}
+
+int sph_main(const sph_model *m, int argc, char **argv)
+{
+    run_state r;
+    memset(&r, 0, sizeof r);
+    r.m = m;
+    int rc = sph_parse_options(&r.opt, m->name, argc, argv);
+    if (rc)
+        return rc < 0 ? 2 : 0;
+    if (r.opt.threads > 0)
+        omp_set_num_threads(r.opt.threads);
+    r.t_end = r.opt.t_end > 0 ? r.opt.t_end : m->t_end;
+    r.t_out = r.opt.t_out > 0 ? r.opt.t_out : m->t_out;
+    double wall0 = sph_wall_time();
+    long particles = 0, pairs = 0;
+    if (setup(&r, &particles, &pairs) || open_outputs(&r))
+        return 4;
+    m->velocity_bcs(&r.sim, 0.0); /* initial conditions: the BCs at t = 0 */
+    initial_speeds(&r.sim);
+    if (write_frame(&r))
+        return 4;
+    int state = time_loop(&r);
+    if (state < 0)
+        return 4;
+    int failed = 0;
+    double wall = sph_wall_time() - wall0;
+    if (write_summary(&r, wall, particles, pairs, &failed))
+        return 4;
+    sph_csv_close(&r.energies);
+    for (int q = 0; q < r.nmeasures; q++)
+        sph_csv_close(&r.measure_csv[q]);
+    double ps = (double)particles * (double)r.sim.step;
+    if (state == 1) {
+        fprintf(stderr, "%s: error: the run went unstable at %s\n%s: the last good output is in "
+                        "%s/ (t = %g s)\n",
+                m->name, r.unstable, m->name, r.opt.out_dir, r.frame_times[r.nframes - 1]);
+        return 3;
+    }
+    if (!r.opt.quiet)
+        printf("%s: %ld particles, %ld steps to t = %g s in %.2f s (%.1f ns per particle-step)\n"
+               "%s: ParaView: %s/particles/%s.pvd ; energies and measurements in %s/\n",
+               m->name, particles, r.sim.step, r.sim.t, wall,
+               ps > 0 ? 1e9 * r.step_seconds / ps : 0.0, m->name, r.opt.out_dir,
+               m->bodies[0].name, r.opt.out_dir);
+    return failed ? 1 : 0;
+}

@@ -1,0 +1,154 @@
+/* ---- body @B@: internal forces ------------------------------------------------------
+ * Pass 1, per particle: deformation gradient with corrected kernel gradients (eq. 53),
+ * the material law (S, psi), P = F S (eq. 2), and the products the momentum pass gathers
+ * from neighbours: Q = P L and, for artificial viscosity, Cv = cof(F) L = J F^-T L. */
+static void @B@_stress_pass(sph_body *b)
+{
+    enum { D = @DIM@ };
+    const int n = b->n;
+    const int *restrict start = b->nb_start, *restrict nb = b->nb;
+    const double *restrict w = b->nb_w, *restrict u = b->u, *restrict Lc = b->L;
+    double *restrict Fs = b->F, *restrict Q = b->Q, *restrict psi = b->psi;
+//@if VISCOSITY
+    double *restrict Cv = b->Cv;
+//@endif
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; i++) {
+        /* A = sum_j V_j (u_j - u_i) (x) grad W_ij ; F = I + A L^T  (eq. 53, corrected) */
+        double A[D * D] = {0};
+        for (int p = start[i]; p < start[i + 1]; p++) {
+            const int j = nb[p];
+            for (int r = 0; r < D; r++) {
+                const double du = u[j * D + r] - u[i * D + r];
+                for (int c = 0; c < D; c++)
+                    A[r * D + c] += du * w[(size_t)p * D + c];
+            }
+        }
+        const double *L = Lc + (size_t)i * D * D;
+        double F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+        for (int r = 0; r < D; r++)
+            for (int c = 0; c < D; c++) {
+                double s = 0;
+                for (int k = 0; k < D; k++)
+                    s += A[r * D + k] * L[c * D + k];
+                F[sph_axis(D, r) * 3 + sph_axis(D, c)] += s;
+            }
+        double S[9], e;
+        @B@_material(F, S, &e);
+        psi[i] = e;
+        for (int k = 0; k < 9; k++)
+            Fs[(size_t)i * 9 + k] = F[k];
+        /* P = F S (eq. 2), in-plane block, then Q = P L */
+        double P[D * D];
+        for (int r = 0; r < D; r++)
+            for (int c = 0; c < D; c++) {
+                double s = 0;
+                for (int k = 0; k < 3; k++)
+                    s += F[sph_axis(D, r) * 3 + k] * S[k * 3 + sph_axis(D, c)];
+                P[r * D + c] = s;
+            }
+        for (int r = 0; r < D; r++)
+            for (int c = 0; c < D; c++) {
+                double s = 0;
+                for (int k = 0; k < D; k++)
+                    s += P[r * D + k] * L[k * D + c];
+                Q[(size_t)i * D * D + r * D + c] = s;
+            }
+//@if VISCOSITY
+        /* cof(F) = J F^-T: the Piola transform of the viscous pressure (eq. 57) */
+        for (int r = 0; r < D; r++)
+            for (int c = 0; c < D; c++) {
+                double s = 0;
+                for (int k = 0; k < D; k++)
+                    s += sph_cofactor(F, sph_axis(D, r), sph_axis(D, k)) * L[k * D + c];
+                Cv[(size_t)i * D * D + r * D + c] = s;
+            }
+//@endif
+    }
+}
+
+/* Pass 2, per particle: momentum balance (eq. 55) in the symmetric corrected form
+ *   dv_i/dt = 1/rho0 sum_j V_j (P_i L_i + P_j L_j) grad W_ij
+ * which conserves linear momentum exactly, plus artificial viscosity (eq. 57-60) and
+ * body forces. */
+static void @B@_momentum_pass(sph_body *b)
+{
+    enum { D = @DIM@ };
+    const int n = b->n;
+    const int *restrict start = b->nb_start, *restrict nb = b->nb;
+    const double *restrict w = b->nb_w, *restrict Q = b->Q;
+    double *restrict acc = b->a;
+    const double inv_rho = 1.0 / b->rho0;
+//@if VISCOSITY
+    const double *restrict X = b->X, *restrict v = b->v, *restrict Cv = b->Cv;
+    const double h = b->h, eps_h2 = 0.001 * b->h * b->h; /* eq. 60 */
+//@endif
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; i++) {
+        double f[D] = {0};
+//@if VISCOSITY
+        double fv[D] = {0};
+//@endif
+        const double *Qi = Q + (size_t)i * D * D;
+        for (int p = start[i]; p < start[i + 1]; p++) {
+            const int j = nb[p];
+            const double *wp = w + (size_t)p * D;
+            const double *Qj = Q + (size_t)j * D * D;
+            for (int r = 0; r < D; r++)
+                for (int c = 0; c < D; c++)
+                    f[r] += (Qi[r * D + c] + Qj[r * D + c]) * wp[c];
+//@if VISCOSITY
+            /* G_ij (eq. 60) and the viscous pressure pi_ij (eq. 58, times rho0), which
+             * resists relative motion along the reference separation. */
+            double vx = 0, r2 = 0;
+            for (int k = 0; k < D; k++) {
+                const double dX = X[i * D + k] - X[j * D + k];
+                vx += (v[i * D + k] - v[j * D + k]) * dX;
+                r2 += dX * dX;
+            }
+            const double G = h * vx / (r2 + eps_h2);
+            double pi = -@BETA1@ * @C0@ * G;
+//@if BETA2
+            if (G < 0)
+                pi += @BETA2@ * G * G;
+//@endif
+            const double *Ci = Cv + (size_t)i * D * D, *Cj = Cv + (size_t)j * D * D;
+            for (int r = 0; r < D; r++)
+                for (int c = 0; c < D; c++)
+                    fv[r] -= 0.5 * pi * (Ci[r * D + c] + Cj[r * D + c]) * wp[c];
+//@endif
+        }
+        for (int r = 0; r < D; r++)
+            acc[i * D + r] = f[r] * inv_rho
+//@if VISCOSITY
+                             + fv[r]
+//@endif
+//@if GRAVITY
+                             + @B@_gravity[r]
+//@endif
+                ;
+    }
+}
+
+static void @B@_forces(sph_body *b)
+{
+    @B@_stress_pass(b);
+    @B@_momentum_pass(b);
+}
+
+/* Cauchy stress sigma = F S F^T / J for output (xx yy zz xy yz zx). */
+static void @B@_stress_output(sph_body *b)
+{
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < b->n; i++) {
+        const double *F = b->F + (size_t)i * 9;
+        double S[9], e, FS[9], sig[9];
+        @B@_material(F, S, &e);
+        sph_mat3_mul(F, S, FS);
+        sph_mat3_mul_bt(FS, F, sig);
+        const double J = sph_det3(F);
+        static const int idx[6] = {0, 4, 8, 1, 5, 2};
+        for (int k = 0; k < 6; k++)
+            b->sigma[(size_t)i * 6 + k] = sig[idx[k]] / J;
+    }
+}
