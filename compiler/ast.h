@@ -229,4 +229,25 @@ void ast_dump(const Program *p, FILE *out);
 
 const char *op_spelling(OpKind op);
 
+/* ---------------------------------------------------------------- more helpers (ast.c, ast_dump.c) */
+
+/* Allocation that never returns NULL (prints "out of memory" and exits). */
+void *ast_alloc(size_t size);
+char *ast_strdup(const char *s);
+
+/* A setting / named argument with its first value; further values are added
+ * with ast_push_expr(&s.values, &s.nvalues, e). */
+Setting ast_setting(SrcLoc loc, const char *key, Expr *value);
+/* Shapes: a primitive, or lhs op rhs with op '+' (union) or '-' (difference). */
+ShapeExpr *ast_shape_prim(NamedCall call);
+ShapeExpr *ast_shape_op(SrcLoc loc, char op, ShapeExpr *lhs, ShapeExpr *rhs);
+/* A material-law statement without nested blocks (LET/STRESS/ENERGY/STATE),
+ * or the head of an IF/BLOCK whose lists are filled in afterwards. */
+MatStmt ast_matstmt(MatStmtKind kind, SrcLoc loc, const char *name, Expr *value);
+/* Component bit of an axis name: x -> 1, y -> 2, z -> 4, anything else -> 0. */
+int ast_axis_bit(const char *name);
+
+/* Print one expression, fully parenthesised, on one line (no newline). */
+void ast_dump_expr(const Expr *e, FILE *out);
+
 #endif

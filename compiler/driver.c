@@ -175,6 +175,8 @@ int build_program(const Model *m, const Options *o, const Paths *paths)
     snprintf(inc, sizeof inc, "-I%s", paths->include);
     if (write_source(m, paths, src))
         return -1;
+    if (o->emit_only)
+        return 0;
     const char *cc = getenv("CC");
     const char *exe = o->output ? o->output : m->name;
     char *argv[] = {(char *)(cc && *cc ? cc : "cc"), "-std=c11", "-O3", "-march=native",

@@ -12,6 +12,7 @@ typedef struct {
     const char *emit_dir;  /* --emit-c */
     const char *dump;      /* ast | model | plan */
     int check_only;
+    int emit_only;         /* --emit-only: write the C source (to --emit-c DIR) and stop */
 } Options;
 
 typedef struct {

@@ -24,6 +24,7 @@ static void usage(FILE *f)
           "  --target T       cpu (OpenMP, default) or cuda\n"
           "  --emit-c DIR     keep the generated C source in DIR\n"
           "  --dump=STAGE     print the syntax tree, checked model or kernel plan and stop\n"
+          "  --emit-only      with --emit-c: write the C source without compiling it\n"
           "  --check          check the model only\n"
           "  --version        print the version\n",
           f);
@@ -53,6 +54,8 @@ static int parse_args(int argc, char **argv, Options *o)
             o->emit_dir = a + 9;
         } else if (!strncmp(a, "--dump=", 7)) {
             o->dump = a + 7;
+        } else if (!strcmp(a, "--emit-only")) {
+            o->emit_only = 1;
         } else if (!strcmp(a, "--check")) {
             o->check_only = 1;
         } else if (a[0] == '-' && a[1]) {
@@ -71,6 +74,10 @@ static int parse_args(int argc, char **argv, Options *o)
     }
     if (strcmp(o->target, "cpu") && strcmp(o->target, "cuda")) {
         diag_fatal_noloc("unknown target '%s' (expected cpu or cuda)", o->target);
+        return -1;
+    }
+    if (o->emit_only && !o->emit_dir) {
+        diag_fatal_noloc("--emit-only needs --emit-c DIR");
         return -1;
     }
     if (o->dump && strcmp(o->dump, "ast") && strcmp(o->dump, "model") && strcmp(o->dump, "plan")) {

@@ -17,8 +17,6 @@ typedef struct {
 } sph_series;
 void sph_series_push(sph_series *s, double t, const double *row);
 
-/* Energies of a body: strain (sum V psi) and kinetic (sum m v^2 / 2). */
-void sph_body_energies(const sph_body *b, double *strain, double *kinetic);
 /* Mean displacement (3) and total force (3, sum m a) over measurement k of body b. */
 void sph_measure(const sph_body *b, int k, double out[6]);
 

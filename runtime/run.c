@@ -27,45 +27,12 @@ typedef struct {
     char unstable[512];
 } run_state;
 
-/* ------------------------------------------------------------------ time step (eq. 64-66) */
-
-static double stable_dt(const run_state *r)
-{
-    const sph_model *m = r->m;
-    if (m->dt_fixed > 0)
-        return m->dt_fixed;
-    double dt = INFINITY;
-    for (int i = 0; i < r->sim.nbodies; i++) {
-        const sph_body *b = &r->sim.bodies[i];
-        double dtv = b->h / (b->c0 + sqrt(b->vmax2));                /* eq. 65 */
-        double dta = b->amax2 > 0 ? sqrt(b->h / sqrt(b->amax2)) : INFINITY; /* eq. 66 */
-        dt = fmin(dt, fmin(dtv, dta));
-    }
-    return m->cfl * dt; /* eq. 64 */
-}
-
 static double dt_floor(const run_state *r)
 {
     double lo = INFINITY;
     for (int i = 0; i < r->sim.nbodies; i++)
         lo = fmin(lo, r->sim.bodies[i].h / r->sim.bodies[i].c0);
     return r->m->dtmin_coef * lo;
-}
-
-static void initial_speeds(sph_sim *s)
-{
-    for (int i = 0; i < s->nbodies; i++) {
-        sph_body *b = &s->bodies[i];
-        double v2max = 0;
-        for (int p = 0; p < b->n; p++) {
-            double v2 = 0;
-            for (int k = 0; k < b->dim; k++)
-                v2 += b->v[(size_t)p * b->dim + k] * b->v[(size_t)p * b->dim + k];
-            v2max = fmax(v2max, v2);
-        }
-        b->vmax2 = v2max;
-        b->amax2 = 0;
-    }
 }
 
 /* ------------------------------------------------------------------ output */
@@ -262,7 +229,7 @@ static int time_loop(run_state *r)
     const double floor_dt = dt_floor(r), eps = 1e-9 * r->t_out;
     double next_out = r->t_out;
     while (s->t < r->t_end - eps) {
-        double dt = stable_dt(r);
+        double dt = sph_sim_stable_dt(s);
         if (!(dt >= floor_dt)) {
             snprintf(r->unstable, sizeof r->unstable,
                      "step %ld, t = %.6g s: time step collapsed to %g s (below dtmin = %g s)",
@@ -270,12 +237,9 @@ static int time_loop(run_state *r)
             break;
         }
         dt = fmin(dt, fmin(next_out, r->t_end) - s->t); /* land on output times */
-        s->dt = dt;
         double w0 = sph_wall_time();
-        r->m->step(s, dt);
+        sph_sim_step(s, dt);
         r->step_seconds += sph_wall_time() - w0;
-        s->t += dt;
-        s->step++;
         int output = s->t >= next_out - eps;
         if ((output || s->step % 20 == 0) && check_now(r, &mon))
             break;
@@ -293,18 +257,11 @@ static int time_loop(run_state *r)
 static int setup(run_state *r, long *particles, long *pairs)
 {
     const sph_model *m = r->m;
-    r->sim.m = m;
-    r->sim.nbodies = m->nbodies;
-    r->sim.bodies = calloc((size_t)m->nbodies, sizeof(sph_body));
-    for (int i = 0; i < m->nbodies; i++) {
-        if (sph_body_setup(&r->sim.bodies[i], &m->bodies[i], m))
-            return -1;
+    if (sph_sim_init(&r->sim, m, !r->opt.quiet))
+        return -1;
+    for (int i = 0; i < r->sim.nbodies; i++) {
         *particles += r->sim.bodies[i].n;
         *pairs += r->sim.bodies[i].npairs;
-        if (!r->opt.quiet)
-            printf("%s: body %s: %d particles, dx = %g m, %.1f neighbours each, c0 = %g m/s\n",
-                   m->name, m->bodies[i].name, r->sim.bodies[i].n, r->sim.bodies[i].dx,
-                   (double)r->sim.bodies[i].npairs / r->sim.bodies[i].n, m->bodies[i].c0);
     }
     if (m->dt_fixed > 0 && m->dt_fixed > dt_floor(r) / m->dtmin_coef)
         fprintf(stderr, "%s: warning: the fixed time step %g s exceeds h/c0 = %g s (CFL 1); the "
@@ -329,8 +286,6 @@ int sph_main(const sph_model *m, int argc, char **argv)
     long particles = 0, pairs = 0;
     if (setup(&r, &particles, &pairs) || open_outputs(&r))
         return 4;
-    m->velocity_bcs(&r.sim, 0.0); /* initial conditions: the BCs at t = 0 */
-    initial_speeds(&r.sim);
     if (write_frame(&r))
         return 4;
     int state = time_loop(&r);
@@ -343,6 +298,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
     sph_csv_close(&r.energies);
     for (int q = 0; q < r.nmeasures; q++)
         sph_csv_close(&r.measure_csv[q]);
+    sph_sim_free(&r.sim);
     double ps = (double)particles * (double)r.sim.step;
     if (state == 1) {
         fprintf(stderr, "%s: error: the run went unstable at %s\n%s: the last good output is in "

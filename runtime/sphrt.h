@@ -203,6 +203,16 @@ struct sph_sim {
 /* Entry point of a generated program. */
 int sph_main(const sph_model *m, int argc, char **argv);
 
+/* The simulation without the program around it (used by sph_main and by tests):
+ * build every body and apply the velocity boundary conditions at t = 0 (initial
+ * conditions); the stable time step of eq. 64-66 (or the fixed one); one step. */
+int sph_sim_init(sph_sim *s, const sph_model *m, int verbose);
+double sph_sim_stable_dt(const sph_sim *s);
+void sph_sim_step(sph_sim *s, double dt);
+void sph_sim_free(sph_sim *s);
+/* Energies of a body: strain (sum V psi) and kinetic (sum m |v|^2 / 2). */
+void sph_body_energies(const sph_body *b, double *strain, double *kinetic);
+
 /* Component k (0..dim-1) of a compact vector -> 3D axis (0 = x, 1 = y, 2 = z). */
 static inline int sph_axis(int dim, int k) { return dim == 2 ? 2 * k : k; }
 

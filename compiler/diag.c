@@ -1,0 +1,156 @@
+/* diag.c — diagnostics in the gcc style, on stderr, without colour:
+ *
+ *   model.sph:3:14: error: unknown function 'sinn'
+ *       3 |   velocity z = sinn(t)
+ *         |                ^
+ *
+ * The source line is read again from the file named in the location; when it
+ * cannot be read only the first line is printed.  Columns count bytes; tabs
+ * before the caret are copied so that the caret lines up. */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diag.h"
+
+static int n_errors;
+static int n_warnings;
+
+/* Reads line `line` (1-based) of `path` into a malloc'ed string without its
+ * line terminator, or returns NULL. */
+static char *read_source_line(const char *path, int line)
+{
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return NULL;
+    size_t cap = 128, len = 0;
+    char *buf = malloc(cap);
+    int cur = 1, found = 0, c;
+    if (!buf) {
+        fclose(f);
+        return NULL;
+    }
+    while ((c = getc(f)) != EOF) {
+        if (cur == line)
+            found = 1;
+        if (c == '\n') {
+            if (cur == line)
+                break;
+            cur++;
+            continue;
+        }
+        if (cur != line)
+            continue;
+        if (len + 2 > cap) {
+            char *nb = realloc(buf, cap * 2);
+            if (!nb) {
+                free(buf);
+                fclose(f);
+                return NULL;
+            }
+            buf = nb;
+            cap *= 2;
+        }
+        buf[len++] = (char)c;
+    }
+    fclose(f);
+    if (!found) {
+        free(buf);
+        return NULL;
+    }
+    if (len > 0 && buf[len - 1] == '\r')
+        len--;
+    buf[len] = '\0';
+    return buf;
+}
+
+static void show_source(SrcLoc loc)
+{
+    if (!loc.file || loc.line <= 0)
+        return;
+    char *text = read_source_line(loc.file, loc.line);
+    if (!text)
+        return;
+    char num[16];
+    int width = snprintf(num, sizeof num, "%d", loc.line);
+    if (width < 4)
+        width = 4;
+    fprintf(stderr, " %*d | %s\n", width, loc.line, text);
+    if (loc.col > 0) {
+        size_t len = strlen(text);
+        size_t col = (size_t)loc.col - 1;
+        if (col > len)
+            col = len;
+        fprintf(stderr, " %*s | ", width, "");
+        for (size_t i = 0; i < col; i++)
+            fputc(text[i] == '\t' ? '\t' : ' ', stderr);
+        fputs("^\n", stderr);
+    }
+    free(text);
+}
+
+static void report(SrcLoc loc, const char *kind, const char *fmt, va_list ap)
+{
+    fflush(stdout);
+    if (loc.file && loc.line > 0 && loc.col > 0)
+        fprintf(stderr, "%s:%d:%d: %s: ", loc.file, loc.line, loc.col, kind);
+    else if (loc.file && loc.line > 0)
+        fprintf(stderr, "%s:%d: %s: ", loc.file, loc.line, kind);
+    else if (loc.file)
+        fprintf(stderr, "%s: %s: ", loc.file, kind);
+    else
+        fprintf(stderr, "sphc: %s: ", kind);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    show_source(loc);
+}
+
+void diag_error(SrcLoc loc, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    report(loc, "error", fmt, ap);
+    va_end(ap);
+    n_errors++;
+}
+
+void diag_warning(SrcLoc loc, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    report(loc, "warning", fmt, ap);
+    va_end(ap);
+    n_warnings++;
+}
+
+void diag_note(SrcLoc loc, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    report(loc, "note", fmt, ap);
+    va_end(ap);
+}
+
+void diag_fatal_noloc(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fflush(stdout);
+    fputs("sphc: error: ", stderr);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+    n_errors++;
+}
+
+int diag_error_count(void)
+{
+    return n_errors;
+}
+
+void diag_reset(void)
+{
+    n_errors = 0;
+    n_warnings = 0;
+}
