@@ -1,0 +1,76 @@
+/* output.h — files a run writes: ParaView particles, CSV time series, summary.json,
+ * and the terminal progress line.  All functions return 0 on success, -1 on an I/O
+ * error (after printing "sph: error: cannot write PATH: reason" to stderr). */
+#ifndef SPHRT_OUTPUT_H
+#define SPHRT_OUTPUT_H
+
+#include <stdio.h>
+#include "sphrt.h"
+
+/* mkdir -p */
+int sph_mkdirs(const char *path);
+
+/* One VTK XML UnstructuredGrid (.vtu) file of a body's particles (VTK_VERTEX cells), binary
+ * "raw" appended data with UInt64 headers, Float64 values.  Points are the current positions
+ * X+u in 3D (2D: y = body->y_plane).  Point data: "displacement" (3), "velocity" (3),
+ * "cauchy_stress" (6 components xx yy zz xy yz zx, from body->sigma), "sigma_vm" (von Mises),
+ * "J" (det F), "strain_energy" (psi). */
+int sph_write_vtu(const char *path, const sph_body *b, double t);
+
+/* A ParaView collection (.pvd) listing files[k] (relative to the pvd) at times[k]. */
+int sph_write_pvd(const char *path, const char *const *files, const double *times, int n);
+
+/* A CSV time series: opened once with a header line, appended row by row (flushed). */
+typedef struct {
+    FILE *f;
+    int ncols;
+} sph_csv;
+int sph_csv_open(sph_csv *c, const char *path, const char *const *columns, int ncols);
+int sph_csv_row(sph_csv *c, const double *values); /* ncols values, %.10g */
+void sph_csv_close(sph_csv *c);
+
+/* A small JSON writer (pretty-printed, 2-space indent) for summary.json. */
+typedef struct {
+    FILE *f;
+    int depth;
+    int first[32]; /* per depth: no member written yet */
+} sph_json;
+int sph_json_open(sph_json *j, const char *path);  /* writes "{" */
+void sph_json_key_object(sph_json *j, const char *key);  /* "key": {   (key NULL inside arrays) */
+void sph_json_key_array(sph_json *j, const char *key);   /* "key": [ */
+void sph_json_end_object(sph_json *j);
+void sph_json_end_array(sph_json *j);
+void sph_json_num(sph_json *j, const char *key, double v);  /* non-finite -> null */
+void sph_json_int(sph_json *j, const char *key, long v);
+void sph_json_str(sph_json *j, const char *key, const char *s); /* escaped */
+void sph_json_bool(sph_json *j, const char *key, int v);
+int sph_json_close(sph_json *j);  /* writes the final "}" and closes */
+
+/* Progress line on a terminal (only when stderr is a tty and not quiet):
+ * "\r[ 42.0%] t = 0.1234 s  dt = 2.1e-06 s  1234 steps/s  ETA 0:00:12" */
+typedef struct {
+    int enabled;
+    double t_end;
+    double wall_start, wall_last;
+    long step_last;
+} sph_progress;
+void sph_progress_start(sph_progress *p, double t_end, int quiet);
+void sph_progress_update(sph_progress *p, double t, double dt, long step); /* rate-limited: 4 Hz */
+void sph_progress_finish(sph_progress *p);
+
+/* Wall clock in seconds (monotonic). */
+double sph_wall_time(void);
+
+/* Command-line options of a generated program. */
+typedef struct {
+    const char *out_dir;  /* --out DIR (default "<model>_out") */
+    int threads;          /* --threads N (0 = OpenMP default) */
+    double t_end;         /* --end T   (< 0: model's) */
+    double t_out;         /* --every T (< 0: model's) */
+    int quiet;            /* --quiet */
+} sph_options;
+/* Parses argv; prints usage and returns -1 on a bad option (the caller exits 2);
+ * returns 1 after printing --help, 0 otherwise. */
+int sph_parse_options(sph_options *o, const char *model_name, int argc, char **argv);
+
+#endif
