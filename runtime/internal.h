@@ -5,6 +5,11 @@
 #include "output.h"
 #include "sphrt.h"
 
+/* region.c: regions tested in the body's dimension (2D: in the x-z plane, y ignored). */
+int sph_region_contains_dim(const sph_region *r, int dim, const double p[3]);
+double sph_region_distance_dim(const sph_region *r, int dim, const double p[3]);
+int sph_region_bbox_dim(const sph_region *r, int dim, double lo[3], double hi[3]);
+
 /* setup.c: particles, neighbours, gradients, selections and arrays of one body. */
 int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m);
 void sph_body_free(sph_body *b);

@@ -1,0 +1,119 @@
+/* fill.c — filling a region with particles on a cubic lattice.
+ *
+ * Lattice: cell centres lo + (k + 1/2) dx along every varying axis, where lo is the minimum
+ * of the bounding box of the region's non-subtracted primitives (see region.c); a lattice
+ * point is kept when the region contains it (inclusive).  In 2D only x and z vary, y is
+ * y_plane, and the region is tested in its x-z version (region.c: box y extent ignored,
+ * sphere -> disc, cylinder -> rectangle, or disc when its axis is along y).
+ *
+ * Ordering (cache-friendly, deterministic): the lattice is cut into square/cubic tiles of
+ * TILE points per axis (16 in 2D, 8 in 3D); tiles are visited with x fastest, then y, then
+ * z, and inside a tile points are again ordered x fastest, then y, then z.  So particles that
+ * are close in space are mostly close in memory, and a box narrower than one tile along x is
+ * simply "x fastest".
+ *
+ * Both passes (count per tile, then write) run in parallel over tiles with OpenMP.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "internal.h"
+
+/* The lattice: box minimum, spacing, points and tiles per compact component. */
+typedef struct {
+    int dim, tile;
+    double lo[3], dx, y_plane;
+    long nk[3], nt[3], ntiles, tile_pts;
+} lattice;
+
+/* Sets up the lattice of region r; returns 0 when it is empty or too large. */
+static int lattice_init(lattice *L, const sph_region *r, int dim, double dx, double y_plane)
+{
+    double lo[3], hi[3], total = 1.0;
+    if (dx <= 0.0 || (dim != 2 && dim != 3) || !sph_region_bbox_dim(r, dim, lo, hi))
+        return 0;
+    L->dim = dim;
+    L->dx = dx;
+    L->y_plane = y_plane;
+    L->tile = dim == 2 ? 16 : 8;
+    L->ntiles = 1;
+    L->tile_pts = 1;
+    for (int c = 0; c < 3; c++) {
+        int ax = sph_axis(dim, c);
+        L->lo[c] = c < dim ? lo[ax] : 0.0;
+        /* An upper bound of the points: lo + (k + 1/2) dx <= hi; contains() decides. */
+        double ext = c < dim ? (hi[ax] - lo[ax]) / dx : 0.0;
+        if (!(ext >= 0.0) || ext > 1e8)
+            return 0;
+        L->nk[c] = c < dim ? (long)floor(ext + 1e-9) + 1 : 1;
+        L->nt[c] = c < dim ? (L->nk[c] + L->tile - 1) / L->tile : 1;
+        L->ntiles *= L->nt[c];
+        L->tile_pts *= c < dim ? L->tile : 1;
+        total *= (double)L->nk[c];
+    }
+    return total < 2e9;
+}
+
+/* Lattice point number l of tile t: sets p (3D coordinates); 0 when outside the lattice. */
+static int lattice_point(const lattice *L, long t, long l, double p[3])
+{
+    p[1] = L->y_plane;
+    for (int c = 0; c < L->dim; c++) {
+        long k = (t % L->nt[c]) * L->tile + l % L->tile;
+        t /= L->nt[c];
+        l /= L->tile;
+        if (k >= L->nk[c])
+            return 0;
+        p[sph_axis(L->dim, c)] = L->lo[c] + ((double)k + 0.5) * L->dx;
+    }
+    return 1;
+}
+
+/* Visits tile t: counts its points in the region and, when X is given, writes them. */
+static long tile_fill(const lattice *L, const sph_region *r, long t, double *X)
+{
+    long m = 0;
+    double p[3];
+    for (long l = 0; l < L->tile_pts; l++) {
+        if (!lattice_point(L, t, l, p) || !sph_region_contains_dim(r, L->dim, p))
+            continue;
+        if (X)
+            for (int c = 0; c < L->dim; c++)
+                X[m * L->dim + c] = p[sph_axis(L->dim, c)];
+        m++;
+    }
+    return m;
+}
+
+int sph_fill_region(const sph_region *r, int dim, double dx, double y_plane, double **X)
+{
+    lattice L;
+    *X = NULL;
+    if (!lattice_init(&L, r, dim, dx, y_plane)) {
+        if (r->n > 0)
+            fprintf(stderr, "sph: error: cannot fill region (dim %d, dx %g): empty or too "
+                            "many lattice points\n", dim, dx);
+        return 0;
+    }
+    long *first = malloc((size_t)(L.ntiles + 1) * sizeof *first);
+    if (!first)
+        return 0;
+    first[0] = 0;
+#pragma omp parallel for schedule(dynamic, 16)
+    for (long t = 0; t < L.ntiles; t++)
+        first[t + 1] = tile_fill(&L, r, t, NULL);
+    for (long t = 0; t < L.ntiles; t++)
+        first[t + 1] += first[t];
+    long n = first[L.ntiles];
+    if (n > 0 && n <= 0x7fffffffL && (*X = malloc((size_t)n * dim * sizeof **X))) {
+#pragma omp parallel for schedule(dynamic, 16)
+        for (long t = 0; t < L.ntiles; t++)
+            tile_fill(&L, r, t, *X + first[t] * dim);
+    } else {
+        if (n > 0)
+            fprintf(stderr, "sph: error: cannot allocate %ld particles\n", n);
+        n = 0;
+    }
+    free(first);
+    return (int)n;
+}

@@ -1,0 +1,83 @@
+/* gradients.c — kernel gradients per pair and the kernel-gradient correction per particle.
+ *
+ * For every pair p = (i, j) of the CSR lists:
+ *     w[p*dim + k] = vol * (dW/dr / r)(|X_i - X_j|) * (X_i - X_j)_k      (= V_j grad_i W_ij)
+ * and for every particle
+ *     M_i[r][c] = sum_j (X_j - X_i)_r w_c,     L_i = M_i^{-T} = cof(M_i) / det(M_i),
+ * so that sum_j V_j (X_j - X_i) ⊗ (L_i grad_i W_ij) = M_i L_i^T = I exactly.  M_i is
+ * dimensionless (about I in the interior); where |det M_i| < 1e-6 (too few or collinear
+ * neighbours) L_i = I.  Parallel over particles with OpenMP.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "sphrt.h"
+
+/* Cofactor matrix of the dim×dim matrix m (row-major) into c; returns det m. */
+static double cofactor(const double *m, int dim, double *c)
+{
+    if (dim == 2) {
+        c[0] = m[3];
+        c[1] = -m[2];
+        c[2] = -m[1];
+        c[3] = m[0];
+        return m[0] * m[3] - m[1] * m[2];
+    }
+    for (int r = 0; r < 3; r++)
+        for (int k = 0; k < 3; k++) {
+            int r1 = (r + 1) % 3, r2 = (r + 2) % 3, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+            c[r * 3 + k] = m[r1 * 3 + k1] * m[r2 * 3 + k2] - m[r1 * 3 + k2] * m[r2 * 3 + k1];
+        }
+    return m[0] * c[0] + m[1] * c[1] + m[2] * c[2];
+}
+
+/* The pairs of particle i: writes their w and returns M_i (dim×dim) in m. */
+static void particle_pairs(const double *X, int i, int dim, const int *start, const int *nb,
+                           sph_kernel_kind kernel, double h, double vol, double *w, double *m)
+{
+    const double *xi = X + (size_t)i * dim;
+    for (int k = 0; k < dim * dim; k++)
+        m[k] = 0.0;
+    for (int p = start[i]; p < start[i + 1]; p++) {
+        const double *xj = X + (size_t)nb[p] * dim;
+        double d[3], r2 = 0.0;
+        for (int k = 0; k < dim; k++) {
+            d[k] = xi[k] - xj[k];
+            r2 += d[k] * d[k];
+        }
+        double f = vol * sph_kernel_dwdr_over_r(kernel, dim, sqrt(r2), h);
+        for (int k = 0; k < dim; k++)
+            w[(size_t)p * dim + k] = f * d[k];
+        for (int r = 0; r < dim; r++)
+            for (int c = 0; c < dim; c++)
+                m[r * dim + c] -= d[r] * w[(size_t)p * dim + c];
+    }
+}
+
+/* L = M^{-T}, or the identity where M is (nearly) singular. */
+static void correction(const double *m, int dim, double *L)
+{
+    double c[9];
+    double det = cofactor(m, dim, c);
+    int singular = !(fabs(det) >= 1e-6);
+    for (int k = 0; k < dim * dim; k++)
+        L[k] = singular ? (k % (dim + 1) == 0 ? 1.0 : 0.0) : c[k] / det;
+}
+
+void sph_gradients(const double *X, int n, int dim, const int *start, const int *nb,
+                   sph_kernel_kind kernel, double h, double vol, double **w, double **L)
+{
+    size_t npairs = n > 0 ? (size_t)start[n] : 0;
+    *w = malloc(npairs * dim * sizeof **w + 1);
+    *L = malloc((size_t)(n > 0 ? n : 0) * dim * dim * sizeof **L + 1);
+    if (!*w || !*L) {
+        fprintf(stderr, "sph: error: out of memory for kernel gradients (%zu pairs)\n", npairs);
+        exit(1);
+    }
+#pragma omp parallel for schedule(dynamic, 256)
+    for (int i = 0; i < n; i++) {
+        double m[9];
+        particle_pairs(X, i, dim, start, nb, kernel, h, vol, *w, m);
+        correction(m, dim, *L + (size_t)i * dim * dim);
+    }
+}

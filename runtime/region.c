@@ -1,0 +1,187 @@
+/* region.c — regions built from boxes, cylinders and spheres.
+ *
+ * A region is evaluated left to right: a primitive with subtract = 0 is added to (united
+ * with) what comes before it, one with subtract = 1 is removed from it.  Membership is
+ * inclusive (points on a primitive's surface belong to it; so a point on the surface of a
+ * subtracted primitive is removed).
+ *
+ * Primitives:
+ *  - box: axis-aligned [min(a,b), max(a,b)] per axis;
+ *  - cylinder: points within r of the segment a-b whose projection on the axis lies
+ *    between a and b (flat caps).  A cylinder of zero length (a == b) is treated as a
+ *    sphere of radius r around a (this is what a y-axis cylinder becomes in 2D);
+ *  - sphere: centre a, radius r.
+ *
+ * Distance: every primitive has an exact signed distance sd (negative inside); the region's
+ * value is folded in order with the usual CSG rules, union s = min(s, sd) and difference
+ * s = max(s, -sd), and the distance is max(s, 0).  This is exact for one primitive and for
+ * unions; for differences it is the standard CSG approximation, a lower bound of the
+ * true distance (it can underestimate it, e.g. inside a subtracted hole far from the rest),
+ * and it is 0 exactly on the region.
+ *
+ * 2D (plane strain in x-z, dim == 2): every primitive is replaced by its x-z version placed
+ * in the plane y = p[1] of the tested point: a box ignores its y extent (a box with
+ * a.y == b.y still covers the plane), a sphere becomes the disc of radius r around (a.x, a.z),
+ * a cylinder becomes the rectangle of half-width r around its x-z projected axis, or the disc
+ * of radius r when the axis is along y (projected axis of zero length).
+ * The *_dim functions below are exported for fill.c and select.c (declared in internal.h).
+ */
+#include <math.h>
+#include "internal.h"
+
+/* Signed distance to an axis-aligned box (exact). */
+static double box_sd(const sph_shape *s, const double p[3])
+{
+    double out2 = 0.0, in = -HUGE_VAL;
+    for (int k = 0; k < 3; k++) {
+        double lo = fmin(s->a[k], s->b[k]), hi = fmax(s->a[k], s->b[k]);
+        double e = fmax(lo - p[k], p[k] - hi);
+        if (e > 0.0)
+            out2 += e * e;
+        in = fmax(in, e);
+    }
+    return out2 > 0.0 ? sqrt(out2) : fmin(in, 0.0);
+}
+
+/* Signed distance to a sphere of radius rad around c (exact). */
+static double ball_sd(const double c[3], double rad, const double p[3])
+{
+    double d[3] = { p[0] - c[0], p[1] - c[1], p[2] - c[2] };
+    return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - rad;
+}
+
+/* Signed distance to a flat-capped cylinder (exact). */
+static double cylinder_sd(const sph_shape *s, const double p[3])
+{
+    double ba[3], ap[3], len2 = 0.0, t = 0.0, rad2 = 0.0;
+    for (int k = 0; k < 3; k++) {
+        ba[k] = s->b[k] - s->a[k];
+        ap[k] = p[k] - s->a[k];
+        len2 += ba[k] * ba[k];
+    }
+    if (len2 == 0.0)
+        return ball_sd(s->a, s->r, p);
+    double len = sqrt(len2);
+    for (int k = 0; k < 3; k++)
+        t += ap[k] * ba[k] / len;
+    for (int k = 0; k < 3; k++) {
+        double d = ap[k] - t * ba[k] / len;
+        rad2 += d * d;
+    }
+    double ea = fmax(-t, t - len), er = sqrt(rad2) - s->r;
+    double oa = fmax(ea, 0.0), orad = fmax(er, 0.0);
+    return sqrt(oa * oa + orad * orad) + fmin(fmax(ea, er), 0.0);
+}
+
+/* The x-z (2D) version of primitive s, placed in the plane y = y (see header comment). */
+static sph_shape prim_in_plane(const sph_shape *s, double y)
+{
+    sph_shape o = *s;
+    if (s->kind == SPH_BOX) {
+        o.a[1] = -HUGE_VAL;
+        o.b[1] = HUGE_VAL;
+    } else {
+        o.a[1] = o.b[1] = y;
+    }
+    return o;
+}
+
+/* Primitive s as seen in dimension dim at a point with y coordinate y. */
+static sph_shape prim_for_dim(const sph_shape *s, int dim, double y)
+{
+    return dim == 2 ? prim_in_plane(s, y) : *s;
+}
+
+/* Signed distance to one primitive. */
+static double prim_sd(const sph_shape *s, const double p[3])
+{
+    switch (s->kind) {
+    case SPH_BOX: return box_sd(s, p);
+    case SPH_CYLINDER: return cylinder_sd(s, p);
+    case SPH_SPHERE: return ball_sd(s->a, s->r, p);
+    }
+    return HUGE_VAL;
+}
+
+/* Bounding box of one (already dimension-adjusted) primitive. */
+static void prim_bbox(const sph_shape *s, double lo[3], double hi[3])
+{
+    double ba[3], len2 = 0.0;
+    for (int k = 0; k < 3; k++) {
+        ba[k] = s->b[k] - s->a[k];
+        len2 += ba[k] * ba[k];
+    }
+    for (int k = 0; k < 3; k++) {
+        if (s->kind == SPH_BOX) {
+            lo[k] = fmin(s->a[k], s->b[k]);
+            hi[k] = fmax(s->a[k], s->b[k]);
+        } else if (s->kind == SPH_SPHERE || len2 == 0.0) {
+            lo[k] = s->a[k] - s->r;
+            hi[k] = s->a[k] + s->r;
+        } else { /* the end discs' extent along k is r sqrt(1 - u_k^2) */
+            double ext = s->r * sqrt(fmax(0.0, 1.0 - ba[k] * ba[k] / len2));
+            lo[k] = fmin(s->a[k], s->b[k]) - ext;
+            hi[k] = fmax(s->a[k], s->b[k]) + ext;
+        }
+    }
+}
+
+/* Membership in dimension dim (2: x-z plane version of every primitive). */
+int sph_region_contains_dim(const sph_region *r, int dim, const double p[3])
+{
+    int in = 0;
+    for (int i = 0; i < r->n; i++) {
+        sph_shape s = prim_for_dim(&r->prims[i], dim, p[1]);
+        int inside = prim_sd(&s, p) <= 0.0;
+        in = r->prims[i].subtract ? (in && !inside) : (in || inside);
+    }
+    return in;
+}
+
+/* Distance in dimension dim (see header comment for differences). */
+double sph_region_distance_dim(const sph_region *r, int dim, const double p[3])
+{
+    if (sph_region_contains_dim(r, dim, p))
+        return 0.0;
+    double s = HUGE_VAL;
+    for (int i = 0; i < r->n; i++) {
+        sph_shape sh = prim_for_dim(&r->prims[i], dim, p[1]);
+        double d = prim_sd(&sh, p);
+        s = r->prims[i].subtract ? fmax(s, -d) : fmin(s, d);
+    }
+    return fmax(s, 0.0);
+}
+
+/* Bounding box of the union of the non-subtracted primitives; in 2D the y entries are
+ * meaningless (infinite for boxes).  Returns 0 when there is no such primitive. */
+int sph_region_bbox_dim(const sph_region *r, int dim, double lo[3], double hi[3])
+{
+    int any = 0;
+    for (int k = 0; k < 3; k++) {
+        lo[k] = HUGE_VAL;
+        hi[k] = -HUGE_VAL;
+    }
+    for (int i = 0; i < r->n; i++) {
+        if (r->prims[i].subtract)
+            continue;
+        double plo[3], phi[3];
+        sph_shape s = prim_for_dim(&r->prims[i], dim, 0.0);
+        prim_bbox(&s, plo, phi);
+        for (int k = 0; k < 3; k++) {
+            lo[k] = fmin(lo[k], plo[k]);
+            hi[k] = fmax(hi[k], phi[k]);
+        }
+        any = 1;
+    }
+    return any;
+}
+
+int sph_region_contains(const sph_region *r, const double p[3])
+{
+    return sph_region_contains_dim(r, 3, p);
+}
+
+double sph_region_distance(const sph_region *r, const double p[3])
+{
+    return sph_region_distance_dim(r, 3, p);
+}
