@@ -36,6 +36,27 @@ static void allocate(sph_body *b)
     b->fix = zalloc(n, 1);
 }
 
+/* Eq. 60 per pair without gathering X_j in the hot loop: w_ij is parallel to X_i - X_j, so
+ * G_ij = h (v_ij . dX) / (r^2 + 0.001 h^2) = nb_g (v_ij . w_ij) with
+ * nb_g = h r^2 / ((w . dX) (r^2 + 0.001 h^2)); 0 where w vanishes (r = 2h). */
+static void viscosity_factors(sph_body *b)
+{
+    const int D = b->dim;
+    b->nb_g = zalloc((size_t)b->npairs, sizeof(double));
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < b->n; i++)
+        for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
+            const int j = b->nb[p];
+            double r2 = 0, wdx = 0;
+            for (int k = 0; k < D; k++) {
+                const double dX = b->X[(size_t)i * D + k] - b->X[(size_t)j * D + k];
+                r2 += dX * dX;
+                wdx += b->nb_w[(size_t)p * D + k] * dX;
+            }
+            b->nb_g[p] = wdx != 0 ? b->h * r2 / (wdx * (r2 + 0.001 * b->h * b->h)) : 0.0;
+        }
+}
+
 static void selections(sph_body *b, const sph_body_desc *d)
 {
     b->bc_list = zalloc((size_t)d->nbcs, sizeof(int *));
@@ -77,6 +98,7 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
     b->npairs = b->nb_start[b->n];
     sph_gradients(b->X, b->n, b->dim, b->nb_start, b->nb, m->kernel, b->h, b->vol, &b->nb_w,
                   &b->L);
+    viscosity_factors(b);
     allocate(b);
     selections(b, d);
     return 0;
@@ -91,7 +113,7 @@ void sph_body_free(sph_body *b)
     free(b->bc_list), free(b->bc_count), free(b->ms_list), free(b->ms_count);
     free(b->X), free(b->u), free(b->v), free(b->a), free(b->work), free(b->F), free(b->L);
     free(b->Q), free(b->Cv), free(b->psi), free(b->sigma), free(b->fix);
-    free(b->nb_start), free(b->nb), free(b->nb_w);
+    free(b->nb_start), free(b->nb), free(b->nb_w), free(b->nb_g);
 }
 
 /* ------------------------------------------------------------------ measured quantities */

@@ -182,6 +182,7 @@ struct sph_body {
 
     int *nb_start, *nb;   /* CSR neighbour lists */
     double *nb_w;         /* V_j grad W_ij per pair */
+    double *nb_g;         /* per pair: G_ij = nb_g * (v_i - v_j) . w_ij  (eq. 60) */
     long npairs;
 
     int **bc_list;      /* per BC with `near`: particle indices */

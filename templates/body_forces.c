@@ -80,8 +80,7 @@ static void @B@_momentum_pass(sph_body *b)
     double *restrict acc = b->a;
     const double inv_rho = 1.0 / b->rho0;
 //@if VISCOSITY
-    const double *restrict X = b->X, *restrict v = b->v, *restrict Cv = b->Cv;
-    const double h = b->h, eps_h2 = 0.001 * b->h * b->h; /* eq. 60 */
+    const double *restrict v = b->v, *restrict Cv = b->Cv, *restrict g = b->nb_g;
 //@endif
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; i++) {
@@ -98,19 +97,17 @@ static void @B@_momentum_pass(sph_body *b)
                 for (int c = 0; c < D; c++)
                     f[r] += (Qi[r * D + c] + Qj[r * D + c]) * wp[c];
 //@if VISCOSITY
-            /* G_ij (eq. 60) and the viscous pressure pi_ij (eq. 58, times rho0), which
-             * resists relative motion along the reference separation. */
-            double vx = 0, r2 = 0;
-            for (int k = 0; k < D; k++) {
-                const double dX = X[i * D + k] - X[j * D + k];
-                vx += (v[i * D + k] - v[j * D + k]) * dX;
-                r2 += dX * dX;
-            }
-            const double G = h * vx / (r2 + eps_h2);
+            /* G_ij (eq. 60; g holds h / (r^2 + 0.001 h^2) in the units of w) and the
+             * viscous pressure pi_ij (eq. 58, times rho0), which resists relative motion
+             * along the reference separation. */
+            double vw = 0;
+            for (int k = 0; k < D; k++)
+                vw += (v[i * D + k] - v[j * D + k]) * wp[k];
+            const double G = g[p] * vw;
             double pi = -@BETA1@ * @C0@ * G;
 //@if BETA2
-            if (G < 0)
-                pi += @BETA2@ * G * G;
+            const double Gc = G < 0 ? G : 0.0; /* the quadratic term acts on approach only */
+            pi += @BETA2@ * Gc * Gc;
 //@endif
             const double *Ci = Cv + (size_t)i * D * D, *Cj = Cv + (size_t)j * D * D;
             for (int r = 0; r < D; r++)
