@@ -19,6 +19,60 @@ static void *zalloc(size_t n, size_t size)
     return p;
 }
 
+/* ------------------------------------------------------------------ particle order */
+
+/* Particles sorted by slabs across the body's longest extent, the shortest axis fastest:
+ * for beams, plates and columns every neighbour of a particle is then within a few slabs in
+ * memory, so the gathers of the force passes stay in cache. */
+static int order_axes[3];
+static const double *order_X;
+static int order_dim;
+
+static int by_slab(const void *pa, const void *pb)
+{
+    const double *a = order_X + (size_t)(*(const int *)pa) * order_dim;
+    const double *b = order_X + (size_t)(*(const int *)pb) * order_dim;
+    for (int q = 0; q < order_dim; q++) {
+        int k = order_axes[q];
+        if (a[k] != b[k])
+            return a[k] < b[k] ? -1 : 1;
+    }
+    return 0;
+}
+
+static void order_particles(sph_body *b)
+{
+    const int D = b->dim;
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < b->n; i++)
+        for (int k = 0; k < D; k++) {
+            lo[k] = fmin(lo[k], b->X[(size_t)i * D + k]);
+            hi[k] = fmax(hi[k], b->X[(size_t)i * D + k]);
+        }
+    for (int k = 0; k < D; k++)
+        order_axes[k] = k;
+    for (int a = 0; a < D; a++) /* longest extent first (slowest), shortest last */
+        for (int c = a + 1; c < D; c++)
+            if (hi[order_axes[c]] - lo[order_axes[c]] > hi[order_axes[a]] - lo[order_axes[a]]) {
+                int t = order_axes[a];
+                order_axes[a] = order_axes[c];
+                order_axes[c] = t;
+            }
+    int *perm = zalloc((size_t)b->n, sizeof(int));
+    for (int i = 0; i < b->n; i++)
+        perm[i] = i;
+    order_X = b->X;
+    order_dim = D;
+    qsort(perm, (size_t)b->n, sizeof(int), by_slab);
+    double *X = zalloc((size_t)b->n * D, sizeof(double));
+    for (int i = 0; i < b->n; i++)
+        for (int k = 0; k < D; k++)
+            X[(size_t)i * D + k] = b->X[(size_t)perm[i] * D + k];
+    free(b->X);
+    free(perm);
+    b->X = X;
+}
+
 static void allocate(sph_body *b)
 {
     size_t n = (size_t)b->n, D = (size_t)b->dim;
@@ -36,24 +90,105 @@ static void allocate(sph_body *b)
     b->fix = zalloc(n, 1);
 }
 
-/* Eq. 60 per pair without gathering X_j in the hot loop: w_ij is parallel to X_i - X_j, so
- * G_ij = h (v_ij . dX) / (r^2 + 0.001 h^2) = nb_g (v_ij . w_ij) with
- * nb_g = h r^2 / ((w . dX) (r^2 + 0.001 h^2)); 0 where w vanishes (r = 2h). */
-static void viscosity_factors(sph_body *b)
+/* Eq. 60 for one pair without gathering X_j in the hot loop: w_ij is parallel to X_i - X_j,
+ * so G_ij = h (v_ij . dX) / (r^2 + 0.001 h^2) = g (v_ij . w_ij) with
+ * g = h r^2 / ((w . dX) (r^2 + 0.001 h^2)); 0 where w vanishes (r = 2h). */
+static double viscosity_factor(const sph_body *b, const double *dX, const double *w)
+{
+    double r2 = 0, wdx = 0;
+    for (int k = 0; k < b->dim; k++)
+        r2 += dX[k] * dX[k], wdx += w[k] * dX[k];
+    return wdx != 0 ? b->h * r2 / (wdx * (r2 + 0.001 * b->h * b->h)) : 0.0;
+}
+
+/* Pairs at exactly the support radius have a zero kernel gradient and contribute nothing to
+ * any pass; removing them saves a sixth of the pair work on a lattice (24 -> 20 in 2D). */
+static void drop_silent_pairs(sph_body *b, double *w)
 {
     const int D = b->dim;
-    b->nb_g = zalloc((size_t)b->npairs, sizeof(double));
-#pragma omp parallel for schedule(static)
+    long q = 0;
+    int begin = 0;
+    for (int i = 0; i < b->n; i++) {
+        int end = b->nb_start[i + 1];
+        b->nb_start[i] = (int)q;
+        for (int p = begin; p < end; p++) {
+            int silent = 1;
+            for (int c = 0; c < D; c++)
+                silent &= w[(size_t)p * D + c] == 0.0;
+            if (silent)
+                continue;
+            b->nb[q] = b->nb[p];
+            for (int c = 0; c < D; c++)
+                w[(size_t)q * D + c] = w[(size_t)p * D + c];
+            q++;
+        }
+        begin = end;
+    }
+    b->nb_start[b->n] = (int)q;
+    b->npairs = q;
+}
+
+/* The integer lattice offset of a pair, packed into a key; -1 when X_i - X_j is not a
+ * whole number of spacings (to 1e-6 dx) or too long. */
+static long offset_key(const sph_body *b, const double *dX)
+{
+    long key = 0;
+    for (int k = 0; k < b->dim; k++) {
+        double q = dX[k] / b->dx, r = nearbyint(q);
+        if (fabs(q - r) > 1e-6 || fabs(r) > 60)
+            return -1;
+        key = key * 128 + (long)r + 64;
+    }
+    return key;
+}
+
+/* Per-pair tables (see sphrt.h): one entry per distinct lattice offset, or one per pair
+ * when the particles are not on one lattice. */
+static void offset_tables(sph_body *b, double *w)
+{
+    const int D = b->dim;
+    const long np = b->npairs;
+    b->nb_k = zalloc((size_t)np, sizeof(int));
+    int *slot = malloc(sizeof(int) * ((size_t)1 << 21));
+    long nslots = 1L << 21;
+    for (long s = 0; s < nslots; s++)
+        slot[s] = -1;
+    int ntab = 0, lattice = 1;
+    for (int i = 0; i < b->n && lattice; i++)
+        for (int p = b->nb_start[i]; p < b->nb_start[i + 1] && lattice; p++) {
+            double dX[3];
+            for (int k = 0; k < D; k++)
+                dX[k] = b->X[(size_t)i * D + k] - b->X[(size_t)b->nb[p] * D + k];
+            long key = offset_key(b, dX);
+            if (key < 0 || key >= nslots) {
+                lattice = 0;
+                break;
+            }
+            if (slot[key] < 0)
+                slot[key] = ntab++;
+            b->nb_k[p] = slot[key];
+        }
+    free(slot);
+    b->wsum = zalloc((size_t)b->n * D, sizeof(double));
+    for (int i = 0; i < b->n; i++)
+        for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++)
+            for (int c = 0; c < D; c++)
+                b->wsum[(size_t)i * D + c] += w[(size_t)p * D + c];
+    if (!lattice)
+        ntab = (int)np;
+    b->ntab = ntab;
+    b->wtab = zalloc((size_t)ntab * D, sizeof(double));
+    b->gtab = zalloc((size_t)ntab, sizeof(double));
     for (int i = 0; i < b->n; i++)
         for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
-            const int j = b->nb[p];
-            double r2 = 0, wdx = 0;
-            for (int k = 0; k < D; k++) {
-                const double dX = b->X[(size_t)i * D + k] - b->X[(size_t)j * D + k];
-                r2 += dX * dX;
-                wdx += b->nb_w[(size_t)p * D + k] * dX;
+            int k = lattice ? b->nb_k[p] : p;
+            b->nb_k[p] = k;
+            double dX[3];
+            for (int c = 0; c < D; c++) {
+                dX[c] = b->X[(size_t)i * D + c] - b->X[(size_t)b->nb[p] * D + c];
+                b->wtab[(size_t)k * D + c] = w[(size_t)p * D + c];
             }
-            b->nb_g[p] = wdx != 0 ? b->h * r2 / (wdx * (r2 + 0.001 * b->h * b->h)) : 0.0;
+            b->gtab[k] = viscosity_factor(b, dX, w + (size_t)p * D);
         }
 }
 
@@ -94,11 +229,14 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
                         "particle spacing %g)\n", d->name, b->dx);
         return -1;
     }
+    order_particles(b);
     sph_neighbours(b->X, b->n, b->dim, 2.0 * b->h, d->nbsrange, b->dx, &b->nb_start, &b->nb);
     b->npairs = b->nb_start[b->n];
-    sph_gradients(b->X, b->n, b->dim, b->nb_start, b->nb, m->kernel, b->h, b->vol, &b->nb_w,
-                  &b->L);
-    viscosity_factors(b);
+    double *w;
+    sph_gradients(b->X, b->n, b->dim, b->nb_start, b->nb, m->kernel, b->h, b->vol, &w, &b->L);
+    drop_silent_pairs(b, w);
+    offset_tables(b, w);
+    free(w);
     allocate(b);
     selections(b, d);
     return 0;
@@ -113,7 +251,7 @@ void sph_body_free(sph_body *b)
     free(b->bc_list), free(b->bc_count), free(b->ms_list), free(b->ms_count);
     free(b->X), free(b->u), free(b->v), free(b->a), free(b->work), free(b->F), free(b->L);
     free(b->Q), free(b->Cv), free(b->psi), free(b->sigma), free(b->fix);
-    free(b->nb_start), free(b->nb), free(b->nb_w), free(b->nb_g);
+    free(b->nb_start), free(b->nb), free(b->nb_k), free(b->wtab), free(b->gtab), free(b->wsum);
 }
 
 /* ------------------------------------------------------------------ measured quantities */

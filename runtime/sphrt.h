@@ -12,9 +12,13 @@
  *  - Tensors of a body are stored per particle, row-major, dim×dim (`T[i*dim*dim + r*dim + c]`),
  *    except F, which is stored 3×3 (`F[i*9 + r*3 + c]`) so that 2D plane-strain values
  *    (F_yy = 1) and 3D values share one layout for output.
- *  - Pairs are stored per particle (CSR, both directions): nb_start[i] .. nb_start[i+1]-1.
- *    nb_w[p*dim + k] = V_j ∂W(X_i - X_j)/∂X_i^k  (uncorrected gradient times the neighbour
- *    volume).  The corrected gradient is L_i · that (body->L).
+ *  - Pairs are stored per particle (CSR, both directions): nb_start[i] .. nb_start[i+1]-1,
+ *    neighbour nb[p].  Everything that depends only on the reference offset X_i - X_j is
+ *    looked up through nb_k[p] in small tables: wtab[k*dim + c] = V_j dW/dX_i^c (the
+ *    uncorrected kernel gradient times the neighbour volume; the corrected gradient is
+ *    L_i · that) and gtab[k] (eq. 60, see setup.c).  On a particle lattice there are a few
+ *    dozen distinct offsets, so a pair costs 8 bytes; otherwise the tables have one entry
+ *    per pair.
  */
 #ifndef SPHRT_H
 #define SPHRT_H
@@ -181,8 +185,11 @@ struct sph_body {
     uint8_t *fix;       /* n bit masks: bit k = component k has a prescribed velocity */
 
     int *nb_start, *nb;   /* CSR neighbour lists */
-    double *nb_w;         /* V_j grad W_ij per pair */
-    double *nb_g;         /* per pair: G_ij = nb_g * (v_i - v_j) . w_ij  (eq. 60) */
+    int *nb_k;            /* per pair: entry of the offset tables */
+    double *wtab;         /* ntab*dim: V_j grad W for each distinct offset */
+    double *gtab;         /* ntab: G_ij = gtab * (v_i - v_j) . w_ij  (eq. 60) */
+    int ntab;
+    double *wsum;         /* n*dim: sum_j V_j grad W_ij (zero inside, not at the surface) */
     long npairs;
 
     int **bc_list;      /* per BC with `near`: particle indices */

@@ -6,24 +6,28 @@ static void @B@_stress_pass(sph_body *b)
 {
     enum { D = @DIM@ };
     const int n = b->n;
-    const int *restrict start = b->nb_start, *restrict nb = b->nb;
-    const double *restrict w = b->nb_w, *restrict u = b->u, *restrict Lc = b->L;
+    const int *restrict start = b->nb_start, *restrict nb = b->nb, *restrict nbk = b->nb_k;
+    const double *restrict wtab = b->wtab, *restrict wsum = b->wsum;
+    const double *restrict u = b->u, *restrict Lc = b->L;
     double *restrict Fs = b->F, *restrict Q = b->Q, *restrict psi = b->psi;
 //@if VISCOSITY
     double *restrict Cv = b->Cv;
 //@endif
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; i++) {
-        /* A = sum_j V_j (u_j - u_i) (x) grad W_ij ; F = I + A L^T  (eq. 53, corrected) */
+        /* A = sum_j V_j (u_j - u_i) (x) grad W_ij = sum_j u_j (x) w_ij - u_i (x) wsum_i;
+         * F = I + A L^T  (eq. 53, corrected) */
         double A[D * D] = {0};
         for (int p = start[i]; p < start[i + 1]; p++) {
             const int j = nb[p];
-            for (int r = 0; r < D; r++) {
-                const double du = u[j * D + r] - u[i * D + r];
+            const double *w = wtab + (size_t)nbk[p] * D;
+            for (int r = 0; r < D; r++)
                 for (int c = 0; c < D; c++)
-                    A[r * D + c] += du * w[(size_t)p * D + c];
-            }
+                    A[r * D + c] += u[j * D + r] * w[c];
         }
+        for (int r = 0; r < D; r++)
+            for (int c = 0; c < D; c++)
+                A[r * D + c] -= u[i * D + r] * wsum[i * D + c];
         const double *L = Lc + (size_t)i * D * D;
         double F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
         for (int r = 0; r < D; r++)
@@ -69,61 +73,75 @@ static void @B@_stress_pass(sph_body *b)
 
 /* Pass 2, per particle: momentum balance (eq. 55) in the symmetric corrected form
  *   dv_i/dt = 1/rho0 sum_j V_j (P_i L_i + P_j L_j) grad W_ij
- * which conserves linear momentum exactly, plus artificial viscosity (eq. 57-60) and
- * body forces. */
+ *           = 1/rho0 (Q_i wsum_i + sum_j Q_j w_ij)
+ * which conserves linear momentum (every pair force is equal and opposite), plus
+ * artificial viscosity (eq. 57-60), symmetrised the same way, and body forces. */
 static void @B@_momentum_pass(sph_body *b)
 {
     enum { D = @DIM@ };
     const int n = b->n;
-    const int *restrict start = b->nb_start, *restrict nb = b->nb;
-    const double *restrict w = b->nb_w, *restrict Q = b->Q;
+    const int *restrict start = b->nb_start, *restrict nb = b->nb, *restrict nbk = b->nb_k;
+    const double *restrict wtab = b->wtab, *restrict wsum = b->wsum, *restrict Q = b->Q;
     double *restrict acc = b->a;
     const double inv_rho = 1.0 / b->rho0;
 //@if VISCOSITY
-    const double *restrict v = b->v, *restrict Cv = b->Cv, *restrict g = b->nb_g;
+    const double *restrict v = b->v, *restrict Cv = b->Cv, *restrict gtab = b->gtab;
 //@endif
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; i++) {
         double f[D] = {0};
 //@if VISCOSITY
-        double fv[D] = {0};
+        double fv[D] = {0}, pw[D] = {0};
 //@endif
-        const double *Qi = Q + (size_t)i * D * D;
         for (int p = start[i]; p < start[i + 1]; p++) {
-            const int j = nb[p];
-            const double *wp = w + (size_t)p * D;
+            const int j = nb[p], k = nbk[p];
+            const double *w = wtab + (size_t)k * D;
             const double *Qj = Q + (size_t)j * D * D;
             for (int r = 0; r < D; r++)
                 for (int c = 0; c < D; c++)
-                    f[r] += (Qi[r * D + c] + Qj[r * D + c]) * wp[c];
+                    f[r] += Qj[r * D + c] * w[c];
 //@if VISCOSITY
-            /* G_ij (eq. 60; g holds h / (r^2 + 0.001 h^2) in the units of w) and the
+            /* G_ij (eq. 60; gtab holds h / (r^2 + 0.001 h^2) in the units of w) and the
              * viscous pressure pi_ij (eq. 58, times rho0), which resists relative motion
              * along the reference separation. */
             double vw = 0;
-            for (int k = 0; k < D; k++)
-                vw += (v[i * D + k] - v[j * D + k]) * wp[k];
-            const double G = g[p] * vw;
+            for (int c = 0; c < D; c++)
+                vw += (v[i * D + c] - v[j * D + c]) * w[c];
+            const double G = gtab[k] * vw;
             double pi = -@BETA1@ * @C0@ * G;
 //@if BETA2
             const double Gc = G < 0 ? G : 0.0; /* the quadratic term acts on approach only */
             pi += @BETA2@ * Gc * Gc;
 //@endif
-            const double *Ci = Cv + (size_t)i * D * D, *Cj = Cv + (size_t)j * D * D;
-            for (int r = 0; r < D; r++)
-                for (int c = 0; c < D; c++)
-                    fv[r] -= 0.5 * pi * (Ci[r * D + c] + Cj[r * D + c]) * wp[c];
+            const double *Cj = Cv + (size_t)j * D * D;
+            for (int c = 0; c < D; c++) {
+                const double piw = pi * w[c];
+                pw[c] += piw;
+                for (int r = 0; r < D; r++)
+                    fv[r] += Cj[r * D + c] * piw;
+            }
 //@endif
         }
-        for (int r = 0; r < D; r++)
-            acc[i * D + r] = f[r] * inv_rho
+        const double *Qi = Q + (size_t)i * D * D;
 //@if VISCOSITY
-                             + fv[r]
+        const double *Ci = Cv + (size_t)i * D * D;
+//@endif
+        for (int r = 0; r < D; r++) {
+            double fr = f[r];
+            for (int c = 0; c < D; c++)
+                fr += Qi[r * D + c] * wsum[i * D + c];
+            double ar = fr * inv_rho;
+//@if VISCOSITY
+            double vr = fv[r];
+            for (int c = 0; c < D; c++)
+                vr += Ci[r * D + c] * pw[c];
+            ar -= 0.5 * vr;
 //@endif
 //@if GRAVITY
-                             + @B@_gravity[r]
+            ar += @B@_gravity[r];
 //@endif
-                ;
+            acc[i * D + r] = ar;
+        }
     }
 }
 
