@@ -174,11 +174,19 @@ static void force_scale(Emitter *E, const BcModel *bc, int k)
         fprintf(E->out, "    const double scale%d = 1.0;\n", k);
 }
 
-static int window_open(Emitter *E, const BcModel *bc, int k)
+/* `from t0 to t1`: the BC acts in a step when the middle of the step lies in [t0, t1].  A
+ * step that starts at t1 (or ends at t0) is outside the window whatever the round-off in
+ * t, so steps landing on t0 and t1 give a force exactly the impulse over t1 - t0 and hold a
+ * velocity exactly from t0 to t1.  The symplectic force pass is called at the middle of the
+ * step already (at_middle); the other passes at its start (the initial conditions with
+ * dt = 0, i.e. at t = 0). */
+static int window_open(Emitter *E, const BcModel *bc, int k, int at_middle)
 {
     if (!bc->has_window)
         return 0;
-    fprintf(E->out, "    const int on%d = t >= %.17g && t <= %.17g;\n", k, bc->t0, bc->t1);
+    const char *tm = at_middle ? "t" : "(t + 0.5 * dt)";
+    fprintf(E->out, "    const int on%d = %s >= %.17g && %s <= %.17g;\n", k, tm, bc->t0, tm,
+            bc->t1);
     return 1;
 }
 
@@ -196,7 +204,7 @@ static void bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
         const BcModel *bc = &b->bcs[k];
         if (bc->kind != kind || !bc->comps)
             continue;
-        windows |= window_open(E, bc, k);
+        windows |= window_open(E, bc, k, !vel && E->m->integrator == INTEGRATOR_SYMPLECTIC);
         if (!vel)
             force_scale(E, bc, k);
         any_whole |= !bc->has_near;
@@ -204,7 +212,9 @@ static void bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
     (void)windows;
     if (vel || any_whole) {
         fputs("#pragma omp parallel for schedule(static)\n    for (int i = 0; i < b->n; i++) {\n", out);
-        fputs("        sph_pt p;\n        sph_point(b, i, D, t, dt, &p);\n        double val;\n", out);
+        /* Without a whole-body BC, the velocity pass's loop only clears the fix bits. */
+        if (any_whole)
+            fputs("        sph_pt p;\n        sph_point(b, i, D, t, dt, &p);\n        double val;\n", out);
         if (vel)
             fputs("        uint8_t fix = 0;\n", out);
         for (int k = 0; k < b->nbcs; k++) {

@@ -45,29 +45,63 @@ static int scan_body(const sph_body *b, finding *f)
     return 0;
 }
 
+/* The fastest particle of a body and its speed. */
+static int fastest(const sph_body *b, double *speed)
+{
+    const int D = b->dim;
+    int best = 0;
+    double v2max = -1;
+    for (int i = 0; i < b->n; i++) {
+        double v2 = 0;
+        for (int k = 0; k < D; k++)
+            v2 += b->v[(size_t)i * D + k] * b->v[(size_t)i * D + k];
+        if (v2 > v2max)
+            v2max = v2, best = i;
+    }
+    *speed = sqrt(v2max);
+    return best;
+}
+
+/* "step S, t = T s, body 'B', particle P (reference position ...)" at the start of msg. */
+static int where(char *msg, size_t len, const sph_sim *s, const sph_body *b, int particle)
+{
+    const double *X = b->X + (size_t)particle * b->dim;
+    return snprintf(msg, len, "step %ld, t = %.6g s, body '%s', particle %d (reference position "
+                              "x = %g, %s = %g)",
+                    s->step, s->t, b->desc->name, particle, X[0], b->dim == 2 ? "z" : "y", X[1]);
+}
+
 int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len)
 {
-    double e_total = 0;
+    double e_total = 0, e_most = -1;
+    int most = 0;
     for (int ib = 0; ib < s->nbodies; ib++) {
         const sph_body *b = &s->bodies[ib];
         finding f;
         if (scan_body(b, &f)) {
-            const double *X = b->X + (size_t)f.particle * b->dim;
-            snprintf(msg, len,
-                     "step %ld, t = %.6g s, body '%s', particle %d (reference position x = %g, "
-                     "%s = %g): %s (value %g)",
-                     s->step, s->t, b->desc->name, f.particle, X[0], b->dim == 2 ? "z" : "y",
-                     X[1], f.what, f.value);
+            int n = where(msg, len, s, b, f.particle);
+            if (n >= 0 && (size_t)n < len)
+                snprintf(msg + n, len - (size_t)n, ": %s (value %g)", f.what, f.value);
             return 1;
         }
         double es, ek;
         sph_body_energies(b, &es, &ek);
         e_total += es + ek;
+        if (!(es + ek <= e_most)) /* also takes a non-finite energy */
+            e_most = es + ek, most = ib;
     }
     if (!isfinite(e_total) || (mon->e_ref > 0 && e_total > 1e6 * mon->e_ref)) {
-        snprintf(msg, len, "step %ld, t = %.6g s: total energy %g grew more than a millionfold "
-                           "since the last check (%g): energy runaway",
-                 s->step, s->t, e_total, mon->e_ref);
+        /* Named like the other findings: the body with the most energy and its fastest
+         * particle. */
+        const sph_body *b = &s->bodies[most];
+        double speed;
+        int n = where(msg, len, s, b, fastest(b, &speed));
+        if (n >= 0 && (size_t)n < len)
+            snprintf(msg + n, len - (size_t)n,
+                     ": total energy %g grew more than a millionfold since the last check (%g): "
+                     "energy runaway (value: speed %g of the fastest particle of the body with "
+                     "the most energy)",
+                     e_total, mon->e_ref, speed);
         return 1;
     }
     if (e_total > mon->e_ref)

@@ -136,6 +136,18 @@ static int write_frame(run_state *r)
     return bad | record(r);
 }
 
+/* fmax/fmin that keep a NaN: the summary of a run that blew up says null (not finite)
+ * rather than the extremes of the particles that happen to be finite still. */
+static double max_nan(double a, double b)
+{
+    return isnan(a) || isnan(b) ? NAN : fmax(a, b);
+}
+
+static double min_nan(double a, double b)
+{
+    return isnan(a) || isnan(b) ? NAN : fmin(a, b);
+}
+
 static void body_summary(sph_json *j, const sph_body *b)
 {
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
@@ -149,8 +161,8 @@ static void body_summary(sph_json *j, const sph_body *b)
             u2 += u * u, v2 += v * v;
         }
         for (int k = 0; k < 3; k++)
-            lo[k] = fmin(lo[k], x[k]), hi[k] = fmax(hi[k], x[k]);
-        umax = fmax(umax, u2), vmax = fmax(vmax, v2);
+            lo[k] = min_nan(lo[k], x[k]), hi[k] = max_nan(hi[k], x[k]);
+        umax = max_nan(umax, u2), vmax = max_nan(vmax, v2);
     }
     sph_json_key_object(j, NULL);
     sph_json_str(j, "name", b->desc->name);
