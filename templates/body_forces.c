@@ -110,7 +110,7 @@ static void @B@_momentum_pass(sph_body *b)
             const double G = gtab[k] * vw;
             double pi = -@BETA1@ * @C0@ * G;
 //@if BETA2
-            const double Gc = G < 0 ? G : 0.0; /* the quadratic term acts on approach only */
+            const double Gc = 0.5 * (G - fabs(G)); /* min(G, 0): beta2 acts on approach only */
             pi += @BETA2@ * Gc * Gc;
 //@endif
             const double *Cj = Cv + (size_t)j * D * D;
