@@ -231,6 +231,31 @@ static int check_now(run_state *r, sph_monitor *mon)
     return 1;
 }
 
+/* The particle whose acceleration (eq. 66) or speed (eq. 65) limits the time step. */
+static void dt_collapse_report(run_state *r, double dt, double floor_dt)
+{
+    const sph_sim *s = &r->sim;
+    int body = 0, particle = 0;
+    double worst = -1;
+    for (int ib = 0; ib < s->nbodies; ib++) {
+        const sph_body *b = &s->bodies[ib];
+        for (int i = 0; i < b->n; i++) {
+            double a2 = 0;
+            for (int k = 0; k < b->dim; k++)
+                a2 += b->a[(size_t)i * b->dim + k] * b->a[(size_t)i * b->dim + k];
+            if (b->fix[i] == 0 && a2 > worst)
+                worst = a2, body = ib, particle = i;
+        }
+    }
+    const sph_body *b = &s->bodies[body];
+    const double *X = b->X + (size_t)particle * b->dim;
+    snprintf(r->unstable, sizeof r->unstable,
+             "step %ld, t = %.6g s, body '%s', particle %d (reference position x = %g, %s = %g): "
+             "time step collapsed to %g s, below dtmin = %g s (acceleration %g m/s^2)",
+             s->step, s->t, b->desc->name, particle, X[0], b->dim == 2 ? "z" : "y", X[1], dt,
+             floor_dt, sqrt(fmax(worst, 0)));
+}
+
 /* Runs until t_end or instability; returns 0, or 1 when the monitor stopped it. */
 static int time_loop(run_state *r)
 {
@@ -243,9 +268,7 @@ static int time_loop(run_state *r)
     while (s->t < r->t_end - eps) {
         double dt = sph_sim_stable_dt(s);
         if (!(dt >= floor_dt)) {
-            snprintf(r->unstable, sizeof r->unstable,
-                     "step %ld, t = %.6g s: time step collapsed to %g s (below dtmin = %g s)",
-                     s->step, s->t, dt, floor_dt);
+            dt_collapse_report(r, dt, floor_dt);
             break;
         }
         dt = fmin(dt, fmin(next_out, r->t_end) - s->t); /* land on output times */
