@@ -97,6 +97,7 @@ static void fill_template(Emitter *E, const char *file, const BodyModel *b, cons
     tpl_feature(&env, "VISCOSITY", p->viscosity);
     tpl_feature(&env, "BETA2", p->beta2);
     tpl_feature(&env, "GRAVITY", p->gravity);
+    tpl_feature(&env, "NO_GRAVITY", !p->gravity);
     tpl_feature(&env, "VELOCITY_BCS", p->velocity_bcs);
     tpl_feature(&env, "VERLET", !p->symplectic);
     tpl_feature(&env, "SYMPLECTIC", p->symplectic);

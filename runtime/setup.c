@@ -84,6 +84,7 @@ static void allocate(sph_body *b)
     for (size_t i = 0; i < n; i++)
         b->F[9 * i] = b->F[9 * i + 4] = b->F[9 * i + 8] = 1.0;
     b->Q = zalloc(n * D * D, sizeof(double));
+    b->A = zalloc(n * D * D, sizeof(double));
     b->Cv = zalloc(n * D * D, sizeof(double));
     b->psi = zalloc(n, sizeof(double));
     b->sigma = zalloc(n * 6, sizeof(double));
@@ -169,11 +170,6 @@ static void offset_tables(sph_body *b, double *w)
             b->nb_k[p] = slot[key];
         }
     free(slot);
-    b->wsum = zalloc((size_t)b->n * D, sizeof(double));
-    for (int i = 0; i < b->n; i++)
-        for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++)
-            for (int c = 0; c < D; c++)
-                b->wsum[(size_t)i * D + c] += w[(size_t)p * D + c];
     if (!lattice)
         ntab = (int)np;
     b->ntab = ntab;
@@ -190,6 +186,43 @@ static void offset_tables(sph_body *b, double *w)
             }
             b->gtab[k] = viscosity_factor(b, dX, w + (size_t)p * D);
         }
+}
+
+/* Half lists (j > i) and the stripes of consecutive particles they are processed in
+ * (see sphrt.h). */
+static void half_lists(sph_body *b)
+{
+    b->hb_start = zalloc((size_t)b->n + 1, sizeof(int));
+    int reach = 1;
+    long q = 0;
+    for (int i = 0; i < b->n; i++)
+        for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++)
+            q += b->nb[p] > i;
+    b->hb = zalloc((size_t)q, sizeof(int));
+    b->hb_k = zalloc((size_t)q, sizeof(int));
+    q = 0;
+    for (int i = 0; i < b->n; i++) {
+        b->hb_start[i] = (int)q;
+        for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++)
+            if (b->nb[p] > i) {
+                b->hb[q] = b->nb[p];
+                b->hb_k[q++] = b->nb_k[p];
+                if (b->nb[p] - i > reach)
+                    reach = b->nb[p] - i;
+            }
+    }
+    b->hb_start[b->n] = (int)q;
+    /* The passes use only the half lists; the full ones are not kept. */
+    free(b->nb_start), free(b->nb), free(b->nb_k);
+    b->nb_start = b->nb = b->nb_k = NULL;
+    /* Stripes of at least `reach` particles; fewer than 4 stripes: one, run serially. */
+    int ns = b->n / reach;
+    if (ns < 4)
+        ns = 1;
+    b->nstripes = ns;
+    b->stripe = zalloc((size_t)ns + 1, sizeof(int));
+    for (int s = 0; s <= ns; s++)
+        b->stripe[s] = (int)((long)b->n * s / ns);
 }
 
 static void selections(sph_body *b, const sph_body_desc *d)
@@ -237,6 +270,7 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
     drop_silent_pairs(b, w);
     offset_tables(b, w);
     free(w);
+    half_lists(b);
     allocate(b);
     selections(b, d);
     return 0;
@@ -251,7 +285,8 @@ void sph_body_free(sph_body *b)
     free(b->bc_list), free(b->bc_count), free(b->ms_list), free(b->ms_count);
     free(b->X), free(b->u), free(b->v), free(b->a), free(b->work), free(b->F), free(b->L);
     free(b->Q), free(b->Cv), free(b->psi), free(b->sigma), free(b->fix);
-    free(b->nb_start), free(b->nb), free(b->nb_k), free(b->wtab), free(b->gtab), free(b->wsum);
+    free(b->nb_start), free(b->nb), free(b->nb_k), free(b->wtab), free(b->gtab);
+    free(b->hb_start), free(b->hb), free(b->hb_k), free(b->stripe), free(b->A);
 }
 
 /* ------------------------------------------------------------------ measured quantities */

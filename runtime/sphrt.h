@@ -184,13 +184,21 @@ struct sph_body {
     double *work;       /* n*dim scratch for integrators (symplectic: v at n) */
     uint8_t *fix;       /* n bit masks: bit k = component k has a prescribed velocity */
 
-    int *nb_start, *nb;   /* CSR neighbour lists */
-    int *nb_k;            /* per pair: entry of the offset tables */
+    int *nb_start, *nb;   /* CSR neighbour lists, both directions (set-up only; freed) */
+    int *nb_k;            /* per pair: entry of the offset tables (set-up only; freed) */
     double *wtab;         /* ntab*dim: V_j grad W for each distinct offset */
     double *gtab;         /* ntab: G_ij = gtab * (v_i - v_j) . w_ij  (eq. 60) */
     int ntab;
-    double *wsum;         /* n*dim: sum_j V_j grad W_ij (zero inside, not at the surface) */
-    long npairs;
+    /* Half lists (j > i only) for the passes that visit each pair once and add its share
+     * to both particles.  Particles are cut into stripes of consecutive indices, at least as
+     * long as the largest j - i, so a pair of stripe s touches only stripes s and s + 1:
+     * the even stripes can run in parallel, then the odd ones, without two threads ever
+     * writing the same particle. */
+    int *hb_start, *hb, *hb_k;
+    int *stripe;          /* nstripes + 1 particle indices */
+    int nstripes;
+    double *A;            /* n*dim*dim: sum_j (u_j - u_i) (x) w_ij, the pair part of eq. 53 */
+    long npairs;          /* neighbour relations, both directions (2 x the half lists) */
 
     int **bc_list;      /* per BC with `near`: particle indices */
     int *bc_count;

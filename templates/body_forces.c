@@ -1,33 +1,54 @@
 /* ---- body @B@: internal forces ------------------------------------------------------
- * Pass 1, per particle: deformation gradient with corrected kernel gradients (eq. 53),
- * the material law (S, psi), P = F S (eq. 2), and the products the momentum pass gathers
- * from neighbours: Q = P L and, for artificial viscosity, Cv = cof(F) L = J F^-T L. */
+ * Pass 1, over pairs (each once): A_i = sum_j V_j (u_j - u_i) (x) grad W_ij.  The pair adds
+ * the same tensor to A_j (w_ji = -w_ij), so half the pairs do all the work.  Stripes of one
+ * colour never share a particle (see sph_body), so they run in parallel. */
+static void @B@_gradient_pass(sph_body *b)
+{
+    enum { D = @DIM@ };
+    const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
+    const double *restrict wtab = b->wtab, *restrict u = b->u;
+    double *restrict A = b->A;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < b->n * D * D; i++)
+        A[i] = 0;
+    for (int colour = 0; colour < 2; colour++) {
+#pragma omp parallel for schedule(dynamic, 1)
+        for (int s = colour; s < b->nstripes; s += 2)
+            for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
+                double Ai[D * D] = {0};
+                for (int p = hs[i]; p < hs[i + 1]; p++) {
+                    const int j = hb[p];
+                    const double *w = wtab + (size_t)hk[p] * D;
+                    for (int r = 0; r < D; r++) {
+                        const double du = u[j * D + r] - u[i * D + r];
+                        for (int c = 0; c < D; c++) {
+                            Ai[r * D + c] += du * w[c];
+                            A[(size_t)j * D * D + r * D + c] += du * w[c];
+                        }
+                    }
+                }
+                for (int k = 0; k < D * D; k++)
+                    A[(size_t)i * D * D + k] += Ai[k];
+            }
+    }
+}
+
+/* Pass 2, per particle: F = I + A L^T (eq. 53 with the corrected gradient), the material law
+ * (S, psi), P = F S (eq. 2), and what the momentum pass needs of each particle: Q = P L and,
+ * for artificial viscosity, Cv = cof(F) L = J F^-T L. */
 static void @B@_stress_pass(sph_body *b)
 {
     enum { D = @DIM@ };
     const int n = b->n;
-    const int *restrict start = b->nb_start, *restrict nb = b->nb, *restrict nbk = b->nb_k;
-    const double *restrict wtab = b->wtab, *restrict wsum = b->wsum;
-    const double *restrict u = b->u, *restrict Lc = b->L;
+    const double *restrict Ac = b->A, *restrict Lc = b->L;
     double *restrict Fs = b->F, *restrict Q = b->Q, *restrict psi = b->psi;
 //@if VISCOSITY
     double *restrict Cv = b->Cv;
 //@endif
+    @B@_gradient_pass(b);
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; i++) {
-        /* A = sum_j V_j (u_j - u_i) (x) grad W_ij = sum_j u_j (x) w_ij - u_i (x) wsum_i;
-         * F = I + A L^T  (eq. 53, corrected) */
-        double A[D * D] = {0};
-        for (int p = start[i]; p < start[i + 1]; p++) {
-            const int j = nb[p];
-            const double *w = wtab + (size_t)nbk[p] * D;
-            for (int r = 0; r < D; r++)
-                for (int c = 0; c < D; c++)
-                    A[r * D + c] += u[j * D + r] * w[c];
-        }
-        for (int r = 0; r < D; r++)
-            for (int c = 0; c < D; c++)
-                A[r * D + c] -= u[i * D + r] * wsum[i * D + c];
+        const double *A = Ac + (size_t)i * D * D;
         const double *L = Lc + (size_t)i * D * D;
         double F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
         for (int r = 0; r < D; r++)
@@ -71,77 +92,75 @@ static void @B@_stress_pass(sph_body *b)
     }
 }
 
-/* Pass 2, per particle: momentum balance (eq. 55) in the symmetric corrected form
- *   dv_i/dt = 1/rho0 sum_j V_j (P_i L_i + P_j L_j) grad W_ij
- *           = 1/rho0 (Q_i wsum_i + sum_j Q_j w_ij)
- * which conserves linear momentum (every pair force is equal and opposite), plus
- * artificial viscosity (eq. 57-60), symmetrised the same way, and body forces. */
+/* Pass 3, over pairs (each once): momentum balance (eq. 55) in the symmetric corrected form
+ *   rho0 dv_i/dt = sum_j V_j (P_i L_i + P_j L_j) grad W_ij
+ * plus artificial viscosity (eq. 57-60) symmetrised the same way.  Each pair force is added
+ * to i and subtracted from j, so linear momentum is conserved to round-off. */
 static void @B@_momentum_pass(sph_body *b)
 {
     enum { D = @DIM@ };
-    const int n = b->n;
-    const int *restrict start = b->nb_start, *restrict nb = b->nb, *restrict nbk = b->nb_k;
-    const double *restrict wtab = b->wtab, *restrict wsum = b->wsum, *restrict Q = b->Q;
+    const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
+    const double *restrict wtab = b->wtab, *restrict Q = b->Q;
     double *restrict acc = b->a;
     const double inv_rho = 1.0 / b->rho0;
 //@if VISCOSITY
     const double *restrict v = b->v, *restrict Cv = b->Cv, *restrict gtab = b->gtab;
 //@endif
 #pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; i++) {
-        double f[D] = {0};
-//@if VISCOSITY
-        double fv[D] = {0}, pw[D] = {0};
-//@endif
-        for (int p = start[i]; p < start[i + 1]; p++) {
-            const int j = nb[p], k = nbk[p];
-            const double *w = wtab + (size_t)k * D;
-            const double *Qj = Q + (size_t)j * D * D;
-            for (int r = 0; r < D; r++)
-                for (int c = 0; c < D; c++)
-                    f[r] += Qj[r * D + c] * w[c];
-//@if VISCOSITY
-            /* G_ij (eq. 60; gtab holds h / (r^2 + 0.001 h^2) in the units of w) and the
-             * viscous pressure pi_ij (eq. 58, times rho0), which resists relative motion
-             * along the reference separation. */
-            double vw = 0;
-            for (int c = 0; c < D; c++)
-                vw += (v[i * D + c] - v[j * D + c]) * w[c];
-            const double G = gtab[k] * vw;
-            double pi = -@BETA1@ * @C0@ * G;
-//@if BETA2
-            const double Gc = 0.5 * (G - fabs(G)); /* min(G, 0): beta2 acts on approach only */
-            pi += @BETA2@ * Gc * Gc;
-//@endif
-            const double *Cj = Cv + (size_t)j * D * D;
-            for (int c = 0; c < D; c++) {
-                const double piw = pi * w[c];
-                pw[c] += piw;
-                for (int r = 0; r < D; r++)
-                    fv[r] += Cj[r * D + c] * piw;
-            }
-//@endif
-        }
-        const double *Qi = Q + (size_t)i * D * D;
-//@if VISCOSITY
-        const double *Ci = Cv + (size_t)i * D * D;
-//@endif
-        for (int r = 0; r < D; r++) {
-            double fr = f[r];
-            for (int c = 0; c < D; c++)
-                fr += Qi[r * D + c] * wsum[i * D + c];
-            double ar = fr * inv_rho;
-//@if VISCOSITY
-            double vr = fv[r];
-            for (int c = 0; c < D; c++)
-                vr += Ci[r * D + c] * pw[c];
-            ar -= 0.5 * vr;
-//@endif
+    for (int i = 0; i < b->n; i++)
+        for (int r = 0; r < D; r++)
 //@if GRAVITY
-            ar += @B@_gravity[r];
+            acc[i * D + r] = @B@_gravity[r];
 //@endif
-            acc[i * D + r] = ar;
-        }
+//@if NO_GRAVITY
+            acc[i * D + r] = 0;
+//@endif
+    for (int colour = 0; colour < 2; colour++) {
+#pragma omp parallel for schedule(dynamic, 1)
+        for (int s = colour; s < b->nstripes; s += 2)
+            for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
+                const double *Qi = Q + (size_t)i * D * D;
+//@if VISCOSITY
+                const double *Ci = Cv + (size_t)i * D * D;
+//@endif
+                double fi[D] = {0};
+                for (int p = hs[i]; p < hs[i + 1]; p++) {
+                    const int j = hb[p], k = hk[p];
+                    const double *w = wtab + (size_t)k * D;
+                    const double *Qj = Q + (size_t)j * D * D;
+                    double f[D];
+                    for (int r = 0; r < D; r++) {
+                        double s2 = 0;
+                        for (int c = 0; c < D; c++)
+                            s2 += (Qi[r * D + c] + Qj[r * D + c]) * w[c];
+                        f[r] = s2 * inv_rho;
+                    }
+//@if VISCOSITY
+                    /* G_ij (eq. 60; gtab holds h / (r^2 + 0.001 h^2) in the units of w) and
+                     * the viscous pressure pi_ij (eq. 58, times rho0), which resists relative
+                     * motion along the reference separation. */
+                    double vw = 0;
+                    for (int c = 0; c < D; c++)
+                        vw += (v[i * D + c] - v[j * D + c]) * w[c];
+                    const double G = gtab[k] * vw;
+                    double pi = -@BETA1@ * @C0@ * G;
+//@if BETA2
+                    const double Gc = 0.5 * (G - fabs(G)); /* min(G, 0): beta2 acts on approach */
+                    pi += @BETA2@ * Gc * Gc;
+//@endif
+                    const double *Cj = Cv + (size_t)j * D * D;
+                    for (int r = 0; r < D; r++)
+                        for (int c = 0; c < D; c++)
+                            f[r] -= 0.5 * pi * (Ci[r * D + c] + Cj[r * D + c]) * w[c];
+//@endif
+                    for (int r = 0; r < D; r++) {
+                        fi[r] += f[r];
+                        acc[j * D + r] -= f[r];
+                    }
+                }
+                for (int r = 0; r < D; r++)
+                    acc[i * D + r] += fi[r];
+            }
     }
 }
 
