@@ -289,6 +289,23 @@ static int check_viscosity(const Model *m, const Setting *s, BodyModel *b)
     return 0;
 }
 
+static int check_hourglass(const Model *m, const Setting *s, BodyModel *b)
+{
+    if (s->nvalues != 1) {
+        diag_error(s->loc, "'hourglass' takes one value, the penalty coefficient");
+        return -1;
+    }
+    if (check_const_expr(m, s->values[0], "hourglass", &b->hourglass))
+        return -1;
+    if (!(b->hourglass >= 0 && b->hourglass <= 10)) {
+        diag_error(s->values[0]->loc, "the hourglass coefficient must lie in [0, 10] (typically "
+                                      "0.01 to 0.3; got %g)",
+                   b->hourglass);
+        return -1;
+    }
+    return 0;
+}
+
 static int check_setting(const Model *m, const Setting *s, BodyModel *b)
 {
     if (!strcmp(s->key, "refine"))
@@ -297,7 +314,10 @@ static int check_setting(const Model *m, const Setting *s, BodyModel *b)
         return setting_int(m, s, 1, &b->nbsrange);
     if (!strcmp(s->key, "viscosity"))
         return check_viscosity(m, s, b);
-    diag_error(s->loc, "unknown body setting '%s' (expected refine, nbsrange or viscosity)",
+    if (!strcmp(s->key, "hourglass"))
+        return check_hourglass(m, s, b);
+    diag_error(s->loc, "unknown body setting '%s' (expected refine, nbsrange, viscosity or "
+                       "hourglass)",
                s->key);
     return -1;
 }

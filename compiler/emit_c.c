@@ -94,8 +94,10 @@ static void fill_template(Emitter *E, const char *file, const BodyModel *b, cons
     tpl_set(&env, "BETA1", "%.17g", b->beta1);
     tpl_set(&env, "BETA2", "%.17g", b->beta2);
     tpl_set(&env, "C0", "%.17g", b->c0);
+    tpl_set(&env, "HG", "%.17g", 0.5 * b->hourglass * b->E); /* alpha E / 2 */
     tpl_feature(&env, "VISCOSITY", p->viscosity);
     tpl_feature(&env, "BETA2", p->beta2);
+    tpl_feature(&env, "HOURGLASS", p->hourglass);
     tpl_feature(&env, "GRAVITY", p->gravity);
     tpl_feature(&env, "NO_GRAVITY", !p->gravity);
     tpl_feature(&env, "VELOCITY_BCS", p->velocity_bcs);

@@ -12,6 +12,7 @@ static void features(const Model *m, const BodyModel *b, BodyPlan *p)
 {
     p->viscosity = b->beta1 > 0 || b->beta2 > 0;
     p->beta2 = b->beta2 > 0;
+    p->hourglass = b->hourglass > 0;
     p->gravity = m->gravity[0] != 0 || m->gravity[1] != 0 || m->gravity[2] != 0;
     p->symplectic = m->integrator == INTEGRATOR_SYMPLECTIC;
     for (int k = 0; k < b->nbcs; k++) {
@@ -57,8 +58,8 @@ void plan_dump(const Model *m, FILE *out)
         fprintf(out, "body %s: dim %d, law %s, %s integrator\n", b->name, m->dim, b->law->name,
                 p->symplectic ? "symplectic" : "verlet");
         fprintf(out, "  features: viscosity=%d beta2=%d gravity=%d velocity_bcs=%d "
-                     "force_bcs=%d fracture=0 plasticity=0 contact=0\n",
-                p->viscosity, p->beta2, p->gravity, p->velocity_bcs, p->force_bcs);
+                     "force_bcs=%d hourglass=%d fracture=0 plasticity=0 contact=0\n",
+                p->viscosity, p->beta2, p->gravity, p->velocity_bcs, p->force_bcs, p->hourglass);
         fprintf(out, "  material law: %d graph nodes\n", count_ops(&p->law));
         int roots[10];
         memcpy(roots, p->roots.S, sizeof p->roots.S);

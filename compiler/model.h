@@ -61,6 +61,7 @@ typedef struct {
     double E, nu, lambda, mu, K;   /* elastic constants, all five derived */
     double c0;                     /* eq. 59 */
     double beta1, beta2;           /* artificial viscosity, eq. 58 */
+    double hourglass;              /* penalty coefficient of the hourglass control (0: off) */
     const MaterialDef *law;
     double *law_args;              /* value of each law parameter, in law order */
     BcModel *bcs;

@@ -25,7 +25,8 @@ static void body(FILE *out, const BodyModel *b)
     fprintf(out, "    material %s(", b->law->name);
     for (int k = 0; k < b->law->nparams; k++)
         fprintf(out, "%s%s = %g", k ? ", " : "", b->law->params[k], b->law_args[k]);
-    fprintf(out, ")\n    viscosity beta1 %g beta2 %g\n", b->beta1, b->beta2);
+    fprintf(out, ")\n    viscosity beta1 %g beta2 %g  hourglass %g\n", b->beta1, b->beta2,
+            b->hourglass);
     for (int k = 0; k < b->nbcs; k++) {
         const BcModel *bc = &b->bcs[k];
         static const char *const forces[] = {"", " point", " surface", " accel"};

@@ -9,6 +9,7 @@
 typedef struct {
     int viscosity;      /* beta1 or beta2 nonzero */
     int beta2;          /* the quadratic term of eq. 58 */
+    int hourglass;      /* hourglass control penalty */
     int gravity;        /* nonzero body force */
     int velocity_bcs;   /* any velocity BC */
     int force_bcs;      /* any force BC */

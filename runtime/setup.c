@@ -145,7 +145,7 @@ static long offset_key(const sph_body *b, const double *dX)
 
 /* Per-pair tables (see sphrt.h): one entry per distinct lattice offset, or one per pair
  * when the particles are not on one lattice. */
-static void offset_tables(sph_body *b, double *w)
+static void offset_tables(sph_body *b, double *w, sph_kernel_kind kernel)
 {
     const int D = b->dim;
     const long np = b->npairs;
@@ -175,6 +175,7 @@ static void offset_tables(sph_body *b, double *w)
     b->ntab = ntab;
     b->wtab = zalloc((size_t)ntab * D, sizeof(double));
     b->gtab = zalloc((size_t)ntab, sizeof(double));
+    b->htab = zalloc((size_t)ntab, sizeof(double));
     for (int i = 0; i < b->n; i++)
         for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
             int k = lattice ? b->nb_k[p] : p;
@@ -185,6 +186,10 @@ static void offset_tables(sph_body *b, double *w)
                 b->wtab[(size_t)k * D + c] = w[(size_t)p * D + c];
             }
             b->gtab[k] = viscosity_factor(b, dX, w + (size_t)p * D);
+            double r2 = 0;
+            for (int c = 0; c < D; c++)
+                r2 += dX[c] * dX[c];
+            b->htab[k] = b->vol * sph_kernel_w(kernel, D, sqrt(r2), b->h) / (b->rho0 * r2);
         }
 }
 
@@ -268,7 +273,7 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
     double *w;
     sph_gradients(b->X, b->n, b->dim, b->nb_start, b->nb, m->kernel, b->h, b->vol, &w, &b->L);
     drop_silent_pairs(b, w);
-    offset_tables(b, w);
+    offset_tables(b, w, m->kernel);
     free(w);
     half_lists(b);
     allocate(b);
@@ -285,7 +290,7 @@ void sph_body_free(sph_body *b)
     free(b->bc_list), free(b->bc_count), free(b->ms_list), free(b->ms_count);
     free(b->X), free(b->u), free(b->v), free(b->a), free(b->work), free(b->F), free(b->L);
     free(b->Q), free(b->Cv), free(b->psi), free(b->sigma), free(b->fix);
-    free(b->nb_start), free(b->nb), free(b->nb_k), free(b->wtab), free(b->gtab);
+    free(b->nb_start), free(b->nb), free(b->nb_k), free(b->wtab), free(b->gtab), free(b->htab);
     free(b->hb_start), free(b->hb), free(b->hb_k), free(b->stripe), free(b->A);
 }
 

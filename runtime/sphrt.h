@@ -188,6 +188,7 @@ struct sph_body {
     int *nb_k;            /* per pair: entry of the offset tables (set-up only; freed) */
     double *wtab;         /* ntab*dim: V_j grad W for each distinct offset */
     double *gtab;         /* ntab: G_ij = gtab * (v_i - v_j) . w_ij  (eq. 60) */
+    double *htab;         /* ntab: V W(r0) / (rho0 r0^2), for the hourglass penalty */
     int ntab;
     /* Half lists (j > i only) for the passes that visit each pair once and add its share
      * to both particles.  Particles are cut into stripes of consecutive indices, at least as
