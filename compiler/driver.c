@@ -12,6 +12,7 @@
 #include "diag.h"
 #include "driver.h"
 #include "emit.h"
+#include "xml.h"
 
 static int exists(const char *path)
 {
@@ -96,7 +97,7 @@ static int import_module(const Item *it, const char *model_dir, const Paths *pat
 int load_program(const char *path, const Paths *paths, Program *prog)
 {
     prog->file = path;
-    int errors = parse_file(path, prog);
+    int errors = xml_is_case_file(path) ? xml_import(path, prog) : parse_file(path, prog);
     char *dir = strdup(path);
     char *slash = strrchr(dir, '/');
     if (slash)
@@ -105,7 +106,8 @@ int load_program(const char *path, const Paths *paths, Program *prog)
         strcpy(dir, ".");
     char **loaded = NULL;
     int nloaded = 0;
-    /* Imported files may import more: prog->n grows while we scan. */
+    /* Imported files may import more: prog->n grows while we scan.  An XML case imports
+     * the material laws it uses, which are found like any module. */
     for (int i = 0; i < prog->n && !errors; i++) {
         const Item *it = &prog->items[i];
         if (it->kind != IT_IMPORT || already_loaded(loaded, nloaded, it->name))

@@ -13,6 +13,7 @@ typedef struct {
     const char *dump;      /* ast | model | plan */
     int check_only;
     int emit_only;         /* --emit-only: write the C source (to --emit-c DIR) and stop */
+    int to_sph;            /* --to-sph: print the model as .sph and stop */
 } Options;
 
 typedef struct {
@@ -26,7 +27,8 @@ typedef struct {
  * then the source and build trees sphc was built from; SPHC_HOME overrides both. */
 int find_paths(const char *argv0, Paths *p);
 
-/* Parse the model and every module it imports (stdlib/NAME.sph or NAME.sph beside it). */
+/* Parse the model (a .sph file, or a SoliDualSPHysics .xml case through the importer) and
+ * every module it imports (stdlib/NAME.sph or NAME.sph beside it). */
 int load_program(const char *path, const Paths *paths, Program *prog);
 
 /* Emit C, compile and link the executable. */

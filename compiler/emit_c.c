@@ -188,8 +188,14 @@ static int window_open(Emitter *E, const BcModel *bc, int k, int at_middle)
     if (!bc->has_window)
         return 0;
     const char *tm = at_middle ? "t" : "(t + 0.5 * dt)";
-    fprintf(E->out, "    const int on%d = %s >= %.17g && %s <= %.17g;\n", k, tm, bc->t0, tm,
-            bc->t1);
+    fprintf(E->out, "    const int on%d = ", k);
+    if (isfinite(bc->t0))
+        fprintf(E->out, "%s >= %.17g%s", tm, bc->t0, isfinite(bc->t1) ? " && " : "");
+    if (isfinite(bc->t1))
+        fprintf(E->out, "%s <= %.17g", tm, bc->t1);
+    if (!isfinite(bc->t0) && !isfinite(bc->t1))
+        fputs("1", E->out);
+    fputs(";\n", E->out);
     return 1;
 }
 

@@ -1,6 +1,10 @@
 /* main.c — the sphc driver: options, stages, and the call to the C compiler.
  *
- *   sphc [-o NAME] [--target cpu|cuda] [--emit-c DIR] [--dump=ast|model|plan] [--check] FILE
+ *   sphc [-o NAME] [--target cpu|cuda] [--emit-c DIR] [--dump=ast|model|plan] [--check]
+ *        [--to-sph] FILE
+ *
+ * FILE is an .sph model or a SoliDualSPHysics case (.xml), which the importer (xml_*.c)
+ * turns into the same syntax tree; --to-sph prints that tree as an .sph model.
  */
 #include <errno.h>
 #include <stdio.h>
@@ -14,18 +18,22 @@
 #include "driver.h"
 #include "emit.h"
 #include "model.h"
+#include "sph_print.h"
 
 static void usage(FILE *f)
 {
     fputs("usage: sphc [-o NAME] [--target cpu|cuda] [--emit-c DIR] [--dump=ast|model|plan]\n"
-          "            [--check] FILE.sph\n"
-          "Compiles a model into an executable (named after FILE unless -o is given).\n"
+          "            [--check] [--to-sph] FILE\n"
+          "Compiles a model (FILE.sph, or a SoliDualSPHysics case FILE.xml) into an\n"
+          "executable (named after FILE unless -o is given).\n"
           "  -o NAME          name of the executable\n"
           "  --target T       cpu (OpenMP, default) or cuda\n"
           "  --emit-c DIR     keep the generated C source in DIR\n"
           "  --dump=STAGE     print the syntax tree, checked model or kernel plan and stop\n"
           "  --emit-only      with --emit-c: write the C source without compiling it\n"
           "  --check          check the model only\n"
+          "  --to-sph         check the model and print it as an .sph model (to convert an\n"
+          "                   XML case once: sphc --to-sph Case_Def.xml > case.sph)\n"
           "  --version        print the version\n",
           f);
 }
@@ -58,6 +66,8 @@ static int parse_args(int argc, char **argv, Options *o)
             o->emit_only = 1;
         } else if (!strcmp(a, "--check")) {
             o->check_only = 1;
+        } else if (!strcmp(a, "--to-sph")) {
+            o->to_sph = 1;
         } else if (a[0] == '-' && a[1]) {
             diag_fatal_noloc("unknown option '%s' (see sphc --help)", a);
             return -1;
@@ -128,6 +138,11 @@ int main(int argc, char **argv)
     if (o.dump) {
         plan_dump(&m, stdout);
         return diag_error_count() ? 1 : 0;
+    }
+    if (o.to_sph) {
+        printf("# %s, converted by sphc --to-sph\n\n", o.input);
+        sph_print_program(&prog, stdout);
+        return 0;
     }
     if (o.check_only)
         return 0;

@@ -1,0 +1,414 @@
+/* xml_deform.c — <deformstrucs>: one sph body per <deformstrucbody mkbound="N">.
+ *
+ *   <deformstrucbody mkbound="1">          body mk1 { shape <what mk 1 was drawn as>
+ *     <mapfac value="4"/>                    refine 4
+ *     <nbsrange value="1"/>                  nbsrange 1
+ *     <density value="1000"/>                material svk(density 1000,
+ *     <u_mu value=".."/> <u_bulk value=".."/>                 shear .., bulk ..)
+ *     <constitmodel value="1"/>              (1 svk, 2 neohookean; 3 J2: not supported yet)
+ *     <artvisc factor1=".." factor2=".."/>   viscosity .., ..   (default 0.2, 0)
+ *     <bcvel ../> <bcforce ../>              velocity .. / force ..  (xml_bc.c)
+ *     <measureplane> ..                      measure planeK plane ..  (xml_bc.c)
+ *   </deformstrucbody>
+ *
+ * Elastic constants: youngmod + poissratio, u_lambda + u_mu or u_bulk + u_mu, where u_bulk
+ * is the three-dimensional bulk modulus (the sph language's `bulk`, also in 2D).
+ * Fracture, J2 plasticity and contact cards are read and checked, then reported as not
+ * supported yet. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "diag.h"
+#include "xml_internal.h"
+
+enum { EL_E, EL_NU, EL_LAMBDA, EL_MU, EL_K, EL_N };
+
+/* The cards of one body that are not boundary conditions or measurements. */
+typedef struct {
+    int mk;
+    SrcLoc loc;
+    int has_density, has_el[EL_N], has_visc, has_nbs, fracture;
+    double density, el[EL_N], beta1, beta2;
+    SrcLoc density_loc, el_loc[EL_N], model_loc, visc_loc, refine_loc, nbs_loc;
+    long model, refine, nbsrange;
+    const xmlNode *fracture_card, *plastic_card, *first_phase; /* the first of each */
+} Cards;
+
+static const char *const ELASTIC_CARDS[EL_N] = {"youngmod", "poissratio", "u_lambda", "u_mu",
+                                                "u_bulk"};
+static const char *const ELASTIC_ARGS[EL_N] = {"young", "poisson", "lambda", "shear", "bulk"};
+
+static int nonnegative(const XmlCtx *x, const xmlNode *n, const char *attr, double v)
+{
+    if (v >= 0)
+        return 0;
+    diag_error(xml_loc(x, n), "<%s> attribute '%s': must not be negative (got %g)", xml_name(n),
+               attr, v);
+    return -1;
+}
+
+static int positive_value(const XmlCtx *x, const xmlNode *n, double *v)
+{
+    if (xml_card_number(x, n, v))
+        return -1;
+    if (*v > 0)
+        return 0;
+    diag_error(xml_loc(x, n), "<%s> attribute 'value': must be positive (got %g)", xml_name(n),
+               *v);
+    return -1;
+}
+
+static int artvisc(const XmlCtx *x, const xmlNode *n, Cards *c)
+{
+    static const char *const attrs[] = {"factor1", "factor2", NULL};
+    if (xml_check_attrs(x, n, attrs))
+        return -1;
+    if (xml_number(x, n, "factor1", 0, &c->beta1) < 0 ||
+        xml_number(x, n, "factor2", 0, &c->beta2) < 0)
+        return -1;
+    c->has_visc = 1;
+    c->visc_loc = xml_loc(x, n);
+    return nonnegative(x, n, "factor1", c->beta1) || nonnegative(x, n, "factor2", c->beta2);
+}
+
+static int elastic_card(const XmlCtx *x, const xmlNode *n, Cards *c)
+{
+    for (int k = 0; k < EL_N; k++)
+        if (xml_is(n, ELASTIC_CARDS[k])) {
+            c->has_el[k] = 1;
+            c->el_loc[k] = xml_loc(x, n);
+            return xml_card_number(x, n, &c->el[k]);
+        }
+    return 1;
+}
+
+static int whole_card(const XmlCtx *x, const xmlNode *n, long lo, long hi, long *v)
+{
+    static const char *const value[] = {"value", NULL};
+    if (xml_check_attrs(x, n, value))
+        return -1;
+    return xml_integer(x, n, "value", 1, lo, hi, v) == 1 ? 0 : -1;
+}
+
+static int phase_card(const XmlCtx *x, const xmlNode *n)
+{
+    double v;
+    if (xml_is(n, "notch")) {
+        static const char *const corners[] = {"p1", "p2", "p3", "p4", NULL};
+        int bad = xml_check_children(x, n, corners) != 0;
+        for (int k = 0; corners[k]; k++) {
+            const xmlNode *p = xml_child(n, corners[k]);
+            double q[3];
+            if (!p) {
+                diag_error(xml_loc(x, n), "<notch> needs <%s>", corners[k]);
+                bad = 1;
+            } else {
+                bad |= xml_point(x, p, q) != 0;
+            }
+        }
+        return bad ? -1 : 0;
+    }
+    if (xml_is(n, "restrictphi")) {
+        long id;
+        if (whole_card(x, n, 0, 1000000000, &id))
+            return -1;
+        if (!xml_user_expr(x, id)) {
+            diag_error(xml_loc(x, n), "<restrictphi> attribute 'value': expression %ld is not "
+                                      "defined in <mathexpressions>", id);
+            return -1;
+        }
+        return 0;
+    }
+    return positive_value(x, n, &v);
+}
+
+/* Cards of fracture (phase field), plasticity and contact: checked, and the first of each
+ * kind kept for unsupported(); 1 when n is none of them. */
+static int other_card(XmlCtx *x, const xmlNode *n, Cards *c)
+{
+    double v;
+    if (xml_is(n, "fracture")) {
+        c->fracture_card = n;
+        return xml_card_bool(x, n, &c->fracture);
+    }
+    if (xml_is(n, "yieldstress") || xml_is(n, "hardening")) {
+        c->plastic_card = c->plastic_card ? c->plastic_card : n;
+        return xml_card_number(x, n, &v) || nonnegative(x, n, "value", v);
+    }
+    if (xml_is(n, "restcoef") || xml_is(n, "kfric"))
+        return xml_card_number(x, n, &v) || nonnegative(x, n, "value", v);
+    if (xml_is(n, "Gc") || xml_is(n, "pflenscale") || xml_is(n, "pflim") ||
+        xml_is(n, "restrictphi") || xml_is(n, "notch")) {
+        c->first_phase = c->first_phase ? c->first_phase : n;
+        return phase_card(x, n);
+    }
+    return 1;
+}
+
+/* One card of pass 1; 1 when it is not one of these cards. */
+static int card(XmlCtx *x, const xmlNode *n, Cards *c)
+{
+    int r = elastic_card(x, n, c);
+    if (r <= 0)
+        return r;
+    if (xml_is(n, "density")) {
+        c->has_density = 1;
+        c->density_loc = xml_loc(x, n);
+        return positive_value(x, n, &c->density);
+    }
+    if (xml_is(n, "constitmodel")) {
+        c->model_loc = xml_loc(x, n);
+        return whole_card(x, n, 1, 3, &c->model);
+    }
+    if (xml_is(n, "artvisc"))
+        return artvisc(x, n, c);
+    if (xml_is(n, "avfactor")) {
+        c->has_visc = 1;
+        c->visc_loc = xml_loc(x, n);
+        return xml_card_number(x, n, &c->beta1) || nonnegative(x, n, "value", c->beta1);
+    }
+    if (xml_is(n, "mapfac")) {
+        c->refine_loc = xml_loc(x, n);
+        return whole_card(x, n, 1, 1000, &c->refine);
+    }
+    if (xml_is(n, "nbsrange")) {
+        c->has_nbs = 1;
+        c->nbs_loc = xml_loc(x, n);
+        return whole_card(x, n, 1, 1000, &c->nbsrange);
+    }
+    return other_card(x, n, c);
+}
+
+/* ------------------------------------------------------------------ checks */
+
+/* One of youngmod + poissratio, u_lambda + u_mu, u_bulk + u_mu. */
+static int elastic_option(const Cards *c)
+{
+    const int *h = c->has_el;
+    int opt_e = h[EL_E] || h[EL_NU], opt_l = h[EL_LAMBDA], opt_k = h[EL_K];
+    if (opt_e + opt_l + opt_k > 1 || (opt_e && h[EL_MU])) {
+        diag_error(c->loc, "<deformstrucbody mkbound=\"%d\">: elastic constants given more than "
+                           "once (use one of youngmod + poissratio, u_lambda + u_mu, u_bulk + "
+                           "u_mu)", c->mk);
+        return -1;
+    }
+    if (opt_e && !(h[EL_E] && h[EL_NU])) {
+        int k = h[EL_E] ? EL_E : EL_NU;
+        diag_error(c->el_loc[k], "<%s> needs <%s>", ELASTIC_CARDS[k],
+                   ELASTIC_CARDS[k == EL_E ? EL_NU : EL_E]);
+        return -1;
+    }
+    if ((opt_l || opt_k) && !h[EL_MU]) {
+        int k = opt_l ? EL_LAMBDA : EL_K;
+        diag_error(c->el_loc[k], "<%s> needs <u_mu>", ELASTIC_CARDS[k]);
+        return -1;
+    }
+    if (h[EL_MU] && !opt_l && !opt_k) {
+        diag_error(c->el_loc[EL_MU], "<u_mu> needs <u_lambda> or <u_bulk>");
+        return -1;
+    }
+    if (!opt_e && !opt_l && !opt_k) {
+        diag_error(c->loc, "<deformstrucbody mkbound=\"%d\"> needs elastic constants: "
+                           "<youngmod> and <poissratio>, <u_lambda> and <u_mu>, or <u_bulk> "
+                           "and <u_mu>", c->mk);
+        return -1;
+    }
+    return 0;
+}
+
+/* Fracture, plasticity: reported as not supported yet; their cards without them ignored. */
+static int unsupported(const XmlCtx *x, const Cards *c)
+{
+    if (c->model == 3) {
+        diag_error(c->model_loc, "<constitmodel>: J2 plasticity (value 3) is not supported yet");
+        return -1;
+    }
+    if (c->fracture) {
+        diag_error(xml_loc(x, c->fracture_card), "<fracture>: fracture is not supported yet");
+        return -1;
+    }
+    if (c->plastic_card)
+        diag_warning(xml_loc(x, c->plastic_card), "<%s> is ignored: only J2 plasticity "
+                     "(<constitmodel value=\"3\"/>) uses it", xml_name(c->plastic_card));
+    if (c->first_phase)
+        diag_warning(xml_loc(x, c->first_phase), "<%s> is ignored without <fracture "
+                     "value=\"true\"/>", xml_name(c->first_phase));
+    return 0;
+}
+
+/* ------------------------------------------------------------------ the body */
+
+static void push_item(BodyDecl *b, BodyItemKind kind, SrcLoc loc, Setting s)
+{
+    BodyItem it = {0};
+    it.kind = kind;
+    it.loc = loc;
+    it.setting = s;
+    ast_push_bodyitem(b, it);
+}
+
+static void push_setting(BodyDecl *b, SrcLoc loc, const char *key, double v)
+{
+    push_item(b, BI_SETTING, loc, ast_setting(loc, key, ast_num(loc, v)));
+}
+
+static void push_material(XmlCtx *x, const Cards *c, BodyDecl *b)
+{
+    static const char *const laws[] = {NULL, "svk", "neohookean"};
+    SrcLoc loc = c->model_loc.line ? c->model_loc : c->loc;
+    BodyItem it = {0};
+    it.kind = BI_MATERIAL;
+    it.loc = loc;
+    it.material.name = ast_strdup(laws[c->model]);
+    it.material.loc = loc;
+    ast_push_setting(&it.material.args, ast_setting(c->density_loc, "density",
+                                                    ast_num(c->density_loc, c->density)));
+    for (int k = 0; k < EL_N; k++)
+        if (c->has_el[k])
+            ast_push_setting(&it.material.args, ast_setting(c->el_loc[k], ELASTIC_ARGS[k],
+                                                            ast_num(c->el_loc[k], c->el[k])));
+    ast_push_bodyitem(b, it);
+    if (!x->uses_law[c->model])
+        x->law_loc[c->model] = loc;
+    x->uses_law[c->model] = 1;
+}
+
+static void push_settings(XmlCtx *x, const Cards *c, BodyDecl *b)
+{
+    BodyItem shape = {0};
+    shape.kind = BI_SHAPE;
+    shape.loc = c->loc;
+    shape.shape = xml_mk_shape(x, c->mk, c->loc);
+    ast_push_bodyitem(b, shape);
+    push_setting(b, c->refine_loc.line ? c->refine_loc : c->loc, "refine", (double)c->refine);
+    if (c->has_nbs)
+        push_setting(b, c->nbs_loc, "nbsrange", (double)c->nbsrange);
+    push_material(x, c, b);
+    SrcLoc vl = c->has_visc ? c->visc_loc : c->loc;
+    Setting visc = ast_setting(vl, "viscosity", ast_num(vl, c->beta1));
+    if (c->beta2 != 0)
+        ast_push_expr(&visc.values, &visc.nvalues, ast_num(vl, c->beta2));
+    push_item(b, BI_SETTING, vl, visc);
+}
+
+static int is_bc_or_measure(const xmlNode *n)
+{
+    return xml_is(n, "bcvel") || xml_is(n, "bcforce") || xml_is(n, "measureplane");
+}
+
+/* Pass 1: material and settings cards. */
+static int read_cards(XmlCtx *x, const xmlNode *n, Cards *c)
+{
+    int bad = 0;
+    for (xmlNode *k = xml_first(n); k; k = xml_next(k)) {
+        if (is_bc_or_measure(k))
+            continue;
+        int r = card(x, k, c);
+        if (r > 0)
+            diag_error(xml_loc(x, k), "<%s> is not a card of <deformstrucbody> (see the list "
+                                      "in docs/xml.md)", xml_name(k));
+        bad |= r != 0;
+    }
+    if (!bad && !c->has_density) {
+        diag_error(c->loc, "<deformstrucbody mkbound=\"%d\"> needs <density value=\"...\"/>",
+                   c->mk);
+        bad = 1;
+    }
+    if (bad || elastic_option(c) || unsupported(x, c))
+        return -1;
+    return 0;
+}
+
+static int body(XmlCtx *x, const xmlNode *n)
+{
+    static const char *const attrs[] = {"mkbound", NULL};
+    Cards c = {0};
+    long mk;
+    c.loc = xml_loc(x, n);
+    c.model = 1;
+    c.refine = 1;
+    c.beta1 = 0.2;
+    if (xml_check_attrs(x, n, attrs) || xml_integer(x, n, "mkbound", 1, 0, 65535, &mk) != 1)
+        return -1;
+    c.mk = (int)mk;
+    char name[32];
+    snprintf(name, sizeof name, "mk%d", c.mk);
+    for (int i = 0; i < x->nbodies; i++)
+        if (!strcmp(x->bodies[i].body.name, name)) {
+            diag_error(c.loc, "<deformstrucbody>: mkbound %d is already a body", c.mk);
+            return -1;
+        }
+    if (!xml_mk_drawn(x, c.mk)) {
+        diag_error(c.loc, "<deformstrucbody> attribute 'mkbound': nothing was drawn with mk %d "
+                          "in <geometry> (see <setmkbound>)", c.mk);
+        return -1;
+    }
+    if (read_cards(x, n, &c))
+        return -1;
+    Item it = {0};
+    it.kind = IT_BODY;
+    it.loc = c.loc;
+    it.body.name = ast_strdup(name);
+    it.body.loc = c.loc;
+    push_settings(x, &c, &it.body);
+    int bad = 0;
+    for (xmlNode *k = xml_first(n); k; k = xml_next(k))
+        if (xml_is(k, "measureplane"))
+            bad |= xml_measureplane(x, k, c.mk, (int)c.refine, &it.body) != 0;
+        else if (is_bc_or_measure(k))
+            bad |= xml_bc(x, k, c.mk, &it.body) != 0;
+    x->bodies = xml_grow(x->bodies, x->nbodies + 1, sizeof *x->bodies);
+    x->bodies[x->nbodies++] = it;
+    return bad ? -1 : 0;
+}
+
+/* ------------------------------------------------------------------ <deformstrucs> */
+
+static int top_card(XmlCtx *x, const xmlNode *n)
+{
+    double v;
+    if (xml_is(n, "timestep")) {
+        if (xml_card_number(x, n, &v))
+            return -1;
+        if (!(v > 0)) {
+            diag_error(xml_loc(x, n), "<timestep> attribute 'value': must be positive (got %g)",
+                       v);
+            return -1;
+        }
+        xml_scene_number(x, xml_loc(x, n), "dt", v);
+        return 0;
+    }
+    if (xml_is(n, "contcoeff"))
+        return xml_card_number(x, n, &v) || nonnegative(x, n, "value", v);
+    diag_error(xml_loc(x, n), "<%s> is not expected in <deformstrucs> (expected "
+                              "<deformstrucbody>, <timestep> or <contcoeff>)", xml_name(n));
+    return -1;
+}
+
+int xml_deformstrucs(XmlCtx *x, const xmlNode *deformstrucs)
+{
+    int bad = 0;
+    const xmlNode *second = NULL;
+    int nbodies = 0;
+    for (xmlNode *c = xml_first(deformstrucs); c; c = xml_next(c)) {
+        if (!xml_is(c, "deformstrucbody")) {
+            bad |= top_card(x, c) != 0;
+            continue;
+        }
+        if (++nbodies == 2)
+            second = c;
+        bad |= body(x, c) != 0;
+    }
+    if (!nbodies) {
+        diag_error(xml_loc(x, deformstrucs), "<deformstrucs> has no <deformstrucbody>");
+        return -1;
+    }
+    if (second && !bad) {
+        diag_error(xml_loc(x, second), "<deformstrucbody>: several deformable bodies interact "
+                                       "by contact in SoliDualSPHysics, which is not supported "
+                                       "yet");
+        return -1;
+    }
+    return bad ? -1 : 0;
+}

@@ -1,0 +1,148 @@
+/* xml_internal.h — what the files of the XML importer share (xml_*.c).
+ *
+ *   xml_read.c      loading the file, the <case> tree, assembling the Program
+ *   xml_util.c      elements, attributes and their values, with errors naming both
+ *   xml_expr.c      the expression language of attribute values and <userexpression>s
+ *   xml_scene.c     <constantsdef> and <execution><parameters>: the scene settings
+ *   xml_geometry.c  <geometry>: the GenCase lattice, <drawbox>, shapes of an mk
+ *   xml_mathexpr.c  <mathexpressions>: user expressions and their locals (lets)
+ *   xml_deform.c    <deformstrucs>: bodies, material and settings cards
+ *   xml_bc.c        <bcvel>, <bcforce>, <measureplane> of a body
+ *
+ * Every value keeps the line of its element: errors read "file:line: error: <elem>: ...". */
+#ifndef SPHC_XML_INTERNAL_H
+#define SPHC_XML_INTERNAL_H
+
+#include <libxml/tree.h>
+
+#include "ast.h"
+
+/* One <drawbox> of the mainlist: the GenCase lattice nodes it covers, per axis
+ * (inclusive; in 2D the y range is 0..0). */
+typedef struct {
+    int mk;
+    long lo[3], hi[3];
+    SrcLoc loc;
+} XmlDraw;
+
+/* One <userexpression>: its expression with its locals renamed to the model's lets. */
+typedef struct {
+    int id;
+    Expr *value;
+    SrcLoc loc;
+} XmlUserExpr;
+
+typedef struct {
+    const char *file;
+    /* <definition>: the lattice pointmin + k dp, 2D when pointmin.y == pointmax.y */
+    int has_domain, dim;
+    double dp, pmin[3], pmax[3];
+    long nodes[3];            /* largest node number inside the domain, per axis */
+    /* <newvar> variables (#name) */
+    char **var_names;
+    double *var_values;
+    int nvars;
+    /* the mainlist */
+    XmlDraw *draws;
+    int ndraws;
+    /* <mathexpressions> */
+    XmlUserExpr *exprs;
+    int nexprs;
+    Item *lets;               /* IT_LET items for the locals */
+    int nlets;
+    /* scene settings from <constantsdef>, <parameters> and <deformstrucs> */
+    SettingList scene;
+    SrcLoc scene_loc;
+    int has_end;
+    /* bodies, and the constitutive models they use (1 svk, 2 neohookean) */
+    Item *bodies;
+    int nbodies;
+    int uses_law[3];
+    SrcLoc law_loc[3];
+    int nmeasures;            /* measurement planes so far (their names count on) */
+} XmlCtx;
+
+/* ---------------------------------------------------------------- xml_util.c */
+
+SrcLoc xml_loc(const XmlCtx *x, const xmlNode *n);
+const char *xml_name(const xmlNode *n);
+int xml_is(const xmlNode *n, const char *name);
+/* Element children: for (c = xml_first(n); c; c = xml_next(c)). */
+xmlNode *xml_first(const xmlNode *n);
+xmlNode *xml_next(const xmlNode *n);
+/* The first child element called name, or NULL. */
+xmlNode *xml_child(const xmlNode *n, const char *name);
+/* An attribute's value (a copy that lives as long as the tree), or NULL. */
+char *xml_attr(const xmlNode *n, const char *name);
+/* The element's text with surrounding blanks removed (a copy). */
+char *xml_text(const xmlNode *n);
+
+/* Every attribute must be one of allowed (NULL-terminated); comment and units_comment
+ * are always allowed.  Returns 0 or -1 after reporting each unknown attribute. */
+int xml_check_attrs(const XmlCtx *x, const xmlNode *n, const char *const *allowed);
+/* Reports each child element not in allowed (NULL-terminated); -1 when there was one. */
+int xml_check_children(const XmlCtx *x, const xmlNode *n, const char *const *allowed);
+
+/* A numeric attribute: a number or an expression of the <newvar> variables (#name).
+ * Returns 1 when given (value in *out), 0 when absent and not required, -1 on error. */
+int xml_number(const XmlCtx *x, const xmlNode *n, const char *attr, int required, double *out);
+/* The same for a whole number in [lo, hi]. */
+int xml_integer(const XmlCtx *x, const xmlNode *n, const char *attr, int required, long lo,
+                long hi, long *out);
+/* A card <name value="..."/>: checks its attributes and reads value (required). */
+int xml_card_number(const XmlCtx *x, const xmlNode *n, double *out);
+/* A card <name value="true|false|1|0"/>. */
+int xml_card_bool(const XmlCtx *x, const xmlNode *n, int *out);
+/* x, y and z of a point element such as <point x=".." y=".." z=".."/> (all required). */
+int xml_point(const XmlCtx *x, const xmlNode *n, double out[3]);
+
+/* p resized to hold n elements of size bytes (exits when memory runs out). */
+void *xml_grow(void *p, int n, size_t size);
+/* A double as the shortest decimal within tol of it (geometry computed from the lattice,
+ * so that -1.5e-3 - 0.5e-3 reads -0.002 again). */
+double xml_snap(double v, double tol);
+
+/* ---------------------------------------------------------------- xml_expr.c */
+
+/* Parses text in the expression language of SoliDualSPHysics (paper section 3.4: Table 3
+ * precedence, if(c, a, b), skip/Skip).  Names may carry GenCase's '#' marker, which is
+ * dropped.  Every node is located at loc; errors name `what` (e.g. "<expression>
+ * attribute 'value'") and the position in the text.  Returns NULL after reporting. */
+Expr *xml_parse_expr(const char *text, SrcLoc loc, const char *what);
+/* Evaluates a constant expression of the <newvar> variables (names[i] = values[i]).
+ * Returns 0 or -1 after reporting (unknown name, function, a particle variable, skip). */
+int xml_eval(const Expr *e, char *const *names, const double *values, int n, const char *what,
+             double *out);
+/* Renames the variables called from (not functions) to to, in place. */
+void xml_rename(Expr *e, const char *from, const char *to);
+
+/* ---------------------------------------------------------------- sections */
+
+int xml_constants(XmlCtx *x, const xmlNode *constantsdef);
+int xml_parameters(XmlCtx *x, const xmlNode *parameters);
+/* A scene setting with one value (a number or a word such as wendland). */
+void xml_scene_number(XmlCtx *x, SrcLoc loc, const char *key, double v);
+void xml_scene_word(XmlCtx *x, SrcLoc loc, const char *key, const char *word);
+/* The scene settings in the order a .sph scene lists them. */
+SettingList xml_scene_settings(const XmlCtx *x);
+
+int xml_geometry(XmlCtx *x, const xmlNode *geometry);
+/* Whether some <drawbox> was drawn with mk. */
+int xml_mk_drawn(const XmlCtx *x, int mk);
+/* The sph shape of the particles GenCase gives mk: its boxes in drawing order, less what
+ * later drawings of other mks take over. */
+ShapeExpr *xml_mk_shape(const XmlCtx *x, int mk, SrcLoc loc);
+/* Bounding box of mk's boxes as sph volumes (node -/+ dp/2). */
+void xml_mk_bbox(const XmlCtx *x, int mk, double lo[3], double hi[3]);
+
+int xml_mathexpressions(XmlCtx *x, const xmlNode *mathexpressions);
+const XmlUserExpr *xml_user_expr(const XmlCtx *x, long id);
+
+int xml_deformstrucs(XmlCtx *x, const xmlNode *deformstrucs);
+
+/* Cards of one body that become body items (xml_bc.c).  mk is the body's own mk;
+ * refine its mapfac (for the measurement-plane rule). */
+int xml_bc(XmlCtx *x, const xmlNode *n, int mk, BodyDecl *body);
+int xml_measureplane(XmlCtx *x, const xmlNode *n, int mk, int refine, BodyDecl *body);
+
+#endif

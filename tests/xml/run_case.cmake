@@ -1,0 +1,85 @@
+# run_case.cmake — an XML case imports, compiles and runs a few steps.
+#
+#   cmake -DSPHC=sphc -DXML=case.xml -DWORKDIR=dir [-DMAPFACS=1,2,4 -DPARTICLES=a,b,c]
+#         [-DEND=1e-5] [-DRUN=OFF] [-DDUMP_CONTAINS=text|text] [-DDUMP_STAGE=ast]
+#         -P run_case.cmake
+#
+# For each mapfac in MAPFACS (default: the case as written) the case is copied with its
+# <mapfac> values replaced, compiled with sphc, and (unless RUN=OFF) run with --end END;
+# it must exit 0 and its summary.json must give the matching number of PARTICLES.
+# DUMP_CONTAINS: texts (separated by |) that `sphc --dump=DUMP_STAGE` must print (default
+# stage: model), e.g. the imported box or measurement plane.
+
+foreach(var SPHC XML WORKDIR)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "run_case.cmake: -D${var}=... is required")
+  endif()
+endforeach()
+if(NOT DEFINED END)
+  set(END 1e-5)
+endif()
+if(NOT DEFINED RUN)
+  set(RUN ON)
+endif()
+string(REPLACE "," ";" MAPFACS "${MAPFACS}")
+string(REPLACE "," ";" PARTICLES "${PARTICLES}")
+if(NOT MAPFACS)
+  set(MAPFACS "asis")
+endif()
+
+get_filename_component(stem "${XML}" NAME_WE)
+file(REMOVE_RECURSE "${WORKDIR}")
+file(MAKE_DIRECTORY "${WORKDIR}")
+file(READ "${XML}" text)
+
+if(DEFINED DUMP_CONTAINS)
+  if(NOT DEFINED DUMP_STAGE)
+    set(DUMP_STAGE model)
+  endif()
+  execute_process(COMMAND "${SPHC}" --dump=${DUMP_STAGE} "${XML}" RESULT_VARIABLE rc
+                  OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(REPLACE "|" ";" wanted "${DUMP_CONTAINS}")
+  foreach(text IN LISTS wanted)
+    string(FIND "${out}" "${text}" at)
+    if(NOT rc EQUAL 0 OR at EQUAL -1)
+      message(FATAL_ERROR "sphc --dump=${DUMP_STAGE} ${XML} (exit ${rc}) does not print "
+                          "'${text}':\n${out}\n${err}")
+    endif()
+  endforeach()
+endif()
+
+set(index 0)
+foreach(mapfac IN LISTS MAPFACS)
+  set(name "${stem}_${mapfac}")
+  set(copy "${text}")
+  if(NOT mapfac STREQUAL "asis")
+    string(REGEX REPLACE "<mapfac value=\"[0-9]+\"" "<mapfac value=\"${mapfac}\"" copy "${copy}")
+  endif()
+  file(WRITE "${WORKDIR}/${name}.xml" "${copy}")
+  execute_process(COMMAND "${SPHC}" -o "${WORKDIR}/${name}" "${WORKDIR}/${name}.xml"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "sphc ${name}.xml failed (exit ${rc}):\n${out}\n${err}")
+  endif()
+  if(RUN)
+    execute_process(COMMAND "${WORKDIR}/${name}" --quiet --threads 1 --end ${END}
+                            --out "${WORKDIR}/${name}_out"
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "${name} --end ${END} failed (exit ${rc}):\n${out}\n${err}")
+    endif()
+    file(READ "${WORKDIR}/${name}_out/summary.json" summary)
+    string(REGEX MATCH "\"particles\": ([0-9]+)" found "${summary}")
+    set(particles "${CMAKE_MATCH_1}")
+    string(REGEX MATCH "\"steps\": ([0-9]+)" found "${summary}")
+    message(STATUS "${name}: ${particles} particles, ${CMAKE_MATCH_1} steps")
+    list(LENGTH PARTICLES nexpected)
+    if(index LESS nexpected)
+      list(GET PARTICLES ${index} expected)
+      if(NOT particles EQUAL expected)
+        message(FATAL_ERROR "${name}: ${particles} particles, expected ${expected}")
+      endif()
+    endif()
+  endif()
+  math(EXPR index "${index} + 1")
+endforeach()

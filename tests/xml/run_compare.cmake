@@ -1,0 +1,86 @@
+# run_compare.cmake — an XML case and its hand-written .sph model give the same run.
+#
+#   cmake -DSPHC=sphc -DXML=case.xml -DSPH=case.sph -DWORKDIR=dir -DEND=T -DEVERY=T
+#         [-DMAPFAC=1] -P run_compare.cmake
+#
+# Both are compiled at the same refinement (<mapfac> of the XML and `refine` of the model
+# set to MAPFAC), run on one thread to END with an output every EVERY, and must agree:
+# particles and steps in summary.json, and energies.csv and the one measurement file
+# line for line (the header lines name the bodies and differ).
+
+foreach(var SPHC XML SPH WORKDIR END EVERY)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "run_compare.cmake: -D${var}=... is required")
+  endif()
+endforeach()
+if(NOT DEFINED MAPFAC)
+  set(MAPFAC 1)
+endif()
+file(REMOVE_RECURSE "${WORKDIR}")
+file(MAKE_DIRECTORY "${WORKDIR}")
+
+file(READ "${XML}" text)
+string(REGEX REPLACE "<mapfac value=\"[0-9]+\"" "<mapfac value=\"${MAPFAC}\"" text "${text}")
+file(WRITE "${WORKDIR}/from_xml.xml" "${text}")
+file(READ "${SPH}" text)
+string(REGEX REPLACE "refine [0-9]+" "refine ${MAPFAC}" text "${text}")
+file(WRITE "${WORKDIR}/from_sph.sph" "${text}")
+
+foreach(name from_xml from_sph)
+  if(name STREQUAL "from_xml")
+    set(src "${WORKDIR}/from_xml.xml")
+  else()
+    set(src "${WORKDIR}/from_sph.sph")
+  endif()
+  execute_process(COMMAND "${SPHC}" -o "${WORKDIR}/${name}" "${src}"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "sphc ${src} failed (exit ${rc}):\n${out}\n${err}")
+  endif()
+  execute_process(COMMAND "${WORKDIR}/${name}" --quiet --threads 1 --end ${END} --every ${EVERY}
+                          --out "${WORKDIR}/${name}_out"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${name} failed (exit ${rc}):\n${out}\n${err}")
+  endif()
+endforeach()
+
+# summary.json: particles and steps
+foreach(key particles steps)
+  set(values "")
+  foreach(name from_xml from_sph)
+    file(READ "${WORKDIR}/${name}_out/summary.json" summary)
+    string(REGEX MATCH "\"${key}\": ([0-9]+)" found "${summary}")
+    list(APPEND values "${CMAKE_MATCH_1}")
+  endforeach()
+  list(GET values 0 a)
+  list(GET values 1 b)
+  if(NOT a STREQUAL b OR a STREQUAL "")
+    message(FATAL_ERROR "${key}: ${a} from the XML case, ${b} from the .sph model")
+  endif()
+  message(STATUS "${key}: ${a} from both")
+endforeach()
+
+# Two CSV files agree row for row, header lines aside.
+function(same_rows a b)
+  file(STRINGS "${a}" rows_a)
+  file(STRINGS "${b}" rows_b)
+  list(REMOVE_AT rows_a 0)
+  list(REMOVE_AT rows_b 0)
+  list(LENGTH rows_a n)
+  if(n LESS 3 OR NOT rows_a STREQUAL rows_b)
+    message(FATAL_ERROR "${a} and ${b} differ (or have fewer than 3 rows)")
+  endif()
+  get_filename_component(name "${a}" NAME)
+  message(STATUS "${name}: ${n} rows, the same")
+endfunction()
+
+same_rows("${WORKDIR}/from_xml_out/energies.csv" "${WORKDIR}/from_sph_out/energies.csv")
+file(GLOB xml_measure "${WORKDIR}/from_xml_out/measure_*.csv")
+file(GLOB sph_measure "${WORKDIR}/from_sph_out/measure_*.csv")
+list(LENGTH xml_measure nx)
+list(LENGTH sph_measure ns)
+if(NOT nx EQUAL 1 OR NOT ns EQUAL 1)
+  message(FATAL_ERROR "expected one measurement file from each run: ${xml_measure} ${sph_measure}")
+endif()
+same_rows("${xml_measure}" "${sph_measure}")

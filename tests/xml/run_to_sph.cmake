@@ -1,0 +1,54 @@
+# run_to_sph.cmake — `sphc --to-sph` of an XML case is a model that checks to the same
+# model as the case itself.
+#
+#   cmake -DSPHC=sphc -DXML=dir/case.xml -DWORKDIR=dir [-DGOLDEN=case.sph.golden]
+#         -P run_to_sph.cmake
+#
+# The printed model is written to WORKDIR/case.sph; `sphc --dump=model` of both must agree
+# except for the first line (model name and file) and the source lines of statements.
+# GOLDEN: the printed model must equal this file (sphc runs in the case's folder, so the
+# first line names the case without folders).
+
+foreach(var SPHC XML WORKDIR)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "run_to_sph.cmake: -D${var}=... is required")
+  endif()
+endforeach()
+get_filename_component(dir "${XML}" DIRECTORY)
+get_filename_component(file "${XML}" NAME)
+get_filename_component(stem "${XML}" NAME_WE)
+file(MAKE_DIRECTORY "${WORKDIR}")
+set(model "${WORKDIR}/${stem}.sph")
+
+execute_process(COMMAND "${SPHC}" --to-sph "${file}" WORKING_DIRECTORY "${dir}"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE printed ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "sphc --to-sph ${file} failed (exit ${rc}):\n${err}")
+endif()
+file(WRITE "${model}" "${printed}")
+
+function(dump src result)
+  execute_process(COMMAND "${SPHC}" --dump=model "${src}"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "sphc --dump=model ${src} failed (exit ${rc}):\n${err}")
+  endif()
+  string(REGEX REPLACE "^[^\n]*\n" "" out "${out}")
+  string(REGEX REPLACE " \\(line [0-9]+\\)" "" out "${out}")
+  set(${result} "${out}" PARENT_SCOPE)
+endfunction()
+
+dump("${XML}" from_xml)
+dump("${model}" from_sph)
+if(NOT from_xml STREQUAL from_sph)
+  message(FATAL_ERROR "the printed model differs from the case:\n--- case:\n${from_xml}\n"
+                      "--- printed (${model}):\n${from_sph}")
+endif()
+
+if(DEFINED GOLDEN)
+  file(READ "${GOLDEN}" expected)
+  if(NOT printed STREQUAL expected)
+    message(FATAL_ERROR "sphc --to-sph ${file} differs from ${GOLDEN}:\n${printed}")
+  endif()
+endif()
+message(STATUS "${file}: the printed model checks to the same model")
