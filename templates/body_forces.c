@@ -7,10 +7,7 @@ static void @B@_gradient_pass(sph_body *b)
     enum { D = @DIM@ };
     const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
     const double *restrict wtab = b->wtab, *restrict u = b->u;
-    double *restrict A = b->A;
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < b->n * D * D; i++)
-        A[i] = 0;
+    double *restrict A = b->A; /* zero on entry: the stress pass clears what it read */
     for (int colour = 0; colour < 2; colour++) {
 #pragma omp parallel for schedule(dynamic, 1)
         for (int s = colour; s < b->nstripes; s += 2)
@@ -40,7 +37,8 @@ static void @B@_stress_pass(sph_body *b)
 {
     enum { D = @DIM@ };
     const int n = b->n;
-    const double *restrict Ac = b->A, *restrict Lc = b->L;
+    double *restrict Ac = b->A;
+    const double *restrict Lc = b->L;
     double *restrict Fs = b->F, *restrict Q = b->Q, *restrict psi = b->psi;
 //@if VISCOSITY
     double *restrict Cv = b->Cv;
@@ -48,7 +46,11 @@ static void @B@_stress_pass(sph_body *b)
     @B@_gradient_pass(b);
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; i++) {
-        const double *A = Ac + (size_t)i * D * D;
+        double A[D * D];
+        for (int k = 0; k < D * D; k++) {
+            A[k] = Ac[(size_t)i * D * D + k];
+            Ac[(size_t)i * D * D + k] = 0; /* ready for the next step's gradient pass */
+        }
         const double *L = Lc + (size_t)i * D * D;
         double F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
         for (int r = 0; r < D; r++)
@@ -61,8 +63,10 @@ static void @B@_stress_pass(sph_body *b)
         double S[9], e;
         @B@_material(F, S, &e);
         psi[i] = e;
-        for (int k = 0; k < 9; k++)
-            Fs[(size_t)i * 9 + k] = F[k];
+        for (int r = 0; r < D; r++) /* the out-of-plane entries of a 2D F never change */
+            for (int c = 0; c < D; c++)
+                Fs[(size_t)i * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] =
+                    F[sph_axis(D, r) * 3 + sph_axis(D, c)];
         /* P = F S (eq. 2), in-plane block, then Q = P L */
         double P[D * D];
         for (int r = 0; r < D; r++)
