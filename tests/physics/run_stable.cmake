@@ -1,0 +1,21 @@
+# A run that must end stable: -DPROGRAM= -DOUT=
+# Checked: exit code 0, "verdict": "stable" in summary.json, and every value in every CSV
+# file finite (no nan or inf written).
+execute_process(COMMAND ${PROGRAM} --quiet --out ${OUT} RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "exit code ${rc} (expected 0); stderr:\n${err}")
+endif()
+file(READ ${OUT}/summary.json summary)
+if(NOT summary MATCHES "\"verdict\": \"stable\"")
+  message(FATAL_ERROR "summary.json does not say stable:\n${summary}")
+endif()
+file(GLOB csvs ${OUT}/*.csv)
+foreach(csv ${csvs})
+  file(READ ${csv} text)
+  string(TOLOWER "${text}" lower)
+  if(lower MATCHES "nan|inf")
+    message(FATAL_ERROR "${csv} holds a non-finite value")
+  endif()
+endforeach()
+string(REGEX MATCH "\"steps\": ([0-9]+)" _ "${summary}")
+message(STATUS "stable after ${CMAKE_MATCH_1} steps; CSV files finite")
