@@ -160,6 +160,13 @@ Setting ast_setting(SrcLoc loc, const char *key, Expr *value)
     return s;
 }
 
+Setting ast_setting_text(SrcLoc loc, const char *key, const char *text)
+{
+    Setting s = ast_setting(loc, key, NULL);
+    s.text = ast_strdup(text);
+    return s;
+}
+
 ShapeExpr *ast_shape_prim(NamedCall call)
 {
     ShapeExpr *s = ast_alloc(sizeof *s);

@@ -45,12 +45,14 @@ struct Expr {
 };
 
 /* "key value" pair: scene settings, body settings, named arguments of a call
- * such as box(from [..] to [..]) or svk(density 1000, shear 0.7e6). */
+ * such as box(from [..] to [..]) or svk(density 1000, shear 0.7e6).  A named argument may
+ * be a string instead, surface(file "beam.vtk"): then text is set and nvalues is 0. */
 typedef struct {
     char *key;
     SrcLoc loc;
     Expr **values; /* one or more, comma separated in the source */
     int nvalues;
+    char *text;    /* a string value (without its quotes), or NULL */
 } Setting;
 
 typedef struct {
@@ -107,7 +109,7 @@ typedef struct ShapeExpr ShapeExpr;
 struct ShapeExpr {
     char op;           /* 0 = primitive, '+' = union, '-' = difference */
     SrcLoc loc;
-    NamedCall prim;    /* op == 0: box(...), cylinder(...), sphere(...) */
+    NamedCall prim;    /* op == 0: box(...), cylinder(...), sphere(...), surface(...) */
     ShapeExpr *lhs, *rhs;
 };
 
@@ -200,6 +202,7 @@ typedef struct {
     Item *items;
     int n;
     const char *file;    /* main model file */
+    int from_xml;        /* imported from a SoliDualSPHysics case file (xml_import) */
 } Program;
 
 /* ---------------------------------------------------------------- construction (ast.c) */
@@ -238,6 +241,8 @@ char *ast_strdup(const char *s);
 /* A setting / named argument with its first value; further values are added
  * with ast_push_expr(&s.values, &s.nvalues, e). */
 Setting ast_setting(SrcLoc loc, const char *key, Expr *value);
+/* A named argument whose value is a string. */
+Setting ast_setting_text(SrcLoc loc, const char *key, const char *text);
 /* Shapes: a primitive, or lhs op rhs with op '+' (union) or '-' (difference). */
 ShapeExpr *ast_shape_prim(NamedCall call);
 ShapeExpr *ast_shape_op(SrcLoc loc, char op, ShapeExpr *lhs, ShapeExpr *rhs);

@@ -77,6 +77,8 @@ void ast_dump_expr(const Expr *e, FILE *out)
 static void dump_setting(const Setting *s, FILE *out)
 {
     fprintf(out, "(%s", s->key);
+    if (s->text)
+        fprintf(out, " \"%s\"", s->text);
     for (int i = 0; i < s->nvalues; i++) {
         fputc(' ', out);
         ast_dump_expr(s->values[i], out);

@@ -314,6 +314,7 @@ int check_program(const Program *p, Model *m)
     memset(m, 0, sizeof *m);
     m->name = name;
     m->source = p->file;
+    m->compat_outputs = p->from_xml;
     scene_defaults(m);
     allocate(m, p);
     int bad = check_definitions(m, p);

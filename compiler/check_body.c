@@ -1,11 +1,15 @@
 /* check_body.c — checking a body: its shape, material, settings, boundary conditions and
  * measurement planes. */
+#define _XOPEN_SOURCE 700 /* realpath */
+#include <limits.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
 #include "diag.h"
+#include "mesh.h"
 
 /* ------------------------------------------------------------------ shapes */
 
@@ -17,12 +21,25 @@ static const Setting *find_arg(const NamedCall *c, const char *key)
     return NULL;
 }
 
-/* Every argument must be one of `allowed`, given once, with one value. */
+/* Every argument must be one of `allowed`, given once, with one value: a string for
+ * `file`, numbers or vectors otherwise. */
 static int check_arg_names(const NamedCall *c, const char *const *allowed, int nallowed)
 {
     int bad = 0;
     for (int i = 0; i < c->args.n; i++) {
         const Setting *s = &c->args.items[i];
+        int is_file = strcmp(s->key, "file") == 0;
+        if (s->text && !is_file) {
+            diag_error(s->loc, "argument '%s' of %s() takes a number, not a string", s->key,
+                       c->name);
+            bad = 1;
+            continue;
+        }
+        if (is_file && !s->text) {
+            diag_error(s->loc, "argument 'file' of %s() takes a file name in quotes", c->name);
+            bad = 1;
+            continue;
+        }
         int ok = 0;
         for (int k = 0; k < nallowed; k++)
             ok |= strcmp(s->key, allowed[k]) == 0;
@@ -35,7 +52,7 @@ static int check_arg_names(const NamedCall *c, const char *const *allowed, int n
                 diag_error(s->loc, "argument '%s' of %s() given twice", s->key, c->name);
                 bad = 1;
             }
-        if (s->nvalues != 1) {
+        if (!s->text && s->nvalues != 1) {
             diag_error(s->loc, "argument '%s' takes one value", s->key);
             bad = 1;
         }
@@ -95,6 +112,51 @@ static int check_box(const Model *m, const NamedCall *c, ShapePrim *p)
     return 0;
 }
 
+/* The file name of a surface, relative to the file that names it (as written when that one
+ * lies in the current folder). */
+static char *beside(const char *source, const char *name)
+{
+    const char *slash = source ? strrchr(source, '/') : NULL;
+    if (name[0] == '/' || !slash)
+        return strdup(name);
+    size_t n = (size_t)(slash - source) + 1;
+    char *path = malloc(n + strlen(name) + 1);
+    memcpy(path, source, n);
+    strcpy(path + n, name);
+    return path;
+}
+
+/* surface(file "name"): a closed surface from a VTK or STL file (runtime/mesh.h), read and
+ * checked now and read again by the program, which gets its absolute path. */
+static int check_surface(const NamedCall *c, ShapePrim *p)
+{
+    static const char *const args[] = {"file"};
+    p->kind = SHAPE_SURFACE;
+    if (check_arg_names(c, args, 1))
+        return -1;
+    const Setting *s = find_arg(c, "file");
+    if (!s) {
+        diag_error(c->loc, "surface() needs 'file', the name of a VTK or STL file");
+        return -1;
+    }
+    char *path = beside(s->loc.file, s->text), err[1024], full[PATH_MAX];
+    sph_mesh mesh;
+    if (sph_mesh_load(path, &mesh, err, sizeof err)) {
+        diag_error(s->loc, "%s", err);
+        free(path);
+        return -1;
+    }
+    for (int k = 0; k < 3; k++) {
+        p->a[k] = mesh.lo[k];
+        p->b[k] = mesh.hi[k];
+    }
+    p->volume = mesh.volume;
+    p->file = realpath(path, full) ? strdup(full) : strdup(path);
+    sph_mesh_free(&mesh);
+    free(path);
+    return 0;
+}
+
 static int check_prim(const Model *m, const NamedCall *c, ShapePrim *p)
 {
     memset(p, 0, sizeof *p);
@@ -116,7 +178,9 @@ static int check_prim(const Model *m, const NamedCall *c, ShapePrim *p)
             return -1;
         return 0;
     }
-    diag_error(c->loc, "unknown shape '%s' (expected box, cylinder or sphere)", c->name);
+    if (strcmp(c->name, "surface") == 0)
+        return check_surface(c, p);
+    diag_error(c->loc, "unknown shape '%s' (expected box, cylinder, sphere or surface)", c->name);
     return -1;
 }
 
@@ -186,6 +250,10 @@ static int material_arg(const Model *m, const Setting *s, ElasticInput *el, Body
                         const MaterialDef *law, int *has_density)
 {
     double v;
+    if (s->text) {
+        diag_error(s->loc, "argument '%s' takes a number, not a string", s->key);
+        return -1;
+    }
     if (s->nvalues != 1) {
         diag_error(s->loc, "argument '%s' takes one value", s->key);
         return -1;
@@ -306,6 +374,19 @@ static int check_hourglass(const Model *m, const Setting *s, BodyModel *b)
     return 0;
 }
 
+/* lattice [x, y, z]: a cell corner of the particle lattice (docs/language.md). */
+static int check_lattice(const Model *m, const Setting *s, BodyModel *b)
+{
+    if (s->nvalues != 1) {
+        diag_error(s->loc, "'lattice' takes one point, a corner of the lattice's cells");
+        return -1;
+    }
+    if (check_vec3(m, s->values[0], "lattice", b->lattice))
+        return -1;
+    b->has_lattice = 1;
+    return 0;
+}
+
 static int check_setting(const Model *m, const Setting *s, BodyModel *b)
 {
     if (!strcmp(s->key, "refine"))
@@ -316,8 +397,10 @@ static int check_setting(const Model *m, const Setting *s, BodyModel *b)
         return check_viscosity(m, s, b);
     if (!strcmp(s->key, "hourglass"))
         return check_hourglass(m, s, b);
-    diag_error(s->loc, "unknown body setting '%s' (expected refine, nbsrange, viscosity or "
-                       "hourglass)",
+    if (!strcmp(s->key, "lattice"))
+        return check_lattice(m, s, b);
+    diag_error(s->loc, "unknown body setting '%s' (expected refine, nbsrange, viscosity, "
+                       "hourglass or lattice)",
                s->key);
     return -1;
 }

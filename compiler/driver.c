@@ -94,10 +94,10 @@ static int import_module(const Item *it, const char *model_dir, const Paths *pat
     return parse_file(strdup(path), prog);
 }
 
-int load_program(const char *path, const Paths *paths, Program *prog)
+int load_program(const char *path, const Paths *paths, const XmlOptions *xml, Program *prog)
 {
     prog->file = path;
-    int errors = xml_is_case_file(path) ? xml_import(path, prog) : parse_file(path, prog);
+    int errors = xml_is_case_file(path) ? xml_import(path, xml, prog) : parse_file(path, prog);
     char *dir = strdup(path);
     char *slash = strrchr(dir, '/');
     if (slash)

@@ -4,6 +4,7 @@
 
 #include "ast.h"
 #include "model.h"
+#include "xml.h"
 
 typedef struct {
     const char *input;
@@ -14,6 +15,8 @@ typedef struct {
     int check_only;
     int emit_only;         /* --emit-only: write the C source (to --emit-c DIR) and stop */
     int to_sph;            /* --to-sph: print the model as .sph and stop */
+    XmlOptions xml;        /* --xml-*: how an XML case is read */
+    int xml_options_given; /* some --xml-* option was given (an error for a .sph model) */
 } Options;
 
 typedef struct {
@@ -27,9 +30,9 @@ typedef struct {
  * then the source and build trees sphc was built from; SPHC_HOME overrides both. */
 int find_paths(const char *argv0, Paths *p);
 
-/* Parse the model (a .sph file, or a SoliDualSPHysics .xml case through the importer) and
- * every module it imports (stdlib/NAME.sph or NAME.sph beside it). */
-int load_program(const char *path, const Paths *paths, Program *prog);
+/* Parse the model (a .sph file, or a SoliDualSPHysics .xml case through the importer, read
+ * with the options xml) and every module it imports (stdlib/NAME.sph or NAME.sph beside it). */
+int load_program(const char *path, const Paths *paths, const XmlOptions *xml, Program *prog);
 
 /* Emit C, compile and link the executable. */
 int build_program(const Model *m, const Options *o, const Paths *paths);

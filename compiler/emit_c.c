@@ -301,15 +301,34 @@ static void scene_step(Emitter *E)
     fputs("}\n\n", out);
 }
 
+/* A C string literal. */
+static void c_string(FILE *out, const char *s)
+{
+    fputc('"', out);
+    for (; *s; s++)
+        if (*s == '"' || *s == '\\')
+            fprintf(out, "\\%c", *s);
+        else if ((unsigned char)*s < 0x20 || (unsigned char)*s >= 0x7f)
+            fprintf(out, "\\%03o", (unsigned char)*s);
+        else
+            fputc(*s, out);
+    fputc('"', out);
+}
+
 static void region(Emitter *E, const char *name, const Region *r)
 {
-    static const char *const kinds[] = {"SPH_BOX", "SPH_CYLINDER", "SPH_SPHERE"};
+    static const char *const kinds[] = {"SPH_BOX", "SPH_CYLINDER", "SPH_SPHERE", "SPH_MESH"};
     fprintf(E->out, "static const sph_shape %s[] = {\n", name);
     for (int k = 0; k < r->n; k++) {
         const ShapePrim *s = &r->prims[k];
-        fprintf(E->out, "    {%s, {%.17g, %.17g, %.17g}, {%.17g, %.17g, %.17g}, %.17g, %d},\n",
+        fprintf(E->out, "    {%s, {%.17g, %.17g, %.17g}, {%.17g, %.17g, %.17g}, %.17g, %d, ",
                 kinds[s->kind], s->a[0], s->a[1], s->a[2], s->b[0], s->b[1], s->b[2], s->r,
                 s->subtract);
+        if (s->file)
+            c_string(E->out, s->file);
+        else
+            fputs("NULL", E->out);
+        fputs("},\n", E->out);
     }
     fputs("};\n", E->out);
 }
@@ -329,9 +348,10 @@ static void body_desc_arrays(Emitter *E, const BodyModel *b)
         fprintf(out, "static const sph_bc_desc %s_bcs[] = {\n", b->name);
         for (int k = 0; k < b->nbcs; k++)
             if (b->bcs[k].has_near)
-                fprintf(out, "    {1, {%s_near%d, %d}},\n", b->name, k, b->bcs[k].near.n);
+                fprintf(out, "    {1, {%s_near%d, %d, 0, {0, 0, 0}}},\n", b->name, k,
+                        b->bcs[k].near.n);
             else
-                fputs("    {0, {NULL, 0}},\n", out);
+                fputs("    {0, {NULL, 0, 0, {0, 0, 0}}},\n", out);
         fputs("};\n", out);
     }
     if (b->nmeasures) {
@@ -352,7 +372,7 @@ static void body_desc_arrays(Emitter *E, const BodyModel *b)
 static double plane_y(const BodyModel *b)
 {
     const ShapePrim *s = &b->region.prims[0];
-    return s->kind == SHAPE_BOX ? 0.5 * (s->a[1] + s->b[1]) : s->a[1];
+    return s->kind == SHAPE_BOX || s->kind == SHAPE_SURFACE ? 0.5 * (s->a[1] + s->b[1]) : s->a[1];
 }
 
 static void bodies_desc(Emitter *E)
@@ -363,8 +383,11 @@ static void bodies_desc(Emitter *E)
     fputs("static const sph_body_desc BODIES[] = {\n", E->out);
     for (int i = 0; i < m->nbodies; i++) {
         const BodyModel *b = &m->bodies[i];
-        fprintf(E->out, "    {\"%s\", {%s_shape, %d}, %d, %d, %.17g, %.17g, %.17g, ", b->name, b->name,
-                b->region.n, b->refine, b->nbsrange, b->rho0, b->c0, m->dim == 2 ? plane_y(b) : 0.0);
+        fprintf(E->out, "    {\"%s\", {%s_shape, %d, %d, {%.17g, %.17g, %.17g}}, %d, %d, %.17g, "
+                        "%.17g, %.17g, ",
+                b->name, b->name, b->region.n, b->has_lattice, b->lattice[0], b->lattice[1],
+                b->lattice[2], b->refine, b->nbsrange, b->rho0, b->c0,
+                m->dim == 2 ? plane_y(b) : 0.0);
         if (b->nbcs)
             fprintf(E->out, "%s_bcs, %d, ", b->name, b->nbcs);
         else
@@ -423,6 +446,7 @@ static void model_desc(Emitter *E)
             "    .dtmin_coef = %.17g,\n    .dt_fixed = %.17g,\n    .t_end = %.17g,\n"
             "    .t_out = %.17g,\n    .gravity = {%.17g, %.17g, %.17g},\n"
             "    .bodies = BODIES,\n    .nbodies = %d,\n    .expects = %s,\n    .nexpects = %d,\n"
+            "    .compat_outputs = %d,\n"
             "    .velocity_bcs = model_velocity_bcs,\n    .step = model_step,\n"
             "    .stress_output = model_stress_output,\n};\n\n"
             "int main(int argc, char **argv)\n{\n    return sph_main(&MODEL, argc, argv);\n}\n",
@@ -430,7 +454,7 @@ static void model_desc(Emitter *E)
             m->kernel == KERNEL_WENDLAND ? "SPH_WENDLAND" : "SPH_CUBIC", m->coefh,
             m->integrator == INTEGRATOR_VERLET ? "SPH_VERLET" : "SPH_SYMPLECTIC", m->cfl, m->dtmin,
             m->dt, m->t_end, m->t_out, m->gravity[0], m->gravity[1], m->gravity[2], m->nbodies,
-            m->nexpects ? "EXPECTS" : "NULL", m->nexpects);
+            m->nexpects ? "EXPECTS" : "NULL", m->nexpects, m->compat_outputs);
 }
 
 int emit_c_program(const Model *m, const char *templates_dir, FILE *out)

@@ -1,7 +1,7 @@
 /* main.c — the sphc driver: options, stages, and the call to the C compiler.
  *
  *   sphc [-o NAME] [--target cpu|cuda] [--emit-c DIR] [--dump=ast|model|plan] [--check]
- *        [--to-sph] FILE
+ *        [--to-sph] [--xml-elastic2d=3d|sdsph] [--xml-fill=volume|gencase] FILE
  *
  * FILE is an .sph model or a SoliDualSPHysics case (.xml), which the importer (xml_*.c)
  * turns into the same syntax tree; --to-sph prints that tree as an .sph model.
@@ -19,11 +19,13 @@
 #include "emit.h"
 #include "model.h"
 #include "sph_print.h"
+#include "xml.h"
 
 static void usage(FILE *f)
 {
     fputs("usage: sphc [-o NAME] [--target cpu|cuda] [--emit-c DIR] [--dump=ast|model|plan]\n"
-          "            [--check] [--to-sph] FILE\n"
+          "            [--check] [--to-sph] [--xml-elastic2d=3d|sdsph]\n"
+          "            [--xml-fill=volume|gencase] FILE\n"
           "Compiles a model (FILE.sph, or a SoliDualSPHysics case FILE.xml) into an\n"
           "executable (named after FILE unless -o is given).\n"
           "  -o NAME          name of the executable\n"
@@ -34,8 +36,61 @@ static void usage(FILE *f)
           "  --check          check the model only\n"
           "  --to-sph         check the model and print it as an .sph model (to convert an\n"
           "                   XML case once: sphc --to-sph Case_Def.xml > case.sph)\n"
+          "  --xml-elastic2d=3d|sdsph\n"
+          "                   elastic constants of a 2D XML case: 3D constants (default) or,\n"
+          "                   as SoliDualSPHysics reads them, those of 2D elasticity (u_bulk =\n"
+          "                   lambda + mu); see docs/xml.md\n"
+          "  --xml-fill=volume|gencase\n"
+          "                   particles of an XML case's cylinders and surfaces: cell centres\n"
+          "                   inside the shape, which keep its volume (default), or where\n"
+          "                   GenCase puts them; see docs/xml.md\n"
           "  --version        print the version\n",
           f);
+}
+
+/* "--NAME=VALUE" or "--NAME VALUE" (then *i moves past VALUE): the value, or NULL. */
+static const char *option_value(const char *arg, const char *name, const char *next, int *i)
+{
+    size_t n = strlen(name);
+    if (strncmp(arg, name, n))
+        return NULL;
+    if (arg[n] == '=')
+        return arg + n + 1;
+    if (arg[n] == '\0' && next) {
+        (*i)++;
+        return next;
+    }
+    return NULL;
+}
+
+/* One of two values a and b for option name: 0 for a, 1 for b, -1 after reporting. */
+static int choice(const char *name, const char *v, const char *a, const char *b)
+{
+    if (!strcmp(v, a) || !strcmp(v, b))
+        return !strcmp(v, b);
+    diag_fatal_noloc("unknown value '%s' for %s (expected %s or %s)", v, name, a, b);
+    return -1;
+}
+
+/* The options that choose how an XML case is read (docs/xml.md). */
+static int xml_option(Options *o, const char *arg, const char *next, int *i)
+{
+    const char *v;
+    int c;
+    if ((v = option_value(arg, "--xml-elastic2d", next, i))) {
+        if ((c = choice("--xml-elastic2d", v, "3d", "sdsph")) < 0)
+            return -1;
+        o->xml.elastic2d_sdsph = c;
+    } else if ((v = option_value(arg, "--xml-fill", next, i))) {
+        if ((c = choice("--xml-fill", v, "volume", "gencase")) < 0)
+            return -1;
+        o->xml.fill_gencase = c;
+    } else {
+        diag_fatal_noloc("unknown option '%s' (see sphc --help)", arg);
+        return -1;
+    }
+    o->xml_options_given = 1;
+    return 0;
 }
 
 static int parse_args(int argc, char **argv, Options *o)
@@ -68,6 +123,9 @@ static int parse_args(int argc, char **argv, Options *o)
             o->check_only = 1;
         } else if (!strcmp(a, "--to-sph")) {
             o->to_sph = 1;
+        } else if (!strncmp(a, "--xml-", 6)) {
+            if (xml_option(o, a, i + 1 < argc ? argv[i + 1] : NULL, &i))
+                return -1;
         } else if (a[0] == '-' && a[1]) {
             diag_fatal_noloc("unknown option '%s' (see sphc --help)", a);
             return -1;
@@ -88,6 +146,11 @@ static int parse_args(int argc, char **argv, Options *o)
     }
     if (o->emit_only && !o->emit_dir) {
         diag_fatal_noloc("--emit-only needs --emit-c DIR");
+        return -1;
+    }
+    if (o->xml_options_given && !xml_is_case_file(o->input)) {
+        diag_fatal_noloc("the --xml-* options apply to SoliDualSPHysics case files (.xml), not "
+                         "to '%s'", o->input);
         return -1;
     }
     if (o->dump && strcmp(o->dump, "ast") && strcmp(o->dump, "model") && strcmp(o->dump, "plan")) {
@@ -121,7 +184,7 @@ int main(int argc, char **argv)
     if (find_paths(argv[0], &paths))
         return 1;
     Program prog = {0};
-    if (load_program(o.input, &paths, &prog))
+    if (load_program(o.input, &paths, &o.xml, &prog))
         return 1;
     if (o.dump && !strcmp(o.dump, "ast")) {
         ast_dump(&prog, stdout);

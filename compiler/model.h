@@ -7,12 +7,14 @@
 
 #include "ast.h"
 
-typedef enum { SHAPE_BOX, SHAPE_CYLINDER, SHAPE_SPHERE } ShapeKind;
+typedef enum { SHAPE_BOX, SHAPE_CYLINDER, SHAPE_SPHERE, SHAPE_SURFACE } ShapeKind;
 
 typedef struct {
     ShapeKind kind;
-    double a[3], b[3], r;
+    double a[3], b[3], r;   /* as sph_shape (runtime/sphrt.h); a surface: its bounding box */
     int subtract;
+    char *file;             /* surface: the file, absolute (read by the program at run time) */
+    double volume;          /* surface: the volume it encloses */
 } ShapePrim;
 
 typedef struct {
@@ -62,6 +64,8 @@ typedef struct {
     double c0;                     /* eq. 59 */
     double beta1, beta2;           /* artificial viscosity, eq. 58 */
     double hourglass;              /* penalty coefficient of the hourglass control (0: off) */
+    int has_lattice;               /* `lattice P`: the fill lattice has a cell corner at P */
+    double lattice[3];
     const MaterialDef *law;
     double *law_args;              /* value of each law parameter, in law order */
     BcModel *bcs;
@@ -99,6 +103,7 @@ typedef struct {
     int nbodies;
     ExpectModel *expects;
     int nexpects;
+    int compat_outputs;   /* also write SoliDualSPHysics' output files (imported cases) */
 } Model;
 
 /* Check the program; returns 0 and fills *m when there are no errors. */

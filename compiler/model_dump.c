@@ -5,12 +5,14 @@
 
 static void region(FILE *out, const char *what, const Region *r)
 {
-    static const char *const kinds[] = {"box", "cylinder", "sphere"};
+    static const char *const kinds[] = {"box", "cylinder", "sphere", "surface"};
     fprintf(out, "    %s:", what);
     for (int k = 0; k < r->n; k++) {
         const ShapePrim *s = &r->prims[k];
         fprintf(out, " %s%s a=[%g %g %g] b=[%g %g %g] r=%g", s->subtract ? "- " : k ? "+ " : "",
                 kinds[s->kind], s->a[0], s->a[1], s->a[2], s->b[0], s->b[1], s->b[2], s->r);
+        if (s->kind == SHAPE_SURFACE)
+            fprintf(out, " volume=%.6g file=%s", s->volume, s->file);
     }
     fputs("\n", out);
 }
@@ -20,6 +22,9 @@ static void body(FILE *out, const BodyModel *b)
     fprintf(out, "  body %s\n", b->name);
     region(out, "shape", &b->region);
     fprintf(out, "    refine %d  nbsrange %d  density %g\n", b->refine, b->nbsrange, b->rho0);
+    if (b->has_lattice)
+        fprintf(out, "    lattice corner [%g %g %g]\n", b->lattice[0], b->lattice[1],
+                b->lattice[2]);
     fprintf(out, "    elastic E %g nu %g lambda %g mu %g K %g  c0 %g m/s\n", b->E, b->nu, b->lambda,
             b->mu, b->K, b->c0);
     fprintf(out, "    material %s(", b->law->name);
@@ -47,6 +52,9 @@ void model_dump(const Model *m, FILE *out)
             m->dim, m->dp, m->kernel == KERNEL_WENDLAND ? "wendland" : "cubic", m->coefh,
             m->integrator == INTEGRATOR_VERLET ? "verlet" : "symplectic", m->cfl, m->dtmin, m->dt,
             m->t_end, m->t_out, m->gravity[0], m->gravity[1], m->gravity[2]);
+    if (m->compat_outputs)
+        fputs("  outputs: also SoliDualSPHysics' DeformStruc_Energies.csv and "
+              "MeasuringPlData_MK<mk>_PL<k>.csv\n", out);
     for (int i = 0; i < m->nconsts; i++)
         fprintf(out, "  let %s = %.17g\n", m->consts[i].name, m->consts[i].value);
     for (int i = 0; i < m->nfns; i++)

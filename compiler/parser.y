@@ -436,6 +436,7 @@ primshape
 
 call
     : IDENT '(' namedargs_opt ')'       { $$ = (NamedCall){ ast_strdup($1), LOC(@1), $3 }; }
+    | SURFACE '(' namedargs_opt ')'     { $$ = (NamedCall){ ast_strdup("surface"), LOC(@1), $3 }; }
     ;
 
 namedargs_opt
@@ -451,6 +452,7 @@ namedargs
 
 namedarg
     : argkey expr                       { $$ = ast_setting(LOC(@1), $1, $2); }
+    | argkey STRING                     { $$ = ast_setting_text(LOC(@1), $1, $2); free($2); }
     ;
 
 argkey
@@ -631,7 +633,8 @@ static int yyreport_syntax_error(const yypcontext_t *ctx, yyscan_t scanner, Pars
         want_close |= is_char(exp[i], '}');
 
     if (bad == YYSYMBOL_STRING) {
-        diag_error(loc, "unexpected string %.160s (strings are not used by the language yet)", text);
+        diag_error(loc, "unexpected string %.160s (strings are only file names, as in "
+                        "surface(file \"beam.vtk\"))", text);
         return 0;
     }
     if (want_close && is_toplevel_only(bad)) {

@@ -166,6 +166,8 @@ void sph_print_expr(const Expr *e, FILE *out)
 
 static void print_values(const Setting *s, FILE *out)
 {
+    if (s->text)
+        fprintf(out, "\"%s\"", s->text);
     print_list(s->values, s->nvalues, out);
 }
 

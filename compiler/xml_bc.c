@@ -15,7 +15,8 @@
  * put the plane at the tip, up to one dp beyond the last particle layer (appendix 3:
  * x = 100.4e-3 with the last layer at 99.5e-3).  So a plane normal to an axis that lies
  * outside the body's outermost particle layer, by more than dx/2 and at most dp, is moved
- * onto that layer: it measures the tip as SoliDualSPHysics does. */
+ * onto that layer: it measures the tip as SoliDualSPHysics does.  (Bodies drawn with boxes
+ * only: their layers are known from the nodes.) */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -160,6 +161,8 @@ int xml_bc(XmlCtx *x, const xmlNode *n, int mk, BodyDecl *body)
 static void onto_layer(const XmlCtx *x, int mk, int refine, double p[4][3])
 {
     double lo[3], hi[3], dx = x->dp / refine, tol = 1e-9 * x->dp;
+    if (!xml_mk_boxes_only(x, mk))
+        return; /* the layers of other shapes are not known here */
     xml_mk_bbox(x, mk, lo, hi);
     for (int a = 0; a < 3; a++) {
         if (x->dim == 2 && a == 1)

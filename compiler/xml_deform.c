@@ -12,7 +12,9 @@
  *   </deformstrucbody>
  *
  * Elastic constants: youngmod + poissratio, u_lambda + u_mu or u_bulk + u_mu, where u_bulk
- * is the three-dimensional bulk modulus (the sph language's `bulk`, also in 2D).
+ * is the three-dimensional bulk modulus (the sph language's `bulk`, also in 2D); with
+ * --xml-elastic2d=sdsph a 2D case's constants are those of 2D elasticity, as
+ * SoliDualSPHysics reads them (elastic_args_2d).
  * Fracture, J2 plasticity and contact cards are read and checked, then reported as not
  * supported yet. */
 #include <stdio.h>
@@ -253,6 +255,30 @@ static void push_setting(BodyDecl *b, SrcLoc loc, const char *key, double v)
     push_item(b, BI_SETTING, loc, ast_setting(loc, key, ast_num(loc, v)));
 }
 
+/* --xml-elastic2d=sdsph in a 2D case: the cards are the constants of two-dimensional
+ * elasticity, as SoliDualSPHysics reads them (its dim = 2): u_bulk = lambda + mu, and
+ * youngmod, poissratio give mu = E / (2 (1 + nu)), lambda = E nu / ((1 + nu)(1 - nu)).
+ * The body gets the equivalent lambda and shear. */
+static void elastic_args_2d(const Cards *c, SettingList *args)
+{
+    double lambda, mu;
+    SrcLoc lloc, mloc;
+    if (c->has_el[EL_E]) {
+        double E = c->el[EL_E], nu = c->el[EL_NU];
+        mu = E / (2.0 * (1.0 + nu));
+        lambda = E * nu / ((1.0 + nu) * (1.0 - nu));
+        lloc = c->el_loc[EL_NU];
+        mloc = c->el_loc[EL_E];
+    } else {
+        mu = c->el[EL_MU];
+        lambda = c->has_el[EL_K] ? c->el[EL_K] - mu : c->el[EL_LAMBDA];
+        lloc = c->el_loc[c->has_el[EL_K] ? EL_K : EL_LAMBDA];
+        mloc = c->el_loc[EL_MU];
+    }
+    ast_push_setting(args, ast_setting(lloc, "lambda", ast_num(lloc, lambda)));
+    ast_push_setting(args, ast_setting(mloc, "shear", ast_num(mloc, mu)));
+}
+
 static void push_material(XmlCtx *x, const Cards *c, BodyDecl *b)
 {
     static const char *const laws[] = {NULL, "svk", "neohookean"};
@@ -264,24 +290,38 @@ static void push_material(XmlCtx *x, const Cards *c, BodyDecl *b)
     it.material.loc = loc;
     ast_push_setting(&it.material.args, ast_setting(c->density_loc, "density",
                                                     ast_num(c->density_loc, c->density)));
-    for (int k = 0; k < EL_N; k++)
-        if (c->has_el[k])
-            ast_push_setting(&it.material.args, ast_setting(c->el_loc[k], ELASTIC_ARGS[k],
-                                                            ast_num(c->el_loc[k], c->el[k])));
+    if (x->dim == 2 && x->opt.elastic2d_sdsph)
+        elastic_args_2d(c, &it.material.args);
+    else
+        for (int k = 0; k < EL_N; k++)
+            if (c->has_el[k])
+                ast_push_setting(&it.material.args, ast_setting(c->el_loc[k], ELASTIC_ARGS[k],
+                                                                ast_num(c->el_loc[k], c->el[k])));
     ast_push_bodyitem(b, it);
     if (!x->uses_law[c->model])
         x->law_loc[c->model] = loc;
     x->uses_law[c->model] = 1;
 }
 
-static void push_settings(XmlCtx *x, const Cards *c, BodyDecl *b)
+static int push_settings(XmlCtx *x, const Cards *c, BodyDecl *b)
 {
     BodyItem shape = {0};
+    int has_corner;
+    double corner[3];
     shape.kind = BI_SHAPE;
     shape.loc = c->loc;
-    shape.shape = xml_mk_shape(x, c->mk, c->loc);
+    shape.shape = xml_mk_body_shape(x, c->mk, c->loc, &has_corner, corner);
+    if (!shape.shape)
+        return -1;
     ast_push_bodyitem(b, shape);
     push_setting(b, c->refine_loc.line ? c->refine_loc : c->loc, "refine", (double)c->refine);
+    if (has_corner) {
+        Expr **v = NULL;
+        int nv = 0;
+        for (int a = 0; a < 3; a++)
+            ast_push_expr(&v, &nv, ast_num(c->loc, corner[a]));
+        push_item(b, BI_SETTING, c->loc, ast_setting(c->loc, "lattice", ast_vec(c->loc, v, nv)));
+    }
     if (c->has_nbs)
         push_setting(b, c->nbs_loc, "nbsrange", (double)c->nbsrange);
     push_material(x, c, b);
@@ -290,6 +330,7 @@ static void push_settings(XmlCtx *x, const Cards *c, BodyDecl *b)
     if (c->beta2 != 0)
         ast_push_expr(&visc.values, &visc.nvalues, ast_num(vl, c->beta2));
     push_item(b, BI_SETTING, vl, visc);
+    return 0;
 }
 
 static int is_bc_or_measure(const xmlNode *n)
@@ -351,7 +392,8 @@ static int body(XmlCtx *x, const xmlNode *n)
     it.loc = c.loc;
     it.body.name = ast_strdup(name);
     it.body.loc = c.loc;
-    push_settings(x, &c, &it.body);
+    if (push_settings(x, &c, &it.body))
+        return -1;
     int bad = 0;
     for (xmlNode *k = xml_first(n); k; k = xml_next(k))
         if (xml_is(k, "measureplane"))

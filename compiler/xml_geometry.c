@@ -13,9 +13,11 @@
  * sph box [first node - dp/2, last node + dp/2]: sph fills cell centres, so refine 1 gives
  * the same particles as GenCase and refine m (mapfac) the same mapped ones.
  *
- * A later drawing with another mk takes its nodes over from the earlier ones, so the
- * shape of an mk is its boxes in drawing order less the later boxes of other mks that
- * overlap them. */
+ * A <drawcylinder radius> with two <point>s is the sph cylinder between them; it keeps the
+ * free drawing mode in force (<setfrdrawmode auto="true|false"/>) for --xml-fill=gencase.
+ * <drawfilevtk file autofill="true"/> and <drawfilestl ...> are the closed surface in the file
+ * (relative to the case file), filled: the sph surface(file "...").
+ * xml_shape.c turns the drawings of an mk into the shape of a body or of a `near`. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -150,7 +152,7 @@ static int drawbox(XmlCtx *x, const xmlNode *n, int mk)
         diag_error(loc, "<drawbox> comes before any <setmkbound mk=\"...\"/>: it has no mk");
         return -1;
     }
-    XmlDraw d = {mk, {0}, {0}, loc};
+    XmlDraw d = {XD_BOX, mk, {0}, {0}, {{0}}, 0, NULL, x->freedraw, loc};
     for (int a = 0; a < 3; a++) {
         if (s[a] < 0) {
             diag_error(xml_loc(x, size), "<size>: %c = %g is negative", "xyz"[a], s[a]);
@@ -176,39 +178,150 @@ static int drawbox(XmlCtx *x, const xmlNode *n, int mk)
 /* Commands that only change how GenCase writes or draws shapes. */
 static int is_accepted(const xmlNode *n)
 {
-    static const char *const ok[] = {"setdrawmode", "setshapemode", "shapeout", "setfrdrawmode",
-                                     NULL};
+    static const char *const ok[] = {"setdrawmode", "setshapemode", "shapeout", NULL};
     for (int i = 0; ok[i]; i++)
         if (xml_is(n, ok[i]))
             return 1;
     return 0;
 }
 
-/* Drawings the importer does not handle yet: their attributes are read, then refused. */
-static int unsupported_drawing(const XmlCtx *x, const xmlNode *n)
+/* ------------------------------------------------------------------ <drawcylinder> */
+
+/* Nodes of axis a spanned by [lo, hi], clipped to the domain; 0 when some lie in it. */
+static int node_span(const XmlCtx *x, int a, double lo, double hi, long *klo, long *khi)
 {
+    *klo = (long)ceil((lo - x->pmin[a]) / x->dp - 1e-9);
+    *khi = (long)floor((hi - x->pmin[a]) / x->dp + 1e-9);
+    if (*klo < 0)
+        *klo = 0;
+    if (*khi > x->nodes[a])
+        *khi = x->nodes[a];
+    return *klo <= *khi ? 0 : -1;
+}
+
+static int drawcylinder(XmlCtx *x, const xmlNode *n, int mk)
+{
+    static const char *const attrs[] = {"radius", NULL};
+    static const char *const kids[] = {"point", NULL};
     SrcLoc loc = xml_loc(x, n);
-    if (xml_is(n, "drawcylinder")) {
-        static const char *const attrs[] = {"radius", NULL};
-        double r;
-        if (xml_check_attrs(x, n, attrs) || xml_number(x, n, "radius", 1, &r) != 1)
-            return -1;
-        int npoints = 0;
-        for (xmlNode *c = xml_first(n); c; c = xml_next(c)) {
-            double p[3];
-            if (xml_is(c, "point") && xml_point(x, c, p) == 0)
-                npoints++;
+    XmlDraw d = {XD_CYLINDER, mk, {0}, {0}, {{0}}, 0, NULL, x->freedraw, loc};
+    int bad = xml_check_attrs(x, n, attrs) != 0;
+    bad |= xml_check_children(x, n, kids) != 0;
+    bad |= xml_number(x, n, "radius", 1, &d.r) != 1;
+    int npoints = 0;
+    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
+        if (xml_is(c, "point") && npoints < 2)
+            bad |= xml_point(x, c, d.p[npoints++]) != 0;
+        else if (xml_is(c, "point"))
+            npoints++;
+    if (bad)
+        return -1;
+    if (npoints != 2) {
+        diag_error(loc, "<drawcylinder> needs two <point>s (the ends of its axis), got %d",
+                   npoints);
+        return -1;
+    }
+    if (!(d.r > 0)) {
+        diag_error(loc, "<drawcylinder> attribute 'radius': must be positive (got %g)", d.r);
+        return -1;
+    }
+    if (mk < 0) {
+        diag_error(loc, "<drawcylinder> comes before any <setmkbound mk=\"...\"/>: it has no mk");
+        return -1;
+    }
+    double len2 = 0;
+    for (int a = 0; a < 3; a++)
+        len2 += (d.p[1][a] - d.p[0][a]) * (d.p[1][a] - d.p[0][a]);
+    for (int a = 0; a < 3; a++) { /* the bounding box: end discs reach r sqrt(1 - u_a^2) */
+        double u2 = len2 > 0 ? (d.p[1][a] - d.p[0][a]) * (d.p[1][a] - d.p[0][a]) / len2 : 0;
+        double ext = d.r * sqrt(fmax(0.0, 1.0 - u2));
+        double lo = fmin(d.p[0][a], d.p[1][a]) - ext, hi = fmax(d.p[0][a], d.p[1][a]) + ext;
+        if (x->dim == 2 && a == 1) {
+            if (lo > x->pmin[1] + 1e-9 * x->dp || hi < x->pmin[1] - 1e-9 * x->dp) {
+                diag_error(loc, "<drawcylinder> does not reach the plane y = %g of this 2D case "
+                                "(pointmin.y == pointmax.y): it holds no particles", x->pmin[1]);
+                return -1;
+            }
+            continue;
         }
-        if (npoints != 2) {
-            diag_error(loc, "<drawcylinder> needs two <point>s (the ends of its axis)");
+        if (node_span(x, a, lo, hi, &d.lo[a], &d.hi[a])) {
+            diag_error(loc, "<drawcylinder> lies outside the domain of <definition> along %c: "
+                            "it holds no particles", "xyz"[a]);
             return -1;
         }
-    } else if (!strncmp(xml_name(n), "drawfile", 8) && !xml_attr(n, "file")) {
+    }
+    x->draws = xml_grow(x->draws, x->ndraws + 1, sizeof *x->draws);
+    x->draws[x->ndraws++] = d;
+    return 0;
+}
+
+/* <setfrdrawmode auto="true|false"/>: GenCase's free drawing mode. */
+static int setfrdrawmode(XmlCtx *x, const xmlNode *n)
+{
+    static const char *const attrs[] = {"auto", NULL};
+    if (xml_check_attrs(x, n, attrs))
+        return -1;
+    const char *v = xml_attr(n, "auto");
+    if (!v) {
+        diag_error(xml_loc(x, n), "<setfrdrawmode>: missing attribute 'auto'");
+        return -1;
+    }
+    if (!strcmp(v, "true") || !strcmp(v, "1"))
+        x->freedraw = 1;
+    else if (!strcmp(v, "false") || !strcmp(v, "0"))
+        x->freedraw = 0;
+    else {
+        diag_error(xml_loc(x, n), "<setfrdrawmode> attribute 'auto': expected true or false, "
+                                  "got '%s'", v);
+        return -1;
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------------ <drawfilevtk/stl> */
+
+/* A closed surface from a file, filled (autofill="true").  The file is read and checked
+ * with the body (check_body.c), relative to the case file. */
+static int drawfile(XmlCtx *x, const xmlNode *n, int mk)
+{
+    static const char *const attrs[] = {"file", "objname", "autofill", NULL};
+    static const char *const none[] = {NULL};
+    SrcLoc loc = xml_loc(x, n);
+    if (xml_check_attrs(x, n, attrs) || xml_check_children(x, n, none))
+        return -1;
+    const char *file = xml_attr(n, "file"), *fill = xml_attr(n, "autofill");
+    if (!file || !*file) {
         diag_error(loc, "<%s>: missing attribute 'file'", xml_name(n));
         return -1;
     }
-    diag_error(loc, "<%s>: this drawing command is not supported by the importer yet (only "
-                    "<drawbox> is)", xml_name(n));
+    if (!fill || (strcmp(fill, "true") && strcmp(fill, "1"))) {
+        diag_error(loc, "<%s>: without autofill=\"true\" GenCase puts particles on the surface "
+                        "only; sphc fills closed surfaces: give autofill=\"true\"", xml_name(n));
+        return -1;
+    }
+    if (x->dim == 2) {
+        diag_error(loc, "<%s>: surfaces from files are supported in 3D cases only", xml_name(n));
+        return -1;
+    }
+    if (mk < 0) {
+        diag_error(loc, "<%s> comes before any <setmkbound mk=\"...\"/>: it has no mk",
+                   xml_name(n));
+        return -1;
+    }
+    XmlDraw d = {XD_SURFACE, mk, {0}, {0}, {{0}}, 0, file, x->freedraw, loc};
+    for (int a = 0; a < 3; a++)
+        d.hi[a] = x->nodes[a];
+    x->draws = xml_grow(x->draws, x->ndraws + 1, sizeof *x->draws);
+    x->draws[x->ndraws++] = d;
+    return 0;
+}
+
+/* Drawings the importer does not handle yet. */
+static int unsupported_drawing(const XmlCtx *x, const xmlNode *n)
+{
+    diag_error(xml_loc(x, n), "<%s>: this drawing command is not supported by the importer yet "
+                              "(<drawbox>, <drawcylinder>, <drawfilevtk> and <drawfilestl> are)",
+               xml_name(n));
     return -1;
 }
 
@@ -231,6 +344,12 @@ static int command(XmlCtx *x, const xmlNode *n, int *mk)
     }
     if (xml_is(n, "drawbox"))
         return drawbox(x, n, *mk);
+    if (xml_is(n, "drawcylinder"))
+        return drawcylinder(x, n, *mk);
+    if (xml_is(n, "drawfilevtk") || xml_is(n, "drawfilestl"))
+        return drawfile(x, n, *mk);
+    if (xml_is(n, "setfrdrawmode"))
+        return setfrdrawmode(x, n);
     if (is_accepted(n))
         return 0;
     if (!strncmp(xml_name(n), "draw", 4))
@@ -267,7 +386,7 @@ int xml_geometry(XmlCtx *x, const xmlNode *geometry)
     return mainlist(x, list);
 }
 
-/* ------------------------------------------------------------------ shapes of an mk */
+/* ------------------------------------------------------------------ drawn mks */
 
 int xml_mk_drawn(const XmlCtx *x, int mk)
 {
@@ -275,86 +394,4 @@ int xml_mk_drawn(const XmlCtx *x, int mk)
         if (x->draws[i].mk == mk)
             return 1;
     return 0;
-}
-
-/* Coordinate of node k (a half-integer for a box face) along axis a. */
-static double node_coord(const XmlCtx *x, int a, double k)
-{
-    return xml_snap(x->pmin[a] + k * x->dp, 1e-9 * x->dp);
-}
-
-static void draw_volume(const XmlCtx *x, const XmlDraw *d, double lo[3], double hi[3])
-{
-    for (int a = 0; a < 3; a++) {
-        int flat = x->dim == 2 && a == 1;
-        lo[a] = flat ? 0.0 : node_coord(x, a, (double)d->lo[a] - 0.5);
-        hi[a] = flat ? 0.0 : node_coord(x, a, (double)d->hi[a] + 0.5);
-    }
-}
-
-static Expr *vec3(SrcLoc loc, const double v[3])
-{
-    Expr **args = NULL;
-    int n = 0;
-    for (int a = 0; a < 3; a++)
-        ast_push_expr(&args, &n, ast_num(loc, v[a]));
-    return ast_vec(loc, args, n);
-}
-
-static ShapeExpr *box_shape(const XmlCtx *x, const XmlDraw *d)
-{
-    double lo[3], hi[3];
-    draw_volume(x, d, lo, hi);
-    NamedCall call = {ast_strdup("box"), d->loc, {0}};
-    ast_push_setting(&call.args, ast_setting(d->loc, "from", vec3(d->loc, lo)));
-    ast_push_setting(&call.args, ast_setting(d->loc, "to", vec3(d->loc, hi)));
-    return ast_shape_prim(call);
-}
-
-static int overlap(const XmlDraw *a, const XmlDraw *b)
-{
-    for (int k = 0; k < 3; k++)
-        if (a->hi[k] < b->lo[k] || b->hi[k] < a->lo[k])
-            return 0;
-    return 1;
-}
-
-/* Whether draw i overlaps one of mk's draws before it. */
-static int takes_over(const XmlCtx *x, int i, int mk)
-{
-    for (int j = 0; j < i; j++)
-        if (x->draws[j].mk == mk && overlap(&x->draws[j], &x->draws[i]))
-            return 1;
-    return 0;
-}
-
-ShapeExpr *xml_mk_shape(const XmlCtx *x, int mk, SrcLoc loc)
-{
-    ShapeExpr *s = NULL;
-    for (int i = 0; i < x->ndraws; i++) {
-        const XmlDraw *d = &x->draws[i];
-        if (d->mk == mk)
-            s = s ? ast_shape_op(loc, '+', s, box_shape(x, d)) : box_shape(x, d);
-        else if (s && takes_over(x, i, mk))
-            s = ast_shape_op(loc, '-', s, box_shape(x, d));
-    }
-    return s;
-}
-
-void xml_mk_bbox(const XmlCtx *x, int mk, double lo[3], double hi[3])
-{
-    for (int a = 0; a < 3; a++) {
-        lo[a] = HUGE_VAL;
-        hi[a] = -HUGE_VAL;
-    }
-    for (int i = 0; i < x->ndraws; i++) {
-        double dl[3], dh[3];
-        if (x->draws[i].mk != mk)
-            continue;
-        draw_volume(x, &x->draws[i], dl, dh);
-        for (int a = 0; a < 3; a++) {
-            lo[a] = fmin(lo[a], dl[a]);
-            hi[a] = fmax(hi[a], dh[a]);
-        }
-    }
 }

@@ -4,7 +4,8 @@
  *   xml_util.c      elements, attributes and their values, with errors naming both
  *   xml_expr.c      the expression language of attribute values and <userexpression>s
  *   xml_scene.c     <constantsdef> and <execution><parameters>: the scene settings
- *   xml_geometry.c  <geometry>: the GenCase lattice, <drawbox>, shapes of an mk
+ *   xml_geometry.c  <geometry>: the GenCase lattice, <drawbox>, <drawcylinder>, <drawfile*>
+ *   xml_shape.c     the drawings of an mk as an sph shape (and lattice) of a body or `near`
  *   xml_mathexpr.c  <mathexpressions>: user expressions and their locals (lets)
  *   xml_deform.c    <deformstrucs>: bodies, material and settings cards
  *   xml_bc.c        <bcvel>, <bcforce>, <measureplane> of a body
@@ -16,12 +17,19 @@
 #include <libxml/tree.h>
 
 #include "ast.h"
+#include "xml.h"
 
-/* One <drawbox> of the mainlist: the GenCase lattice nodes it covers, per axis
- * (inclusive; in 2D the y range is 0..0). */
+/* One drawing of the mainlist.  lo..hi: the GenCase lattice nodes a <drawbox> covers, per
+ * axis, or those of the bounding box of another drawing (inclusive; in 2D y is 0..0). */
+typedef enum { XD_BOX, XD_CYLINDER, XD_SURFACE } XmlDrawKind;
+
 typedef struct {
+    XmlDrawKind kind;
     int mk;
-    long lo[3], hi[3];
+    long lo[3], hi[3];        /* a surface: the whole domain (its file is read later) */
+    double p[2][3], r;        /* <drawcylinder>: the ends of its axis and its radius */
+    const char *file;         /* <drawfilevtk>, <drawfilestl>: the file, as written */
+    int freedraw;             /* drawn in GenCase's free drawing mode (<setfrdrawmode>) */
     SrcLoc loc;
 } XmlDraw;
 
@@ -34,6 +42,7 @@ typedef struct {
 
 typedef struct {
     const char *file;
+    XmlOptions opt;           /* sphc's --xml-* options */
     /* <definition>: the lattice pointmin + k dp, 2D when pointmin.y == pointmax.y */
     int has_domain, dim;
     double dp, pmin[3], pmax[3];
@@ -45,6 +54,7 @@ typedef struct {
     /* the mainlist */
     XmlDraw *draws;
     int ndraws;
+    int freedraw;             /* <setfrdrawmode auto="true"/> in force */
     /* <mathexpressions> */
     XmlUserExpr *exprs;
     int nexprs;
@@ -127,11 +137,19 @@ void xml_scene_word(XmlCtx *x, SrcLoc loc, const char *key, const char *word);
 SettingList xml_scene_settings(const XmlCtx *x);
 
 int xml_geometry(XmlCtx *x, const xmlNode *geometry);
-/* Whether some <drawbox> was drawn with mk. */
+/* Whether something was drawn with mk. */
 int xml_mk_drawn(const XmlCtx *x, int mk);
-/* The sph shape of the particles GenCase gives mk: its boxes in drawing order, less what
- * later drawings of other mks take over. */
+
+/* xml_shape.c: the sph shape of what GenCase gives mk: its drawings in drawing order, less
+ * what later drawings of other mks take over (the auxiliary geometry of a `near`). */
 ShapeExpr *xml_mk_shape(const XmlCtx *x, int mk, SrcLoc loc);
+/* The shape and lattice of body mk: xml_mk_shape, or with --xml-fill=gencase the shape and
+ * lattice corner that give GenCase's particles (docs/xml.md).  *has_corner is set when the
+ * body needs a `lattice` corner.  Returns NULL after reporting an error. */
+ShapeExpr *xml_mk_body_shape(const XmlCtx *x, int mk, SrcLoc loc, int *has_corner,
+                             double corner[3]);
+/* Whether mk was drawn with boxes only. */
+int xml_mk_boxes_only(const XmlCtx *x, int mk);
 /* Bounding box of mk's boxes as sph volumes (node -/+ dp/2). */
 void xml_mk_bbox(const XmlCtx *x, int mk, double lo[3], double hi[3]);
 

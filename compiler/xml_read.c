@@ -278,7 +278,7 @@ static void assemble(XmlCtx *x, Program *prog)
         ast_push_item(prog, x->bodies[i]);
 }
 
-int xml_import(const char *path, Program *prog)
+int xml_import(const char *path, const XmlOptions *opt, Program *prog)
 {
     int before = diag_error_count();
     char *file = ast_strdup(path);
@@ -289,8 +289,11 @@ int xml_import(const char *path, Program *prog)
         return diag_error_count() - before;
     XmlCtx x = {0};
     x.file = file;
+    if (opt)
+        x.opt = *opt;
     const xmlNode *root = xmlDocGetRootElement(doc);
     x.scene_loc = xml_loc(&x, root);
+    prog->from_xml = 1;
     if (read_case(&x, root) == 0 && diag_error_count() == before)
         assemble(&x, prog);
     xmlFreeDoc(doc);

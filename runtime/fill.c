@@ -1,9 +1,15 @@
 /* fill.c — filling a region with particles on a cubic lattice.
  *
- * Lattice: cell centres lo + (k + 1/2) dx along every varying axis, where lo is the minimum
- * of the bounding box of the region's non-subtracted primitives (see region.c); a lattice
- * point is kept when the region contains it (inclusive).  In 2D only x and z vary, y is
- * y_plane, and the region is tested in its x-z version (region.c: box y extent ignored,
+ * Lattice: cell centres lo + (k + 1/2) dx along every varying axis.  Along an axis where the
+ * bounding box of the region's non-subtracted primitives (see region.c) spans a whole
+ * number of cells, lo is its minimum, so the cells fill it exactly (a box holds its volume);
+ * otherwise the cells are centred on it, with equal margins on both sides (round shapes
+ * keep their volume best so).  A region with a lattice corner (has_corner) has its cells
+ * aligned to r->corner instead: lo is corner + j dx (j integer) a cell below the minimum.
+ * A lattice point is kept when the region contains it (inclusive), points within 1e-9 dx of
+ * its surface included (a lattice node on a face counts as inside however the coordinates
+ * round).  In 2D only x and z vary, y is y_plane, and the region is tested in its x-z
+ * version (region.c: box y extent ignored,
  * sphere -> disc, cylinder -> rectangle, or disc when its axis is along y).
  *
  * Ordering (cache-friendly, deterministic): the lattice is cut into square/cubic tiles of
@@ -40,12 +46,29 @@ static int lattice_init(lattice *L, const sph_region *r, int dim, double dx, dou
     L->tile_pts = 1;
     for (int c = 0; c < 3; c++) {
         int ax = sph_axis(dim, c);
-        L->lo[c] = c < dim ? lo[ax] : 0.0;
-        /* An upper bound of the points: lo + (k + 1/2) dx <= hi; contains() decides. */
         double ext = c < dim ? (hi[ax] - lo[ax]) / dx : 0.0;
         if (!(ext >= 0.0) || ext > 1e8)
             return 0;
-        L->nk[c] = c < dim ? (long)floor(ext + 1e-9) + 1 : 1;
+        L->lo[c] = c < dim ? lo[ax] : 0.0;
+        L->nk[c] = 1;
+        if (c >= dim)
+            continue;
+        if (r->has_corner) { /* one cell more on each side: contains() decides */
+            double j = floor((lo[ax] - r->corner[ax]) / dx) - 1.0;
+            if (!(fabs(j) < 1e12))
+                return 0;
+            L->lo[c] = r->corner[ax] + j * dx;
+            L->nk[c] = (long)floor((hi[ax] - L->lo[c]) / dx) + 2;
+        } else if (fabs(ext - nearbyint(ext)) <= 1e-9 * fmax(1.0, ext)) {
+            L->nk[c] = (long)nearbyint(ext); /* whole cells: their faces on the bounding box */
+        } else { /* cells centred on the bounding box, with equal margins on both sides */
+            L->nk[c] = (long)ceil(ext);
+            L->lo[c] = 0.5 * (lo[ax] + hi[ax]) - 0.5 * (double)L->nk[c] * dx;
+        }
+        if (L->nk[c] < 1)
+            L->nk[c] = 1;
+    }
+    for (int c = 0; c < 3; c++) {
         L->nt[c] = c < dim ? (L->nk[c] + L->tile - 1) / L->tile : 1;
         L->ntiles *= L->nt[c];
         L->tile_pts *= c < dim ? L->tile : 1;
@@ -75,7 +98,8 @@ static long tile_fill(const lattice *L, const sph_region *r, long t, double *X)
     long m = 0;
     double p[3];
     for (long l = 0; l < L->tile_pts; l++) {
-        if (!lattice_point(L, t, l, p) || !sph_region_contains_dim(r, L->dim, p))
+        if (!lattice_point(L, t, l, p) ||
+            !sph_region_contains_tol_dim(r, L->dim, p, 1e-9 * L->dx))
             continue;
         if (X)
             for (int c = 0; c < L->dim; c++)

@@ -7,6 +7,8 @@
 
 /* region.c: regions tested in the body's dimension (2D: in the x-z plane, y ignored). */
 int sph_region_contains_dim(const sph_region *r, int dim, const double p[3]);
+/* The same, counting points within tol of a primitive as on it (fill.c: tol = 1e-9 dx). */
+int sph_region_contains_tol_dim(const sph_region *r, int dim, const double p[3], double tol);
 double sph_region_distance_dim(const sph_region *r, int dim, const double p[3]);
 int sph_region_bbox_dim(const sph_region *r, int dim, double lo[3], double hi[3]);
 

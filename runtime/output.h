@@ -20,12 +20,16 @@ int sph_write_vtu(const char *path, const sph_body *b, double t);
 /* A ParaView collection (.pvd) listing files[k] (relative to the pvd) at times[k]. */
 int sph_write_pvd(const char *path, const char *const *files, const double *times, int n);
 
-/* A CSV time series: opened once with a header line, appended row by row (flushed). */
+/* A CSV time series: opened once with a header line, appended row by row (flushed).
+ * Fields are separated by commas, or by `sep` with sph_csv_open_sep. */
 typedef struct {
     FILE *f;
     int ncols;
+    char sep;
 } sph_csv;
 int sph_csv_open(sph_csv *c, const char *path, const char *const *columns, int ncols);
+int sph_csv_open_sep(sph_csv *c, const char *path, const char *const *columns, int ncols,
+                     char sep);
 int sph_csv_row(sph_csv *c, const double *values); /* ncols values, %.10g */
 void sph_csv_close(sph_csv *c);
 

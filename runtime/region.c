@@ -1,4 +1,4 @@
-/* region.c — regions built from boxes, cylinders and spheres.
+/* region.c — regions built from boxes, cylinders, spheres and closed surfaces.
  *
  * A region is evaluated left to right: a primitive with subtract = 0 is added to (united
  * with) what comes before it, one with subtract = 1 is removed from it.  Membership is
@@ -10,7 +10,9 @@
  *  - cylinder: points within r of the segment a-b whose projection on the axis lies
  *    between a and b (flat caps).  A cylinder of zero length (a == b) is treated as a
  *    sphere of radius r around a (this is what a y-axis cylinder becomes in 2D);
- *  - sphere: centre a, radius r.
+ *  - sphere: centre a, radius r;
+ *  - mesh: the inside of the closed surface in file (mesh.h; loaded on first use), on its
+ *    surface included; its signed distance is the distance to the nearest triangle.
  *
  * Distance: every primitive has an exact signed distance sd (negative inside); the region's
  * value is folded in order with the usual CSG rules, union s = min(s, sd) and difference
@@ -23,11 +25,13 @@
  * in the plane y = p[1] of the tested point: a box ignores its y extent (a box with
  * a.y == b.y still covers the plane), a sphere becomes the disc of radius r around (a.x, a.z),
  * a cylinder becomes the rectangle of half-width r around its x-z projected axis, or the disc
- * of radius r when the axis is along y (projected axis of zero length).
+ * of radius r when the axis is along y (projected axis of zero length), and a mesh is cut by
+ * the plane.
  * The *_dim functions below are exported for fill.c and select.c (declared in internal.h).
  */
 #include <math.h>
 #include "internal.h"
+#include "mesh.h"
 
 /* Signed distance to an axis-aligned box (exact). */
 static double box_sd(const sph_shape *s, const double p[3])
@@ -80,7 +84,7 @@ static sph_shape prim_in_plane(const sph_shape *s, double y)
     if (s->kind == SPH_BOX) {
         o.a[1] = -HUGE_VAL;
         o.b[1] = HUGE_VAL;
-    } else {
+    } else if (s->kind != SPH_MESH) {
         o.a[1] = o.b[1] = y;
     }
     return o;
@@ -99,8 +103,26 @@ static double prim_sd(const sph_shape *s, const double p[3])
     case SPH_BOX: return box_sd(s, p);
     case SPH_CYLINDER: return cylinder_sd(s, p);
     case SPH_SPHERE: return ball_sd(s->a, s->r, p);
+    case SPH_MESH: {
+        const sph_mesh *m = sph_mesh_get(s->file);
+        double d = sph_mesh_distance(m, p, HUGE_VAL);
+        return sph_mesh_inside(m, p) ? -d : d;
+    }
     }
     return HUGE_VAL;
+}
+
+/* Whether p lies in primitive s or within tol of it (without a distance when inside).  A
+ * mesh's surface is known to m->eps only (single-precision files): tol is at least that. */
+static int prim_within(const sph_shape *s, const double p[3], double tol)
+{
+    if (s->kind != SPH_MESH)
+        return prim_sd(s, p) <= tol;
+    const sph_mesh *m = sph_mesh_get(s->file);
+    if (sph_mesh_inside(m, p))
+        return 1;
+    tol = fmax(tol, m->eps);
+    return tol > 0 && sph_mesh_distance(m, p, 2 * tol) <= tol;
 }
 
 /* Bounding box of one (already dimension-adjusted) primitive. */
@@ -111,8 +133,12 @@ static void prim_bbox(const sph_shape *s, double lo[3], double hi[3])
         ba[k] = s->b[k] - s->a[k];
         len2 += ba[k] * ba[k];
     }
+    const sph_mesh *m = s->kind == SPH_MESH ? sph_mesh_get(s->file) : NULL;
     for (int k = 0; k < 3; k++) {
-        if (s->kind == SPH_BOX) {
+        if (m) {
+            lo[k] = m->lo[k];
+            hi[k] = m->hi[k];
+        } else if (s->kind == SPH_BOX) {
             lo[k] = fmin(s->a[k], s->b[k]);
             hi[k] = fmax(s->a[k], s->b[k]);
         } else if (s->kind == SPH_SPHERE || len2 == 0.0) {
@@ -126,16 +152,22 @@ static void prim_bbox(const sph_shape *s, double lo[3], double hi[3])
     }
 }
 
-/* Membership in dimension dim (2: x-z plane version of every primitive). */
-int sph_region_contains_dim(const sph_region *r, int dim, const double p[3])
+/* Membership in dimension dim (2: x-z plane version of every primitive); a point within
+ * tol of a primitive counts as on it. */
+int sph_region_contains_tol_dim(const sph_region *r, int dim, const double p[3], double tol)
 {
     int in = 0;
     for (int i = 0; i < r->n; i++) {
         sph_shape s = prim_for_dim(&r->prims[i], dim, p[1]);
-        int inside = prim_sd(&s, p) <= 0.0;
+        int inside = prim_within(&s, p, tol);
         in = r->prims[i].subtract ? (in && !inside) : (in || inside);
     }
     return in;
+}
+
+int sph_region_contains_dim(const sph_region *r, int dim, const double p[3])
+{
+    return sph_region_contains_tol_dim(r, dim, p, 0.0);
 }
 
 /* Distance in dimension dim (see header comment for differences). */

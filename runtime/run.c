@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "compat.h"
 #include "internal.h"
 
 typedef struct {
@@ -19,6 +20,7 @@ typedef struct {
     sph_csv energies;
     sph_csv *measure_csv;
     int nmeasures;
+    sph_compat compat;   /* SoliDualSPHysics' files, when m->compat_outputs */
     sph_record rec;
     char ***frame_files; /* per body: the frame files listed in its pvd */
     double *frame_times;
@@ -83,6 +85,8 @@ static int open_outputs(run_state *r)
             free(path);
         }
     r->frame_files = calloc((size_t)m->nbodies, sizeof(char **));
+    if (m->compat_outputs)
+        bad |= sph_compat_open(&r->compat, m, r->opt.out_dir);
     return bad ? -1 : 0;
 }
 
@@ -99,6 +103,8 @@ static int record(run_state *r)
     }
     row[ncol - 1] = total[0] + total[1];
     int bad = sph_csv_row(&r->energies, row);
+    if (r->m->compat_outputs)
+        bad |= sph_compat_energies(&r->compat, row);
     sph_series_push(&r->rec.energy, s->t, total);
     free(row);
     for (int i = 0; i < s->nbodies; i++)
@@ -108,6 +114,8 @@ static int record(run_state *r)
             mrow[0] = s->t;
             sph_measure(&s->bodies[i], k, mrow + 1);
             bad |= sph_csv_row(&r->measure_csv[q], mrow);
+            if (r->m->compat_outputs)
+                bad |= sph_compat_plane(&r->compat, q, mrow);
             sph_series_push(&r->rec.measures[q], s->t, mrow + 1);
         }
     return bad;
@@ -333,6 +341,8 @@ int sph_main(const sph_model *m, int argc, char **argv)
     sph_csv_close(&r.energies);
     for (int q = 0; q < r.nmeasures; q++)
         sph_csv_close(&r.measure_csv[q]);
+    if (m->compat_outputs)
+        sph_compat_close(&r.compat);
     sph_sim_free(&r.sim);
     double ps = (double)particles * (double)r.sim.step;
     if (state == 1) {

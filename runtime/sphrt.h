@@ -32,7 +32,7 @@ extern "C" {
 
 /* ------------------------------------------------------------------ geometry */
 
-typedef enum { SPH_BOX, SPH_CYLINDER, SPH_SPHERE } sph_shape_kind;
+typedef enum { SPH_BOX, SPH_CYLINDER, SPH_SPHERE, SPH_MESH } sph_shape_kind;
 
 typedef struct {
     sph_shape_kind kind;
@@ -40,11 +40,14 @@ typedef struct {
     double b[3]; /* box: max corner   cylinder: axis end                    */
     double r;    /* cylinder, sphere: radius                                */
     int subtract;/* 1: this primitive is removed from the union of the previous ones */
+    const char *file; /* mesh: a closed surface, VTK or STL (mesh.h); loaded at first use */
 } sph_shape;
 
 typedef struct {
     const sph_shape *prims;
     int n;
+    int has_corner;   /* 1: the fill lattice has a cell corner at `corner` */
+    double corner[3];
 } sph_region;
 
 /* 1 when point p (3D) lies in the region (union/difference of its primitives). */
@@ -54,9 +57,11 @@ double sph_region_distance(const sph_region *r, const double p[3]);
 
 /* Fill a region with particles on the lattice of spacing dx.  Lattice points are cell
  * centres: lo + (k + 1/2) dx along each axis, where lo is the region's bounding-box
- * minimum; a point is kept when it lies inside the region.  In 2D only x and z vary and
- * every particle gets y = y_plane.  Returns the number of particles and sets *X to a
- * malloc'ed array of n*dim coordinates (x,z in 2D; x,y,z in 3D). */
+ * minimum when the box spans whole cells along that axis, else the cells are centred on the
+ * box; when r->has_corner, the cells have a corner at r->corner instead.  A point is kept
+ * when it lies inside the region or within 1e-9 dx of it (on its surface).  In 2D only x
+ * and z vary and every particle gets y = y_plane.  Returns the number of particles and sets
+ * *X to a malloc'ed array of n*dim coordinates (x,z in 2D; x,y,z in 3D). */
 int sph_fill_region(const sph_region *r, int dim, double dx, double y_plane, double **X);
 
 /* ------------------------------------------------------------------ kernels */
@@ -156,6 +161,10 @@ typedef struct {
     int nbodies;
     const sph_expect_desc *expects;
     int nexpects;
+    /* 1: besides its own files, the run writes the files SoliDualSPHysics names
+     * (DeformStruc_Energies.csv, MeasuringPlData_MK<mk>_PL<k>.csv; docs/xml.md).  Set for
+     * models imported from XML case files. */
+    int compat_outputs;
 
     /* Generated passes. */
     /* Apply velocity boundary conditions at time t (v set, fix bits set). */

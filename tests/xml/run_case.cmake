@@ -1,12 +1,14 @@
 # run_case.cmake — an XML case imports, compiles and runs a few steps.
 #
 #   cmake -DSPHC=sphc -DXML=case.xml -DWORKDIR=dir [-DMAPFACS=1,2,4 -DPARTICLES=a,b,c]
+#         [-DPARTICLES_RANGE=lo,hi] [-DSPHC_ARGS="--xml-fill=gencase"]
 #         [-DEND=1e-5] [-DRUN=OFF] [-DDUMP_CONTAINS=text|text] [-DDUMP_STAGE=ast]
 #         -P run_case.cmake
 #
-# For each mapfac in MAPFACS (default: the case as written) the case is copied with its
-# <mapfac> values replaced, compiled with sphc, and (unless RUN=OFF) run with --end END;
-# it must exit 0 and its summary.json must give the matching number of PARTICLES.
+# For each mapfac in MAPFACS (default: the case as written, compiled where it is) the case
+# is copied with its <mapfac> values replaced, compiled with sphc (and SPHC_ARGS), and
+# (unless RUN=OFF) run with --end END; it must exit 0 and its summary.json must give the
+# matching number of PARTICLES, or a number in [lo, hi] of PARTICLES_RANGE.
 # DUMP_CONTAINS: texts (separated by |) that `sphc --dump=DUMP_STAGE` must print (default
 # stage: model), e.g. the imported box or measurement plane.
 
@@ -23,6 +25,8 @@ if(NOT DEFINED RUN)
 endif()
 string(REPLACE "," ";" MAPFACS "${MAPFACS}")
 string(REPLACE "," ";" PARTICLES "${PARTICLES}")
+string(REPLACE "," ";" PARTICLES_RANGE "${PARTICLES_RANGE}")
+separate_arguments(sphc_args UNIX_COMMAND "${SPHC_ARGS}")
 if(NOT MAPFACS)
   set(MAPFACS "asis")
 endif()
@@ -36,7 +40,7 @@ if(DEFINED DUMP_CONTAINS)
   if(NOT DEFINED DUMP_STAGE)
     set(DUMP_STAGE model)
   endif()
-  execute_process(COMMAND "${SPHC}" --dump=${DUMP_STAGE} "${XML}" RESULT_VARIABLE rc
+  execute_process(COMMAND "${SPHC}" ${sphc_args} --dump=${DUMP_STAGE} "${XML}" RESULT_VARIABLE rc
                   OUTPUT_VARIABLE out ERROR_VARIABLE err)
   string(REPLACE "|" ";" wanted "${DUMP_CONTAINS}")
   foreach(text IN LISTS wanted)
@@ -55,8 +59,12 @@ foreach(mapfac IN LISTS MAPFACS)
   if(NOT mapfac STREQUAL "asis")
     string(REGEX REPLACE "<mapfac value=\"[0-9]+\"" "<mapfac value=\"${mapfac}\"" copy "${copy}")
   endif()
-  file(WRITE "${WORKDIR}/${name}.xml" "${copy}")
-  execute_process(COMMAND "${SPHC}" -o "${WORKDIR}/${name}" "${WORKDIR}/${name}.xml"
+  set(source "${XML}") # as written: files it names are found beside it
+  if(NOT mapfac STREQUAL "asis")
+    set(source "${WORKDIR}/${name}.xml")
+    file(WRITE "${source}" "${copy}")
+  endif()
+  execute_process(COMMAND "${SPHC}" ${sphc_args} -o "${WORKDIR}/${name}" "${source}"
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "sphc ${name}.xml failed (exit ${rc}):\n${out}\n${err}")
@@ -78,6 +86,13 @@ foreach(mapfac IN LISTS MAPFACS)
       list(GET PARTICLES ${index} expected)
       if(NOT particles EQUAL expected)
         message(FATAL_ERROR "${name}: ${particles} particles, expected ${expected}")
+      endif()
+    endif()
+    if(PARTICLES_RANGE)
+      list(GET PARTICLES_RANGE 0 lo)
+      list(GET PARTICLES_RANGE 1 hi)
+      if(particles LESS lo OR particles GREATER hi)
+        message(FATAL_ERROR "${name}: ${particles} particles, expected ${lo} to ${hi}")
       endif()
     endif()
   endif()

@@ -2,10 +2,11 @@
 # model as the case itself.
 #
 #   cmake -DSPHC=sphc -DXML=dir/case.xml -DWORKDIR=dir [-DGOLDEN=case.sph.golden]
-#         -P run_to_sph.cmake
+#         [-DSPHC_ARGS="--xml-fill=gencase"] -P run_to_sph.cmake
 #
 # The printed model is written to WORKDIR/case.sph; `sphc --dump=model` of both must agree
-# except for the first line (model name and file) and the source lines of statements.
+# except for the first line (model name and file), the source lines of statements and the
+# line saying that the imported case also writes SoliDualSPHysics' output files.
 # GOLDEN: the printed model must equal this file (sphc runs in the case's folder, so the
 # first line names the case without folders).
 
@@ -19,8 +20,9 @@ get_filename_component(file "${XML}" NAME)
 get_filename_component(stem "${XML}" NAME_WE)
 file(MAKE_DIRECTORY "${WORKDIR}")
 set(model "${WORKDIR}/${stem}.sph")
+separate_arguments(sphc_args UNIX_COMMAND "${SPHC_ARGS}")
 
-execute_process(COMMAND "${SPHC}" --to-sph "${file}" WORKING_DIRECTORY "${dir}"
+execute_process(COMMAND "${SPHC}" ${sphc_args} --to-sph "${file}" WORKING_DIRECTORY "${dir}"
                 RESULT_VARIABLE rc OUTPUT_VARIABLE printed ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "sphc --to-sph ${file} failed (exit ${rc}):\n${err}")
@@ -28,12 +30,20 @@ endif()
 file(WRITE "${model}" "${printed}")
 
 function(dump src result)
-  execute_process(COMMAND "${SPHC}" --dump=model "${src}"
+  set(args "")
+  if(src STREQUAL XML)
+    set(args ${sphc_args})
+  endif()
+  execute_process(COMMAND "${SPHC}" ${args} --dump=model "${src}"
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "sphc --dump=model ${src} failed (exit ${rc}):\n${err}")
   endif()
-  string(REGEX REPLACE "^[^\n]*\n" "" out "${out}")
+  string(FIND "${out}" "\n" eol)   # the first line names the model and its file
+  math(EXPR eol "${eol} + 1")
+  string(SUBSTRING "${out}" ${eol} -1 out)
+  # An imported case also writes SoliDualSPHysics' files; the printed model does not.
+  string(REGEX REPLACE "  outputs: also SoliDualSPHysics'[^\n]*\n" "" out "${out}")
   string(REGEX REPLACE " \\(line [0-9]+\\)" "" out "${out}")
   set(${result} "${out}" PARENT_SCOPE)
 endfunction()

@@ -1,0 +1,230 @@
+/* xml_shape.c — the drawings of an mk as an sph shape: of a body, or of the auxiliary
+ * geometry of a `near`.
+ *
+ * A <drawbox> is the sph box around the nodes it covers, [first node - dp/2, last node +
+ * dp/2] (xml_geometry.c), a <drawcylinder> the sph cylinder as drawn, a <drawfilevtk> or
+ * <drawfilestl> the sph surface of its file.  A later drawing with another mk takes its
+ * nodes over from the earlier ones, so the shape of an mk is its drawings in drawing order
+ * less the later drawings of other mks that overlap them.
+ *
+ * Bodies (docs/xml.md, "Geometry"): sph fills cell centres inside the shape, so a drawn
+ * cylinder or surface keeps its true volume.  A body whose boxes are joined by other
+ * drawings gets the lattice of GenCase's nodes (`lattice` at pointmin - dp/2), so that its
+ * boxes stay exactly GenCase's.  With --xml-fill=gencase every body with a drawing other
+ * than a box gets that lattice, and so the nodes GenCase would fill: those inside the drawn
+ * shape or on its surface; a cylinder drawn in free drawing mode instead gets the lattice
+ * and the grown cylinder that reproduce the one count known of GenCase's free drawing
+ * (docs/xml.md): a lattice with a cell corner on the axis across it and a layer on the first
+ * end point along it, filled within dp / sqrt(2) of the cylinder. */
+#include <math.h>
+#include <string.h>
+
+#include "diag.h"
+#include "xml_internal.h"
+
+/* Coordinate of node k (a half-integer for a box face) along axis a. */
+static double node_coord(const XmlCtx *x, int a, double k)
+{
+    return xml_snap(x->pmin[a] + k * x->dp, 1e-9 * x->dp);
+}
+
+static void draw_volume(const XmlCtx *x, const XmlDraw *d, double lo[3], double hi[3])
+{
+    for (int a = 0; a < 3; a++) {
+        int flat = x->dim == 2 && a == 1;
+        lo[a] = flat ? 0.0 : node_coord(x, a, (double)d->lo[a] - 0.5);
+        hi[a] = flat ? 0.0 : node_coord(x, a, (double)d->hi[a] + 0.5);
+    }
+}
+
+static Expr *vec3(SrcLoc loc, const double v[3])
+{
+    Expr **args = NULL;
+    int n = 0;
+    for (int a = 0; a < 3; a++)
+        ast_push_expr(&args, &n, ast_num(loc, v[a]));
+    return ast_vec(loc, args, n);
+}
+
+static ShapeExpr *box_shape(const XmlCtx *x, const XmlDraw *d)
+{
+    double lo[3], hi[3];
+    draw_volume(x, d, lo, hi);
+    NamedCall call = {ast_strdup("box"), d->loc, {0}};
+    ast_push_setting(&call.args, ast_setting(d->loc, "from", vec3(d->loc, lo)));
+    ast_push_setting(&call.args, ast_setting(d->loc, "to", vec3(d->loc, hi)));
+    return ast_shape_prim(call);
+}
+
+static ShapeExpr *cylinder_shape(const double a[3], const double b[3], double r, SrcLoc loc)
+{
+    NamedCall call = {ast_strdup("cylinder"), loc, {0}};
+    ast_push_setting(&call.args, ast_setting(loc, "from", vec3(loc, a)));
+    ast_push_setting(&call.args, ast_setting(loc, "to", vec3(loc, b)));
+    ast_push_setting(&call.args, ast_setting(loc, "radius", ast_num(loc, r)));
+    return ast_shape_prim(call);
+}
+
+static ShapeExpr *surface_shape(const XmlDraw *d)
+{
+    NamedCall call = {ast_strdup("surface"), d->loc, {0}};
+    ast_push_setting(&call.args, ast_setting_text(d->loc, "file", d->file));
+    return ast_shape_prim(call);
+}
+
+static ShapeExpr *draw_shape(const XmlCtx *x, const XmlDraw *d)
+{
+    if (d->kind == XD_CYLINDER)
+        return cylinder_shape(d->p[0], d->p[1], d->r, d->loc);
+    if (d->kind == XD_SURFACE)
+        return surface_shape(d);
+    return box_shape(x, d);
+}
+
+static int overlap(const XmlDraw *a, const XmlDraw *b)
+{
+    for (int k = 0; k < 3; k++)
+        if (a->hi[k] < b->lo[k] || b->hi[k] < a->lo[k])
+            return 0;
+    return 1;
+}
+
+/* Whether draw i overlaps one of mk's draws before it. */
+static int takes_over(const XmlCtx *x, int i, int mk)
+{
+    for (int j = 0; j < i; j++)
+        if (x->draws[j].mk == mk && overlap(&x->draws[j], &x->draws[i]))
+            return 1;
+    return 0;
+}
+
+/* mk's drawings in order, less the overlapping later drawings of other mks; `own` (may be
+ * NULL) replaces mk's own drawing number `which` (-1: none). */
+static ShapeExpr *combine(const XmlCtx *x, int mk, SrcLoc loc, int which, ShapeExpr *own)
+{
+    ShapeExpr *s = NULL;
+    for (int i = 0; i < x->ndraws; i++) {
+        const XmlDraw *d = &x->draws[i];
+        if (d->mk == mk) {
+            ShapeExpr *p = i == which ? own : draw_shape(x, d);
+            s = s ? ast_shape_op(loc, '+', s, p) : p;
+        } else if (s && takes_over(x, i, mk)) {
+            s = ast_shape_op(loc, '-', s, draw_shape(x, d));
+        }
+    }
+    return s;
+}
+
+ShapeExpr *xml_mk_shape(const XmlCtx *x, int mk, SrcLoc loc)
+{
+    return combine(x, mk, loc, -1, NULL);
+}
+
+int xml_mk_boxes_only(const XmlCtx *x, int mk)
+{
+    for (int i = 0; i < x->ndraws; i++)
+        if (x->draws[i].mk == mk && x->draws[i].kind != XD_BOX)
+            return 0;
+    return 1;
+}
+
+/* The axis (0..2) a cylinder is parallel to, or -1 for an oblique one. */
+static int cylinder_axis(const XmlDraw *d)
+{
+    double u[3], len = 0;
+    for (int a = 0; a < 3; a++) {
+        u[a] = d->p[1][a] - d->p[0][a];
+        len = fmax(len, fabs(u[a]));
+    }
+    int axis = -1;
+    for (int a = 0; a < 3; a++)
+        if (fabs(u[a]) > 1e-12 * len) {
+            if (axis >= 0)
+                return -1;
+            axis = a;
+        }
+    return axis;
+}
+
+/* GenCase's free drawing of a cylinder as sphc models it (the header comment): the grown
+ * cylinder and the lattice corner. */
+static ShapeExpr *freedraw_cylinder(const XmlCtx *x, const XmlDraw *d, int axis,
+                                    double corner[3])
+{
+    double e = x->dp / sqrt(2.0), a[3], b[3], len = fabs(d->p[1][axis] - d->p[0][axis]);
+    for (int k = 0; k < 3; k++) {
+        double w = k == axis && len > 0 ? (d->p[1][k] - d->p[0][k]) / len : 0.0;
+        a[k] = xml_snap(d->p[0][k] - e * w, 1e-12 * x->dp);
+        b[k] = xml_snap(d->p[1][k] + e * w, 1e-12 * x->dp);
+        corner[k] = xml_snap(k == axis ? d->p[0][k] - 0.5 * x->dp : d->p[0][k], 1e-12 * x->dp);
+    }
+    return cylinder_shape(a, b, xml_snap(d->r + e, 1e-12 * x->dp), d->loc);
+}
+
+/* GenCase's nodes as cell centres: a cell corner at pointmin - dp/2. */
+static void node_corner(const XmlCtx *x, double corner[3])
+{
+    for (int a = 0; a < 3; a++)
+        corner[a] = xml_snap(x->pmin[a] - 0.5 * x->dp, 1e-9 * x->dp);
+}
+
+ShapeExpr *xml_mk_body_shape(const XmlCtx *x, int mk, SrcLoc loc, int *has_corner,
+                             double corner[3])
+{
+    int nown = 0, nboxes = 0, free_cyl = -1;
+    for (int i = 0; i < x->ndraws; i++)
+        if (x->draws[i].mk == mk) {
+            nown++;
+            nboxes += x->draws[i].kind == XD_BOX;
+            if (x->draws[i].kind == XD_CYLINDER && x->draws[i].freedraw && free_cyl < 0)
+                free_cyl = i;
+        }
+    *has_corner = 0;
+    if (!x->opt.fill_gencase) {
+        if (nboxes && nboxes < nown) {
+            *has_corner = 1;
+            node_corner(x, corner);
+        }
+        return xml_mk_shape(x, mk, loc);
+    }
+    if (free_cyl >= 0) {
+        const XmlDraw *d = &x->draws[free_cyl];
+        int axis = cylinder_axis(d);
+        if (nown > 1) {
+            diag_error(d->loc, "<drawcylinder>: with --xml-fill=gencase, a cylinder drawn in free "
+                               "drawing mode (<setfrdrawmode auto=\"true\"/>) must be the only "
+                               "drawing of its mk (%d)", mk);
+            return NULL;
+        }
+        if (axis >= 0) {
+            *has_corner = 1;
+            return combine(x, mk, loc, free_cyl, freedraw_cylinder(x, d, axis, corner));
+        }
+        diag_warning(d->loc, "<drawcylinder>: with --xml-fill=gencase, sphc models free drawing "
+                             "for cylinders along x, y or z only; this one is filled with "
+                             "GenCase's lattice nodes");
+    }
+    if (nboxes < nown) {
+        *has_corner = 1;
+        node_corner(x, corner);
+    }
+    return xml_mk_shape(x, mk, loc);
+}
+
+void xml_mk_bbox(const XmlCtx *x, int mk, double lo[3], double hi[3])
+{
+    for (int a = 0; a < 3; a++) {
+        lo[a] = HUGE_VAL;
+        hi[a] = -HUGE_VAL;
+    }
+    for (int i = 0; i < x->ndraws; i++) {
+        double dl[3], dh[3];
+        if (x->draws[i].mk != mk)
+            continue;
+        draw_volume(x, &x->draws[i], dl, dh);
+        for (int a = 0; a < 3; a++) {
+            lo[a] = fmin(lo[a], dl[a]);
+            hi[a] = fmax(hi[a], dh[a]);
+        }
+    }
+}

@@ -1,0 +1,27 @@
+/* compat.h — the output files SoliDualSPHysics writes, for models imported from its XML case
+ * files (sph_model.compat_outputs; docs/xml.md lists the columns). */
+#ifndef SPHRT_COMPAT_H
+#define SPHRT_COMPAT_H
+
+#include "output.h"
+#include "sphrt.h"
+
+typedef struct {
+    sph_csv energies;     /* DeformStruc_Energies.csv */
+    sph_csv *planes;      /* MeasuringPlData_MK<mk>_PL<k>.csv, one per measurement plane */
+    int nplanes, nbodies, dim;
+} sph_compat;
+
+/* Opens the files in dir with their header lines; 0, or -1 after reporting. */
+int sph_compat_open(sph_compat *c, const sph_model *m, const char *dir);
+/* One energy row: e[0] = t, then strain and kinetic energy of every body (the row of
+ * energies.csv without its total). */
+int sph_compat_energies(sph_compat *c, const double *e);
+/* One row of plane q (counted over all bodies in order): r = t, ux uy uz, fx fy fz. */
+int sph_compat_plane(sph_compat *c, int q, const double r[7]);
+void sph_compat_close(sph_compat *c);
+
+/* The mk of body i: N for a body named mkN (as the XML importer names them), else i + 1. */
+int sph_compat_mk(const sph_model *m, int i);
+
+#endif
