@@ -234,10 +234,16 @@ static void selections(sph_body *b, const sph_body_desc *d)
 {
     b->bc_list = zalloc((size_t)d->nbcs, sizeof(int *));
     b->bc_count = zalloc((size_t)d->nbcs, sizeof(int));
-    for (int k = 0; k < d->nbcs; k++)
-        if (d->bcs[k].has_near)
-            b->bc_count[k] = sph_select_near(b->X, b->n, b->dim, b->y_plane, b->dx,
-                                             &d->bcs[k].near, &b->bc_list[k]);
+    for (int k = 0; k < d->nbcs; k++) {
+        if (!d->bcs[k].has_near)
+            continue;
+        b->bc_count[k] = sph_select_near(b->X, b->n, b->dim, b->y_plane, b->dx,
+                                         &d->bcs[k].near, &b->bc_list[k]);
+        if (b->bc_count[k] == 0)
+            fprintf(stderr, "sph: warning: boundary condition %d of body '%s' is restricted to "
+                            "particles near a shape, and no particle lies within dx = %g of it\n",
+                    k + 1, d->name, b->dx);
+    }
     b->ms_list = zalloc((size_t)d->nmeasures, sizeof(int *));
     b->ms_count = zalloc((size_t)d->nmeasures, sizeof(int));
     for (int k = 0; k < d->nmeasures; k++) {
