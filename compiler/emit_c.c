@@ -378,26 +378,27 @@ static double plane_y(const BodyModel *b)
 static void bodies_desc(Emitter *E)
 {
     const Model *m = E->m;
+    FILE *out = E->out;
     for (int i = 0; i < m->nbodies; i++)
         body_desc_arrays(E, &m->bodies[i]);
-    fputs("static const sph_body_desc BODIES[] = {\n", E->out);
+    fputs("static const sph_body_desc BODIES[] = {\n", out);
     for (int i = 0; i < m->nbodies; i++) {
         const BodyModel *b = &m->bodies[i];
-        fprintf(E->out, "    {\"%s\", {%s_shape, %d, %d, {%.17g, %.17g, %.17g}}, %d, %d, %.17g, "
-                        "%.17g, %.17g, ",
-                b->name, b->name, b->region.n, b->has_lattice, b->lattice[0], b->lattice[1],
-                b->lattice[2], b->refine, b->nbsrange, b->rho0, b->c0,
-                m->dim == 2 ? plane_y(b) : 0.0);
+        fprintf(out, "    {\n        .name = \"%s\",\n", b->name);
+        fprintf(out, "        .region = {%s_shape, %d, %d, {%.17g, %.17g, %.17g}},\n", b->name,
+                b->region.n, b->has_lattice, b->lattice[0], b->lattice[1], b->lattice[2]);
+        fprintf(out, "        .refine = %d,\n        .nbsrange = %d,\n", b->refine, b->nbsrange);
+        fprintf(out, "        .rho0 = %.17g,\n        .c0 = %.17g, /* eq. 59 */\n", b->rho0, b->c0);
+        if (m->dim == 2)
+            fprintf(out, "        .y_plane = %.17g,\n", plane_y(b));
         if (b->nbcs)
-            fprintf(E->out, "%s_bcs, %d, ", b->name, b->nbcs);
-        else
-            fputs("NULL, 0, ", E->out);
+            fprintf(out, "        .bcs = %s_bcs,\n        .nbcs = %d,\n", b->name, b->nbcs);
         if (b->nmeasures)
-            fprintf(E->out, "%s_measures, %d},\n", b->name, b->nmeasures);
-        else
-            fputs("NULL, 0},\n", E->out);
+            fprintf(out, "        .measures = %s_measures,\n        .nmeasures = %d,\n", b->name,
+                    b->nmeasures);
+        fputs("    },\n", out);
     }
-    fputs("};\n\n", E->out);
+    fputs("};\n\n", out);
 }
 
 static void expects(Emitter *E)
