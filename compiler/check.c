@@ -12,18 +12,13 @@
 
 static int name_taken(const Model *m, const char *name, SrcLoc loc)
 {
-    for (int i = 0; i < m->nconsts; i++)
-        if (!strcmp(m->consts[i].name, name)) {
-            diag_error(loc, "'%s' is already defined", name);
-            diag_note(m->consts[i].loc, "previous definition of '%s'", name);
-            return 1;
-        }
-    for (int i = 0; i < m->nfns; i++)
-        if (!strcmp(m->fns[i].name, name)) {
-            diag_error(loc, "'%s' is already defined", name);
-            diag_note(m->fns[i].loc, "previous definition of '%s'", name);
-            return 1;
-        }
+    const ConstDef *c = model_find_const(m, name);
+    const FnDef *f = model_find_fn(m, name);
+    if (c || f) {
+        diag_error(loc, "'%s' is already defined", name);
+        diag_note(c ? c->loc : f->loc, "previous definition of '%s'", name);
+        return 1;
+    }
     if (builtin_variable(name) >= 0 || builtin_function_arity(name) >= 0) {
         diag_error(loc, "'%s' is a built-in name and cannot be redefined", name);
         return 1;

@@ -13,17 +13,9 @@ static int in_scope(const ExprScope *s, const char *name)
     return 0;
 }
 
-static int is_const(const Model *m, const char *name)
-{
-    for (int i = 0; i < m->nconsts; i++)
-        if (strcmp(m->consts[i].name, name) == 0)
-            return 1;
-    return 0;
-}
-
 static int check_name(const ExprScope *s, const Expr *e)
 {
-    if (in_scope(s, e->name) || is_const(s->model, e->name))
+    if (in_scope(s, e->name) || model_find_const(s->model, e->name))
         return 0;
     if (builtin_variable(e->name) >= 0) {
         if (s->allow_vars)

@@ -15,11 +15,10 @@ static void name(FILE *out, const EmitScope *s, const char *n)
             fprintf(out, "%s%s", s->prefix, n);
             return;
         }
-    for (int i = 0; i < s->model->nconsts; i++)
-        if (!strcmp(s->model->consts[i].name, n)) {
-            fprintf(out, "k_%s", n);
-            return;
-        }
+    if (model_find_const(s->model, n)) {
+        fprintf(out, "k_%s", n);
+        return;
+    }
     fprintf(out, "p->%s", n); /* a particle variable (checked) */
 }
 
@@ -119,12 +118,8 @@ void emit_expr(FILE *out, const EmitScope *s, const Expr *e)
 
 int expr_uses_variables(const Model *m, const Expr *e)
 {
-    if (e->kind == EX_NAME) {
-        for (int i = 0; i < m->nconsts; i++)
-            if (!strcmp(m->consts[i].name, e->name))
-                return 0;
-        return builtin_variable(e->name) >= 0;
-    }
+    if (e->kind == EX_NAME)
+        return !model_find_const(m, e->name) && builtin_variable(e->name) >= 0;
     for (int i = 0; i < e->nargs; i++)
         if (expr_uses_variables(m, e->args[i]))
             return 1;

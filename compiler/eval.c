@@ -7,7 +7,7 @@
 
 #include "eval.h"
 
-static const ConstDef *find_const(const Model *m, const char *name)
+const ConstDef *model_find_const(const Model *m, const char *name)
 {
     for (int i = 0; i < m->nconsts; i++)
         if (strcmp(m->consts[i].name, name) == 0)
@@ -31,7 +31,7 @@ static int eval_name(const Model *m, const Expr *e, const EvalEnv *env, double *
                 *out = s->values[i];
                 return EVAL_OK;
             }
-    const ConstDef *c = find_const(m, e->name);
+    const ConstDef *c = model_find_const(m, e->name);
     if (c) {
         *out = c->value;
         return EVAL_OK;

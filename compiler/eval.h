@@ -20,6 +20,8 @@ typedef struct EvalEnv {
  * EVAL_NOT_CONSTANT (it needs a variable that env does not provide) or EVAL_ERROR. */
 int eval_expr(const Model *m, const Expr *e, const EvalEnv *env, double *out);
 
+/* The `let` constant or `fn` of that name, or NULL. */
+const ConstDef *model_find_const(const Model *m, const char *name);
 const FnDef *model_find_fn(const Model *m, const char *name);
 
 #endif
