@@ -143,14 +143,15 @@ typedef enum {
     BI_SETTING,  /* refine 4, viscosity 0.015, 0.01  */
     BI_BC,       /* velocity / force                  */
     BI_MEASURE,  /* measure ...                       */
-    BI_NOTCH     /* notch [p1] [p2] [p3] [p4] (fracture, later) */
+    BI_NOTCH,    /* notch [p1] [p2] [p3] [p4]   (points in `measure`) */
+    BI_FRACTURE  /* fracture(Gc 3, length 0.125e-3, limit 0.1)  (in `material`) */
 } BodyItemKind;
 
 typedef struct {
     BodyItemKind kind;
     SrcLoc loc;
     ShapeExpr *shape;
-    NamedCall material;
+    NamedCall material; /* BI_MATERIAL, BI_FRACTURE */
     Setting setting;
     BcDecl bc;
     MeasureDecl measure;

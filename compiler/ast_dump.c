@@ -235,6 +235,9 @@ static void dump_bodyitem(const BodyItem *b, FILE *out, int depth)
         dump_points(&b->measure, out);
         fputc(')', out);
         break;
+    case BI_FRACTURE:
+        dump_call(&b->material, out);
+        break;
     }
 }
 

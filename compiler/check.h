@@ -23,6 +23,11 @@ int check_vec3(const Model *m, const Expr *e, const char *what, double out[3]);
 int check_body(Model *m, const BodyDecl *d, BodyModel *b);
 int check_region(const Model *m, const ShapeExpr *s, Region *r);
 
+/* Fracture (check_fracture.c): a fracture(...), notch or restrict item of a body, and
+ * the body's consistency once all its items are read. */
+int check_fracture_item(const Model *m, const BodyItem *it, FractureModel *f);
+int check_fracture_body(const BodyModel *b, const BodyDecl *d);
+
 /* Elastic constants (elastic.c): from the named arguments of a material use. */
 typedef struct {
     int has_E, has_nu, has_lambda, has_mu, has_K;

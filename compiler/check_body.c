@@ -400,7 +400,7 @@ static int check_setting(const Model *m, const Setting *s, BodyModel *b)
     if (!strcmp(s->key, "lattice"))
         return check_lattice(m, s, b);
     diag_error(s->loc, "unknown body setting '%s' (expected refine, nbsrange, viscosity, "
-                       "hourglass or lattice)",
+                       "hourglass, lattice or restrict)",
                s->key);
     return -1;
 }
@@ -480,6 +480,8 @@ static int check_item(Model *m, const BodyItem *it, BodyModel *b, int *nshape, i
         }
         return check_material_use(m, &it->material, b);
     case BI_SETTING:
+        if (!strcmp(it->setting.key, "restrict"))
+            return check_fracture_item(m, it, &b->fracture);
         return check_setting(m, &it->setting, b);
     case BI_BC:
         return check_bc(m, &it->bc, &b->bcs[b->nbcs++]);
@@ -491,9 +493,8 @@ static int check_item(Model *m, const BodyItem *it, BodyModel *b, int *nshape, i
             }
         return check_measure(m, &it->measure, &b->measures[b->nmeasures++]);
     case BI_NOTCH:
-        diag_error(it->loc, "notches need fracture, which this version of sphc does not "
-                            "support yet");
-        return -1;
+    case BI_FRACTURE:
+        return check_fracture_item(m, it, &b->fracture);
     }
     return -1;
 }
@@ -518,5 +519,7 @@ int check_body(Model *m, const BodyDecl *d, BodyModel *b)
         diag_error(d->loc, "body '%s' has no material", d->name);
         bad = 1;
     }
+    if (!bad)
+        bad |= check_fracture_body(b, d) != 0;
     return bad ? -1 : 0;
 }

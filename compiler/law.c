@@ -32,6 +32,8 @@ typedef struct {
     Binding *env;
     int nenv, capenv;
     int has_stress, has_energy;
+    int want_tension;  /* evaluate the tension block (fracture) */
+    int in_tension;    /* inside it: stress and energy are S+ and psi+ */
     LawRoots out;
 } Law;
 
@@ -131,6 +133,36 @@ static int t_ddot(Law *L, Val a, Val b)
     for (int k = 0; k < 9; k++)
         acc = sg_binary(L->g, SN_ADD, acc, sg_binary(L->g, SN_MUL, a.t[k], b.t[k]));
     return acc;
+}
+
+/* The positive part of a symmetric tensor, sum of max(lambda_k, 0) q_k q_k^T (eq. 13, 16),
+ * by a runtime routine (runtime/sph_tensor.h).  Its upper triangle is used.  A tensor with
+ * the plane-strain structure (no y coupling, zero yy) takes the 2×2 closed form. */
+static Val t_pos(Law *L, Val a)
+{
+    Val r = {1, -1, {0}};
+    int zero = sg_const(L->g, 0.0);
+    int plane = 1;
+    for (int k = 1; k < 8; k++)
+        plane &= (k == 2 || k == 6) || a.t[k] == zero;
+    if (plane) {
+        int args[3] = {a.t[0], a.t[2], a.t[8]};
+        int ext = sg_ext(L->g, "sph_sym_pos2", args, 3, 3);
+        for (int k = 0; k < 9; k++)
+            r.t[k] = zero;
+        r.t[0] = sg_part(L->g, ext, 0);
+        r.t[2] = r.t[6] = sg_part(L->g, ext, 1);
+        r.t[8] = sg_part(L->g, ext, 2);
+        return r;
+    }
+    int args[9];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            args[3 * i + j] = a.t[i <= j ? 3 * i + j : 3 * j + i];
+    int ext = sg_ext(L->g, "sph_sym_pos3", args, 9, 9);
+    for (int k = 0; k < 9; k++)
+        r.t[k] = sg_part(L->g, ext, k);
+    return r;
 }
 
 /* ------------------------------------------------------------------ expressions */
@@ -241,6 +273,10 @@ static Val tensor_fn(Law *L, const Expr *e, Val a)
         return t_inverse(L, a);
     if (!strcmp(f, "sym"))
         return t_map2(L, SN_MUL, t_map2(L, SN_ADD, a, t_transpose(a)), scalar(sg_const(L->g, 0.5)));
+    if (!strcmp(f, "pos"))
+        return t_pos(L, a);
+    if (!strcmp(f, "neg")) /* A- = A - A+ (eq. 14) */
+        return t_map2(L, SN_SUB, a, t_pos(L, a));
     /* dev(A) = A - tr(A)/3 I */
     int third = sg_binary(L->g, SN_MUL, t_trace(L, a), sg_const(L->g, 1.0 / 3.0));
     return t_map2(L, SN_SUB, a, t_map2(L, SN_MUL, identity(L), scalar(third)));
@@ -248,7 +284,8 @@ static Val tensor_fn(Law *L, const Expr *e, Val a)
 
 static int is_tensor_fn(const char *f)
 {
-    static const char *const names[] = {"transpose", "tr", "det", "inv", "sym", "dev"};
+    static const char *const names[] = {"transpose", "tr", "det", "inv", "sym", "dev",
+                                        "pos", "neg"};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
         if (!strcmp(f, names[i]))
             return 1;
@@ -359,6 +396,38 @@ static Val eval(Law *L, const Expr *e)
 
 /* ------------------------------------------------------------------ statements */
 
+static int statement(Law *L, const MatStmt *s);
+
+/* tension { let ...; energy psi = ...; stress S = ... }: the tensile parts psi+ and S+
+ * (eq. 11, 17, 20, 31), both required; the compressive parts are the rest (psi- = psi -
+ * psi+, S- = S - S+).  Its names are local to it.  Evaluated only for fracture bodies. */
+static int tension_block(Law *L, const MatStmt *blk)
+{
+    if (L->in_tension || (L->has_stress & 2) || (L->has_energy & 2)) {
+        diag_error(blk->loc, "material '%s' has more than one tension block", L->law->name);
+        return -1;
+    }
+    if (!L->want_tension) {
+        L->has_stress |= 2; /* present, not needed by this body */
+        L->has_energy |= 2;
+        return 0;
+    }
+    int mark = L->nenv, bad = 0;
+    L->in_tension = 1;
+    for (int i = 0; i < blk->body.n; i++)
+        bad |= statement(L, &blk->body.items[i]) != 0;
+    L->in_tension = 0;
+    L->nenv = mark;
+    if (!bad && (!(L->has_stress & 2) || !(L->has_energy & 2))) {
+        diag_error(blk->loc, "the tension block of material '%s' needs both 'energy' (psi+) "
+                             "and 'stress' (S+)",
+                   L->law->name);
+        bad = 1;
+    }
+    L->out.has_tension = !bad;
+    return bad ? -1 : 0;
+}
+
 static int statement(Law *L, const MatStmt *s)
 {
     L->g->line = s->loc.line;
@@ -372,33 +441,41 @@ static int statement(Law *L, const MatStmt *s)
         bind(L, s->name, v);
         return 0;
     case MS_STRESS:
-        if (L->has_stress++) {
-            diag_error(s->loc, "material '%s' defines its stress twice", L->law->name);
+        if ((L->in_tension ? 2 : 1) & L->has_stress) {
+            diag_error(s->loc, "material '%s' defines its %sstress twice", L->law->name,
+                       L->in_tension ? "tensile " : "");
             return -1;
         }
+        L->has_stress |= L->in_tension ? 2 : 1;
         v = need_tensor(s->value, eval(L, s->value), "stress");
         if (!ok(v))
             return -1;
-        memcpy(L->out.S, v.t, sizeof v.t);
+        memcpy(L->in_tension ? L->out.Sp : L->out.S, v.t, sizeof v.t);
         bind(L, s->name, v);
         return 0;
     case MS_ENERGY:
-        if (L->has_energy++) {
-            diag_error(s->loc, "material '%s' defines its energy twice", L->law->name);
+        if ((L->in_tension ? 2 : 1) & L->has_energy) {
+            diag_error(s->loc, "material '%s' defines its %senergy twice", L->law->name,
+                       L->in_tension ? "tensile " : "");
             return -1;
         }
+        L->has_energy |= L->in_tension ? 2 : 1;
         v = need_scalar(s->value, eval(L, s->value), "energy");
         if (!ok(v))
             return -1;
-        L->out.psi = v.s;
+        *(L->in_tension ? &L->out.psip : &L->out.psi) = v.s;
         bind(L, s->name, v);
         return 0;
+    case MS_BLOCK:
+        if (!strcmp(s->name, "tension"))
+            return tension_block(L, s);
+        diag_error(s->loc, "unknown block '%s' in a material law (expected tension)", s->name);
+        return -1;
     case MS_STATE:
     case MS_IF:
-    case MS_BLOCK:
         diag_error(s->loc, "%s in material laws is not supported yet (it arrives with "
-                           "plasticity and fracture)",
-                   s->kind == MS_STATE ? "'state'" : s->kind == MS_IF ? "'if'" : "a named block");
+                           "plasticity)",
+                   s->kind == MS_STATE ? "'state'" : "'if'");
         return -1;
     }
     return -1;
@@ -415,10 +492,23 @@ static void bind_F(Law *L, int dim)
     bind(L, "F", F);
 }
 
+/* S = s^2 S+ + (S - S+) (eq. 18), psi = s^2 psi+ + (psi - psi+) (eq. 7). */
+static void degrade(SGraph *g, LawRoots *r)
+{
+    int s = sg_input(g, LAW_INPUT_S);
+    int s2 = sg_binary(g, SN_MUL, s, s);
+    for (int k = 0; k < 9; k++)
+        r->Sd[k] = sg_binary(g, SN_ADD, sg_binary(g, SN_MUL, s2, r->Sp[k]),
+                             sg_binary(g, SN_SUB, r->S[k], r->Sp[k]));
+    r->psid = sg_binary(g, SN_ADD, sg_binary(g, SN_MUL, s2, r->psip),
+                        sg_binary(g, SN_SUB, r->psi, r->psip));
+}
+
 int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *params, int dim,
-              LawRoots *out)
+              int tension, LawRoots *out)
 {
     Law L = {0};
+    L.want_tension = tension;
     L.m = m;
     L.g = g;
     L.law = law;
@@ -429,15 +519,19 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *p
     int bad = 0;
     for (int i = 0; i < law->body.n; i++)
         bad |= statement(&L, &law->body.items[i]) != 0;
-    if (!bad && !L.has_stress) {
+    if (!bad && !(L.has_stress & 1)) {
         diag_error(law->loc, "material '%s' defines no 'stress'", law->name);
         bad = 1;
     }
-    if (!bad && !L.has_energy) {
+    if (!bad && !(L.has_energy & 1)) {
         diag_error(law->loc, "material '%s' defines no 'energy'", law->name);
         bad = 1;
     }
     free(L.env);
+    if (!bad && L.out.has_tension) {
+        L.g->line = law->loc.line; /* the degradation is the law's as a whole */
+        degrade(L.g, &L.out);
+    }
     if (!bad)
         *out = L.out;
     return bad ? -1 : 0;
@@ -454,7 +548,7 @@ int law_check(const Model *m, const MaterialDef *law)
     SGraph g;
     sg_init(&g);
     LawRoots roots;
-    int r = law_build(&g, m, law, NULL, 3, &roots);
+    int r = law_build(&g, m, law, NULL, 3, 1, &roots);
     sg_free(&g);
     return r;
 }

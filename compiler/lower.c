@@ -15,6 +15,8 @@ static void features(const Model *m, const BodyModel *b, BodyPlan *p)
     p->hourglass = b->hourglass > 0;
     p->gravity = m->gravity[0] != 0 || m->gravity[1] != 0 || m->gravity[2] != 0;
     p->symplectic = m->integrator == INTEGRATOR_SYMPLECTIC;
+    p->fracture = b->fracture.on;
+    p->restrict_phase = b->fracture.restrict_expr != NULL;
     for (int k = 0; k < b->nbcs; k++) {
         if (!b->bcs[k].comps)
             continue; /* only out-of-plane components in 2D: nothing to do */
@@ -32,7 +34,7 @@ int lower_model(const Model *m, BodyPlan *plans)
         memset(p, 0, sizeof *p);
         features(m, b, p);
         sg_init(&p->law);
-        bad |= law_build(&p->law, m, b->law, b->law_args, m->dim, &p->roots) != 0;
+        bad |= law_build(&p->law, m, b->law, b->law_args, m->dim, b->fracture.on, &p->roots) != 0;
     }
     return bad ? -1 : 0;
 }
@@ -58,8 +60,9 @@ void plan_dump(const Model *m, FILE *out)
         fprintf(out, "body %s: dim %d, law %s, %s integrator\n", b->name, m->dim, b->law->name,
                 p->symplectic ? "symplectic" : "verlet");
         fprintf(out, "  features: viscosity=%d beta2=%d gravity=%d velocity_bcs=%d "
-                     "force_bcs=%d hourglass=%d fracture=0 plasticity=0 contact=0\n",
-                p->viscosity, p->beta2, p->gravity, p->velocity_bcs, p->force_bcs, p->hourglass);
+                     "force_bcs=%d hourglass=%d fracture=%d restrict=%d plasticity=0 contact=0\n",
+                p->viscosity, p->beta2, p->gravity, p->velocity_bcs, p->force_bcs, p->hourglass,
+                p->fracture, p->restrict_phase);
         fprintf(out, "  material law: %d graph nodes\n", count_ops(&p->law));
         int roots[10];
         memcpy(roots, p->roots.S, sizeof p->roots.S);

@@ -54,6 +54,19 @@ typedef struct {
     SrcLoc loc;
 } MeasureModel;
 
+/* Phase-field fracture of a body (paper section 2.2, eq. 6-9, 61-63). */
+typedef struct {
+    int on;
+    SrcLoc loc;                    /* the fracture(...) item */
+    double Gc;                     /* critical energy release rate, J/m^2 */
+    double eps0;                   /* phase-field length scale, m */
+    double limit;                  /* s_l of eq. 63: F = I where s <= s_l */
+    double (*notches)[4][3];       /* quads; pairs crossing one are cut at set-up */
+    int nnotches;
+    Expr *restrict_expr;           /* lower bound of s per particle (skip: none), or NULL */
+    SrcLoc restrict_loc;
+} FractureModel;
+
 typedef struct {
     char *name;
     SrcLoc loc;
@@ -72,6 +85,7 @@ typedef struct {
     int nbcs;
     MeasureModel *measures;
     int nmeasures;
+    FractureModel fracture;
 } BodyModel;
 
 typedef struct {

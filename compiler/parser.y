@@ -251,7 +251,7 @@ static void report_unclosed(ParseState *ps, const YYLTYPE *at, int at_eof, const
 %token VELOCITY "velocity" FORCE "force" POINT "point" SURFACE "surface" ACCEL "accel"
 %token FROM "from" TO "to" NEAR "near" MEASURE "measure" PLANE "plane"
 %token EXPECT "expect" REFERENCE "reference" WITHIN "within"
-%token AND "and" OR "or" NOT "not" SKIP "skip" NOTCH "notch"
+%token AND "and" OR "or" NOT "not" SKIP "skip" NOTCH "notch" FRACTURE "fracture"
 %token LE "<=" GE ">=" EQ "==" NE "!="
 
 %nterm <SettingList> settings namedargs namedargs_opt
@@ -400,6 +400,8 @@ bodyitem
                                                            $4, $5, $6, $7); }
     | NOTCH vec vec vec vec             { $$ = points_item(BI_NOTCH, LOC(@1), NULL, LOC(@1),
                                                            $2, $3, $4, $5); }
+    | FRACTURE '(' namedargs_opt ')'    { $$ = new_bodyitem(BI_FRACTURE, LOC(@1));
+                                          $$.material = (NamedCall){ ast_strdup("fracture"), LOC(@1), $3 }; }
     | setting                           { $$ = new_bodyitem(BI_SETTING, $1.loc); $$.setting = $1; }
     ;
 

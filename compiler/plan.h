@@ -14,6 +14,8 @@ typedef struct {
     int velocity_bcs;   /* any velocity BC */
     int force_bcs;      /* any force BC */
     int symplectic;
+    int fracture;       /* phase-field fracture (eq. 6-9, 61-63) */
+    int restrict_phase; /* a lower bound on its phase field */
     SGraph law;         /* the material law, constants folded, for this body's dimension */
     LawRoots roots;
 } BodyPlan;

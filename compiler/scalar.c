@@ -33,6 +33,8 @@ static unsigned hash_node(const SNode *s)
     if (s->fn)
         for (const char *p = s->fn; *p; p++)
             h = h * 31u + (unsigned char)*p;
+    for (int k = 0; k < s->nargs; k++)
+        h = h * 131u + (unsigned)(s->args[k] + 17);
     return h;
 }
 
@@ -41,6 +43,8 @@ static int same_node(const SNode *x, const SNode *y)
     if (x->op != y->op || x->a != y->a || x->b != y->b || x->c != y->c)
         return 0;
     if (memcmp(&x->v, &y->v, sizeof x->v) != 0)
+        return 0;
+    if (x->nargs != y->nargs || memcmp(x->args, y->args, (size_t)x->nargs * sizeof(int)))
         return 0;
     return (!x->fn && !y->fn) || (x->fn && y->fn && !strcmp(x->fn, y->fn));
 }
@@ -85,7 +89,7 @@ static int intern(SGraph *g, SNode s)
 
 static SNode node(SnOp op, int a, int b, int c)
 {
-    SNode s = {op, a, b, c, 0.0, NULL, 0, NULL};
+    SNode s = {.op = op, .a = a, .b = b, .c = c};
     return s;
 }
 
@@ -252,6 +256,22 @@ int sg_select(SGraph *g, int c, int a, int b)
     return intern(g, node(SN_SELECT, c, a, b));
 }
 
+int sg_ext(SGraph *g, const char *fn, const int *args, int nargs, int nout)
+{
+    SNode s = node(SN_EXT, -1, nout, -1);
+    s.fn = fn;
+    s.nargs = nargs;
+    memcpy(s.args, args, (size_t)nargs * sizeof(int));
+    return intern(g, s);
+}
+
+int sg_part(SGraph *g, int ext, int k)
+{
+    SNode s = node(SN_PART, ext, -1, -1);
+    s.v = k;
+    return intern(g, s);
+}
+
 /* ------------------------------------------------------------------ emission */
 
 static int is_leaf(const SNode *s)
@@ -268,9 +288,14 @@ void sg_ref(const SGraph *g, int id, FILE *out)
         else
             fprintf(out, "%.17g", s->v);
     } else if (s->op == SN_INPUT) {
-        fprintf(out, "F[%d]", (int)s->v);
+        if ((int)s->v < 9)
+            fprintf(out, "F[%d]", (int)s->v);
+        else
+            fputs("s", out); /* the phase field (LAW_INPUT_S) */
     } else if (s->op == SN_PARAM) {
         fprintf(out, "p%d", (int)s->v);
+    } else if (s->op == SN_PART) {
+        fprintf(out, "t%d[%d]", s->a, (int)s->v);
     } else {
         fprintf(out, "t%d", id);
     }
@@ -323,9 +348,31 @@ static void mark(const SGraph *g, int id, char *live)
     if (id < 0 || live[id])
         return;
     live[id] = 1;
-    mark(g, g->nodes[id].a, live);
-    mark(g, g->nodes[id].b, live);
-    mark(g, g->nodes[id].c, live);
+    const SNode *s = &g->nodes[id];
+    if (s->op == SN_EXT) {
+        for (int k = 0; k < s->nargs; k++)
+            mark(g, s->args[k], live);
+        return;
+    }
+    mark(g, s->a, live);
+    mark(g, s->b, live);
+    mark(g, s->c, live);
+}
+
+/* double tN[nout]; fn(a0, a1, a2, tN);  or  fn((const double[n]){a0, ...}, tN); */
+static void emit_ext(const SGraph *g, int id, FILE *out, const char *indent)
+{
+    const SNode *s = &g->nodes[id];
+    int packed = s->nargs > 4;
+    fprintf(out, "%sdouble t%d[%d];\n%s%s(", indent, id, s->b, indent, s->fn);
+    if (packed)
+        fprintf(out, "(const double[%d]){", s->nargs);
+    for (int k = 0; k < s->nargs; k++) {
+        if (k)
+            fputs(", ", out);
+        sg_ref(g, s->args[k], out);
+    }
+    fprintf(out, "%s, t%d);\n", packed ? "}" : "", id);
 }
 
 void sg_emit(const SGraph *g, const int *roots, int nroots, FILE *out, const char *indent)
@@ -337,7 +384,7 @@ void sg_emit(const SGraph *g, const int *roots, int nroots, FILE *out, const cha
     const char *file = NULL;
     for (int id = 0; id < g->n; id++) {
         const SNode *s = &g->nodes[id];
-        if (!live[id] || is_leaf(s))
+        if (!live[id] || is_leaf(s) || s->op == SN_PART)
             continue;
         if (s->line != line || s->file != file) {
             line = s->line;
@@ -345,6 +392,10 @@ void sg_emit(const SGraph *g, const int *roots, int nroots, FILE *out, const cha
             if (file)
                 fprintf(out, "%s/* %s:%d: %s */\n", indent, source_basename(file), line,
                         source_line_trimmed(file, line));
+        }
+        if (s->op == SN_EXT) {
+            emit_ext(g, id, out, indent);
+            continue;
         }
         fprintf(out, "%sconst double t%d = ", indent, id);
         emit_node(g, id, out);

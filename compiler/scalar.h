@@ -16,14 +16,20 @@ typedef enum {
     SN_ADD, SN_SUB, SN_MUL, SN_DIV, SN_NEG, SN_POW, SN_MIN, SN_MAX,
     SN_LT, SN_LE, SN_GT, SN_GE, SN_EQ, SN_NE, SN_AND, SN_OR, SN_NOT,
     SN_CALL,   /* fn(a): sqrt, log, ... */
-    SN_SELECT  /* a ? b : c */
+    SN_SELECT, /* a ? b : c */
+    SN_EXT,    /* fn(args..., out): a runtime routine with b outputs (sph_sym_pos3, ...) */
+    SN_PART    /* output (int)v of the SN_EXT node a */
 } SnOp;
+
+#define SG_MAX_ARGS 9
 
 typedef struct {
     SnOp op;
     int a, b, c;        /* operands (node ids), -1 when unused */
     double v;           /* SN_CONST value, SN_INPUT / SN_PARAM index */
-    const char *fn;     /* SN_CALL: C function name (static string) */
+    const char *fn;     /* SN_CALL, SN_EXT: C function name (static string) */
+    int args[SG_MAX_ARGS]; /* SN_EXT operands */
+    int nargs;
     int line;           /* model line of the statement that created it */
     const char *file;
 } SNode;
@@ -47,6 +53,11 @@ int sg_binary(SGraph *g, SnOp op, int a, int b);
 int sg_unary(SGraph *g, SnOp op, int a);         /* SN_NEG, SN_NOT */
 int sg_call(SGraph *g, const char *fn, int a);   /* fn: a C math function name */
 int sg_select(SGraph *g, int c, int a, int b);
+/* A call of a runtime routine with nargs scalar inputs and nout outputs; its outputs are
+ * sg_part(g, ext, k).  Emitted as `double tN[nout]; fn(a0, ..., tN);` (inputs passed as
+ * one array when there are more than four). */
+int sg_ext(SGraph *g, const char *fn, const int *args, int nargs, int nout);
+int sg_part(SGraph *g, int ext, int k);
 
 int sg_is_const(const SGraph *g, int id, double *v);
 

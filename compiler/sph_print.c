@@ -265,6 +265,9 @@ static void print_body_item(const BodyItem *it, FILE *out)
         fputs("notch", out);
         print_points(it->measure.points, out);
         break;
+    case BI_FRACTURE:
+        print_call(&it->material, ", ", out);
+        break;
     }
     fputc('\n', out);
 }

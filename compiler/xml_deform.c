@@ -7,6 +7,7 @@
  *     <u_mu value=".."/> <u_bulk value=".."/>                 shear .., bulk ..)
  *     <constitmodel value="1"/>              (1 svk, 2 neohookean; 3 J2: not supported yet)
  *     <artvisc factor1=".." factor2=".."/>   viscosity .., ..   (default 0.2, 0)
+ *     <fracture value="1"/> <Gc ../> ..      fracture(..), notch .., restrict ..  (xml_fracture.c)
  *     <bcvel ../> <bcforce ../>              velocity .. / force ..  (xml_bc.c)
  *     <measureplane> ..                      measure planeK plane ..  (xml_bc.c)
  *   </deformstrucbody>
@@ -15,8 +16,8 @@
  * is the three-dimensional bulk modulus (the sph language's `bulk`, also in 2D); with
  * --xml-elastic2d=sdsph a 2D case's constants are those of 2D elasticity, as
  * SoliDualSPHysics reads them (elastic_args_2d).
- * Fracture, J2 plasticity and contact cards are read and checked, then reported as not
- * supported yet. */
+ * J2 plasticity and contact cards are read and checked, then reported as not supported
+ * yet. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,7 +35,8 @@ typedef struct {
     double density, el[EL_N], beta1, beta2;
     SrcLoc density_loc, el_loc[EL_N], model_loc, visc_loc, refine_loc, nbs_loc;
     long model, refine, nbsrange;
-    const xmlNode *fracture_card, *plastic_card, *first_phase; /* the first of each */
+    const xmlNode *fracture_card, *plastic_card; /* the last <fracture>, the first J2 card */
+    XmlFracture frac;
 } Cards;
 
 static const char *const ELASTIC_CARDS[EL_N] = {"youngmod", "poissratio", "u_lambda", "u_mu",
@@ -93,40 +95,8 @@ static int whole_card(const XmlCtx *x, const xmlNode *n, long lo, long hi, long 
     return xml_integer(x, n, "value", 1, lo, hi, v) == 1 ? 0 : -1;
 }
 
-static int phase_card(const XmlCtx *x, const xmlNode *n)
-{
-    double v;
-    if (xml_is(n, "notch")) {
-        static const char *const corners[] = {"p1", "p2", "p3", "p4", NULL};
-        int bad = xml_check_children(x, n, corners) != 0;
-        for (int k = 0; corners[k]; k++) {
-            const xmlNode *p = xml_child(n, corners[k]);
-            double q[3];
-            if (!p) {
-                diag_error(xml_loc(x, n), "<notch> needs <%s>", corners[k]);
-                bad = 1;
-            } else {
-                bad |= xml_point(x, p, q) != 0;
-            }
-        }
-        return bad ? -1 : 0;
-    }
-    if (xml_is(n, "restrictphi")) {
-        long id;
-        if (whole_card(x, n, 0, 1000000000, &id))
-            return -1;
-        if (!xml_user_expr(x, id)) {
-            diag_error(xml_loc(x, n), "<restrictphi> attribute 'value': expression %ld is not "
-                                      "defined in <mathexpressions>", id);
-            return -1;
-        }
-        return 0;
-    }
-    return positive_value(x, n, &v);
-}
-
-/* Cards of fracture (phase field), plasticity and contact: checked, and the first of each
- * kind kept for unsupported(); 1 when n is none of them. */
+/* Cards of fracture (phase field), plasticity and contact: checked, and kept for
+ * special_models(); 1 when n is none of them. */
 static int other_card(XmlCtx *x, const xmlNode *n, Cards *c)
 {
     double v;
@@ -140,12 +110,7 @@ static int other_card(XmlCtx *x, const xmlNode *n, Cards *c)
     }
     if (xml_is(n, "restcoef") || xml_is(n, "kfric"))
         return xml_card_number(x, n, &v) || nonnegative(x, n, "value", v);
-    if (xml_is(n, "Gc") || xml_is(n, "pflenscale") || xml_is(n, "pflim") ||
-        xml_is(n, "restrictphi") || xml_is(n, "notch")) {
-        c->first_phase = c->first_phase ? c->first_phase : n;
-        return phase_card(x, n);
-    }
-    return 1;
+    return xml_fracture_card(x, n, &c->frac);
 }
 
 /* One card of pass 1; 1 when it is not one of these cards. */
@@ -219,23 +184,23 @@ static int elastic_option(const Cards *c)
     return 0;
 }
 
-/* Fracture, plasticity: reported as not supported yet; their cards without them ignored. */
-static int unsupported(const XmlCtx *x, const Cards *c)
+/* J2 plasticity is not supported yet; SoliDualSPHysics turns fracture off under it, so its
+ * error comes first.  Fracture needs its cards (xml_fracture_check).  The cards of either
+ * without it are ignored with a warning. */
+static int special_models(const XmlCtx *x, const Cards *c)
 {
     if (c->model == 3) {
         diag_error(c->model_loc, "<constitmodel>: J2 plasticity (value 3) is not supported yet");
         return -1;
     }
-    if (c->fracture) {
-        diag_error(xml_loc(x, c->fracture_card), "<fracture>: fracture is not supported yet");
-        return -1;
-    }
     if (c->plastic_card)
         diag_warning(xml_loc(x, c->plastic_card), "<%s> is ignored: only J2 plasticity "
                      "(<constitmodel value=\"3\"/>) uses it", xml_name(c->plastic_card));
-    if (c->first_phase)
-        diag_warning(xml_loc(x, c->first_phase), "<%s> is ignored without <fracture "
-                     "value=\"true\"/>", xml_name(c->first_phase));
+    if (c->fracture)
+        return xml_fracture_check(x, &c->frac, c->fracture_card, c->mk);
+    if (c->frac.first)
+        diag_warning(xml_loc(x, c->frac.first), "<%s> is ignored without <fracture "
+                     "value=\"true\"/>", xml_name(c->frac.first));
     return 0;
 }
 
@@ -330,6 +295,8 @@ static int push_settings(XmlCtx *x, const Cards *c, BodyDecl *b)
     if (c->beta2 != 0)
         ast_push_expr(&visc.values, &visc.nvalues, ast_num(vl, c->beta2));
     push_item(b, BI_SETTING, vl, visc);
+    if (c->fracture)
+        xml_fracture_items(x, &c->frac, c->fracture_card, b);
     return 0;
 }
 
@@ -356,7 +323,7 @@ static int read_cards(XmlCtx *x, const xmlNode *n, Cards *c)
                    c->mk);
         bad = 1;
     }
-    if (bad || elastic_option(c) || unsupported(x, c))
+    if (bad || elastic_option(c) || special_models(x, c))
         return -1;
     return 0;
 }

@@ -8,6 +8,7 @@
  *   xml_shape.c     the drawings of an mk as an sph shape (and lattice) of a body or `near`
  *   xml_mathexpr.c  <mathexpressions>: user expressions and their locals (lets)
  *   xml_deform.c    <deformstrucs>: bodies, material and settings cards
+ *   xml_fracture.c  the phase-field fracture cards of a body
  *   xml_bc.c        <bcvel>, <bcforce>, <measureplane> of a body
  *
  * Every value keeps the line of its element: errors read "file:line: error: <elem>: ...". */
@@ -162,5 +163,31 @@ int xml_deformstrucs(XmlCtx *x, const xmlNode *deformstrucs);
  * refine its mapfac (for the measurement-plane rule). */
 int xml_bc(XmlCtx *x, const xmlNode *n, int mk, BodyDecl *body);
 int xml_measureplane(XmlCtx *x, const xmlNode *n, int mk, int refine, BodyDecl *body);
+
+/* ---------------------------------------------------------------- xml_fracture.c */
+
+/* The cards <Gc>, <pflenscale>, <pflim>, in that order. */
+enum { XF_GC, XF_LENGTH, XF_LIMIT, XF_N };
+
+/* The fracture cards of one body, read whether or not <fracture> turns fracture on. */
+typedef struct {
+    const xmlNode *first;          /* the first fracture card (for the warning when off) */
+    const xmlNode *card[XF_N];     /* the last <Gc>, <pflenscale>, <pflim>; NULL: absent */
+    double value[XF_N];
+    const xmlNode *restrict_card;  /* <restrictphi>, or NULL */
+    long restrict_id;              /* the <userexpression> it names */
+    BodyItem *notches;             /* BI_NOTCH items, one per <notch> */
+    int nnotches;
+} XmlFracture;
+
+/* Reads and checks n into f when it is one of the cards above, <notch> or <restrictphi>:
+ * 0, or -1 after reporting; 1 when n is none of them. */
+int xml_fracture_card(const XmlCtx *x, const xmlNode *n, XmlFracture *f);
+/* With fracture on (the card `fracture`): <Gc> and <pflenscale> are required; -1 after
+ * reporting each one missing, naming body mk. */
+int xml_fracture_check(const XmlCtx *x, const XmlFracture *f, const xmlNode *fracture, int mk);
+/* The body items of fracture on: fracture(Gc, length, limit), restrict, the notches. */
+void xml_fracture_items(const XmlCtx *x, const XmlFracture *f, const xmlNode *fracture,
+                        BodyDecl *b);
 
 #endif

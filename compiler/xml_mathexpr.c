@@ -25,7 +25,7 @@ static int is_keyword(const char *s)
         "import", "scene", "let", "fn", "material", "body", "shape", "stress", "energy",
         "state", "if", "else", "velocity", "force", "point", "surface", "accel", "from", "to",
         "near", "measure", "plane", "expect", "reference", "within", "and", "or", "not",
-        "skip", "Skip", "notch", NULL};
+        "skip", "Skip", "notch", "fracture", NULL};
     for (int i = 0; words[i]; i++)
         if (!strcmp(s, words[i]))
             return 1;

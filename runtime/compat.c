@@ -26,17 +26,18 @@ int sph_compat_mk(const sph_model *m, int i)
 
 static int open_energies(sph_compat *c, const sph_model *m, const char *dir)
 {
-    int ncol = 1 + 2 * m->nbodies;
+    int ncol = 1 + 3 * m->nbodies, q = 1;
     char **cols = calloc((size_t)ncol, sizeof *cols), path[4096];
     cols[0] = strdup("Time");
     for (int i = 0; i < m->nbodies; i++) {
-        char col[96];
-        int mk = sph_compat_mk(m, i);
-        snprintf(col, sizeof col, "mkbound_%d_STRAIN_ENERGY", mk);
-        cols[1 + 2 * i] = strdup(col);
-        snprintf(col, sizeof col, "mkbound_%d_KINETIC_ENERGY", mk);
-        cols[2 + 2 * i] = strdup(col);
+        static const char *const kinds[] = {"STRAIN", "KINETIC", "FRACTURE"};
+        for (int k = 0; k < (c->fracture[i] ? 3 : 2); k++) {
+            char col[96];
+            snprintf(col, sizeof col, "mkbound_%d_%s_ENERGY", sph_compat_mk(m, i), kinds[k]);
+            cols[q++] = strdup(col);
+        }
     }
+    ncol = q;
     snprintf(path, sizeof path, "%s/DeformStruc_Energies.csv", dir);
     int bad = sph_csv_open_sep(&c->energies, path, (const char *const *)cols, ncol, '\t');
     for (int k = 0; k < ncol; k++)
@@ -62,8 +63,11 @@ int sph_compat_open(sph_compat *c, const sph_model *m, const char *dir)
     memset(c, 0, sizeof *c);
     c->dim = m->dim;
     c->nbodies = m->nbodies;
-    for (int i = 0; i < m->nbodies; i++)
+    c->fracture = calloc((size_t)m->nbodies + 1, 1);
+    for (int i = 0; i < m->nbodies; i++) {
         c->nplanes += m->bodies[i].nmeasures;
+        c->fracture[i] = m->bodies[i].fracture != NULL;
+    }
     c->planes = calloc((size_t)c->nplanes + 1, sizeof *c->planes);
     int bad = open_energies(c, m, dir) != 0, q = 0;
     for (int i = 0; i < m->nbodies; i++)
@@ -74,7 +78,18 @@ int sph_compat_open(sph_compat *c, const sph_model *m, const char *dir)
 
 int sph_compat_energies(sph_compat *c, const double *e)
 {
-    return sph_csv_row(&c->energies, e);
+    double *row = calloc(1 + 3 * (size_t)c->nbodies, sizeof(double));
+    int q = 0, f = 1 + 2 * c->nbodies;
+    row[q++] = e[0];
+    for (int i = 0; i < c->nbodies; i++) {
+        row[q++] = e[1 + 2 * i];
+        row[q++] = e[2 + 2 * i];
+        if (c->fracture[i])
+            row[q++] = e[f++];
+    }
+    int bad = sph_csv_row(&c->energies, row);
+    free(row);
+    return bad;
 }
 
 int sph_compat_plane(sph_compat *c, int q, const double r[7])
@@ -94,6 +109,8 @@ void sph_compat_close(sph_compat *c)
     for (int q = 0; q < c->nplanes; q++)
         sph_csv_close(&c->planes[q]);
     free(c->planes);
+    free(c->fracture);
+    c->fracture = NULL;
     c->planes = NULL;
     c->nplanes = 0;
 }

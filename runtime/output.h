@@ -14,7 +14,8 @@ int sph_mkdirs(const char *path);
  * "raw" appended data with UInt64 headers, Float64 values.  Points are the current positions
  * X+u in 3D (2D: y = body->y_plane).  Point data: "displacement" (3), "velocity" (3),
  * "cauchy_stress" (6 components xx yy zz xy yz zx, from body->sigma), "sigma_vm" (von Mises),
- * "J" (det F), "strain_energy" (psi). */
+ * "J" (det F), "strain_energy" (psi); with fracture also
+ * "phase_field" (s) and "history" (H, eq. 8). */
 int sph_write_vtu(const char *path, const sph_body *b, double t);
 
 /* A ParaView collection (.pvd) listing files[k] (relative to the pvd) at times[k]. */

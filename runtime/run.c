@@ -47,6 +47,14 @@ static char *joinf(const char *fmt, const char *a, const char *b)
     return s;
 }
 
+static int energy_columns(const sph_model *m)
+{
+    int n = 2 + 2 * m->nbodies;
+    for (int i = 0; i < m->nbodies; i++)
+        n += m->bodies[i].fracture != NULL;
+    return n;
+}
+
 static int open_outputs(run_state *r)
 {
     const sph_model *m = r->m;
@@ -55,17 +63,25 @@ static int open_outputs(run_state *r)
     free(dir);
     if (bad)
         return -1;
-    int ncol = 2 * m->nbodies + 2;
-    const char **cols = calloc((size_t)ncol, sizeof *cols);
-    cols[0] = "time";
+    /* time, strain and kinetic energy of each body, fracture energy of each body with
+     * fracture, total */
+    int ncol = energy_columns(m);
+    char **cols = calloc((size_t)ncol, sizeof *cols);
+    cols[0] = joinf("time%s%s", "", "");
+    int c = 1;
     for (int i = 0; i < m->nbodies; i++) {
-        cols[1 + 2 * i] = joinf("%s_strain%s", m->bodies[i].name, "");
-        cols[2 + 2 * i] = joinf("%s_kinetic%s", m->bodies[i].name, "");
+        cols[c++] = joinf("%s_strain%s", m->bodies[i].name, "");
+        cols[c++] = joinf("%s_kinetic%s", m->bodies[i].name, "");
     }
-    cols[ncol - 1] = "total";
+    for (int i = 0; i < m->nbodies; i++)
+        if (m->bodies[i].fracture)
+            cols[c++] = joinf("%s_fracture%s", m->bodies[i].name, "");
+    cols[c] = joinf("total%s%s", "", "");
     char *path = joinf("%s/energies.csv%s", r->opt.out_dir, "");
-    bad = sph_csv_open(&r->energies, path, cols, ncol);
+    bad = sph_csv_open(&r->energies, path, (const char *const *)cols, ncol);
     free(path);
+    for (int k = 0; k < ncol; k++)
+        free(cols[k]);
     free(cols);
     r->rec.measure_base = calloc((size_t)m->nbodies, sizeof(int));
     for (int i = 0; i < m->nbodies; i++) {
@@ -94,12 +110,16 @@ static int open_outputs(run_state *r)
 static int record(run_state *r)
 {
     const sph_sim *s = &r->sim;
-    int ncol = 2 * s->nbodies + 2;
+    int ncol = energy_columns(r->m), c = 1 + 2 * s->nbodies;
     double *row = calloc((size_t)ncol, sizeof(double)), total[2] = {0, 0};
     row[0] = s->t;
     for (int i = 0; i < s->nbodies; i++) {
         sph_body_energies(&s->bodies[i], &row[1 + 2 * i], &row[2 + 2 * i]);
         total[0] += row[1 + 2 * i], total[1] += row[2 + 2 * i];
+        if (s->bodies[i].desc->fracture) { /* stored energy: strain + crack surface */
+            row[c] = sph_fracture_energy(&s->bodies[i]);
+            total[0] += row[c++];
+        }
     }
     row[ncol - 1] = total[0] + total[1];
     int bad = sph_csv_row(&r->energies, row);

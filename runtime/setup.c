@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "internal.h"
+#include "notch.h"
 #include "select.h"
 
 static void *zalloc(size_t n, size_t size)
@@ -89,6 +90,16 @@ static void allocate(sph_body *b)
     b->psi = zalloc(n, sizeof(double));
     b->sigma = zalloc(n * 6, sizeof(double));
     b->fix = zalloc(n, 1);
+    if (!b->desc->fracture)
+        return;
+    b->s = zalloc(n, sizeof(double));
+    for (size_t i = 0; i < n; i++)
+        b->s[i] = 1.0; /* intact */
+    b->sd = zalloc(n, sizeof(double));
+    b->sdd = zalloc(n, sizeof(double));
+    b->H = zalloc(n, sizeof(double));
+    b->lap = zalloc(n, sizeof(double));
+    b->sd_n = zalloc(n, sizeof(double));
 }
 
 /* Eq. 60 for one pair without gathering X_j in the hot loop: w_ij is parallel to X_i - X_j,
@@ -176,6 +187,8 @@ static void offset_tables(sph_body *b, double *w, sph_kernel_kind kernel)
     b->wtab = zalloc((size_t)ntab * D, sizeof(double));
     b->gtab = zalloc((size_t)ntab, sizeof(double));
     b->htab = zalloc((size_t)ntab, sizeof(double));
+    if (b->desc->fracture)
+        b->ltab = zalloc((size_t)ntab, sizeof(double));
     for (int i = 0; i < b->n; i++)
         for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
             int k = lattice ? b->nb_k[p] : p;
@@ -190,6 +203,8 @@ static void offset_tables(sph_body *b, double *w, sph_kernel_kind kernel)
             for (int c = 0; c < D; c++)
                 r2 += dX[c] * dX[c];
             b->htab[k] = b->vol * sph_kernel_w(kernel, D, sqrt(r2), b->h) / (b->rho0 * r2);
+            if (b->ltab) /* eq. 62: 2 V_j (r0 . grad W) / r0^2 = 2 V dW/dr / r */
+                b->ltab[k] = 2 * b->vol * sph_kernel_dwdr_over_r(kernel, D, sqrt(r2), b->h);
         }
 }
 
@@ -276,6 +291,10 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
     order_particles(b);
     sph_neighbours(b->X, b->n, b->dim, 2.0 * b->h, d->nbsrange, b->dx, &b->nb_start, &b->nb);
     b->npairs = b->nb_start[b->n];
+    if (d->fracture && d->fracture->nnotches) /* before the gradients: L sees the cut */
+        b->npairs = sph_drop_notch_pairs(b->X, b->n, b->dim, b->y_plane, b->nb_start, b->nb,
+                                         (const double(*)[4][3])d->fracture->notches,
+                                         d->fracture->nnotches);
     double *w;
     sph_gradients(b->X, b->n, b->dim, b->nb_start, b->nb, m->kernel, b->h, b->vol, &w, &b->L);
     drop_silent_pairs(b, w);
@@ -298,6 +317,8 @@ void sph_body_free(sph_body *b)
     free(b->Q), free(b->Cv), free(b->psi), free(b->sigma), free(b->fix);
     free(b->nb_start), free(b->nb), free(b->nb_k), free(b->wtab), free(b->gtab), free(b->htab);
     free(b->hb_start), free(b->hb), free(b->hb_k), free(b->stripe), free(b->A);
+    free(b->s), free(b->sd), free(b->sdd), free(b->H), free(b->lap), free(b->sd_n);
+    free(b->ltab);
 }
 
 /* ------------------------------------------------------------------ measured quantities */

@@ -112,6 +112,19 @@ typedef struct {
     sph_region near;    /* within dx of this region (reference configuration) */
 } sph_bc_desc;
 
+/* Phase-field fracture of a body (section 2.2; eq. 6-9, 61-63). */
+typedef struct {
+    double p[4][3];
+} sph_quad;
+
+typedef struct {
+    double Gc;             /* critical energy release rate */
+    double eps0;           /* length scale */
+    double limit;          /* s_l of eq. 63 */
+    const sph_quad *notches; /* pairs whose segment crosses a notch are cut at set-up */
+    int nnotches;
+} sph_fracture_desc;
+
 typedef struct sph_body sph_body;
 typedef struct sph_sim sph_sim;
 
@@ -127,6 +140,7 @@ typedef struct {
     int nbcs;
     const sph_measure_desc *measures;
     int nmeasures;
+    const sph_fracture_desc *fracture; /* NULL: no fracture */
 } sph_body_desc;
 
 /* Expectations, checked at the end of the run and written to summary.json. */
@@ -208,6 +222,13 @@ struct sph_body {
     int *stripe;          /* nstripes + 1 particle indices */
     int nstripes;
     double *A;            /* n*dim*dim: sum_j (u_j - u_i) (x) w_ij, the pair part of eq. 53 */
+
+    /* Phase-field fracture (NULL unless the body has fracture). */
+    double *s, *sd, *sdd; /* n phase field (1 intact, 0 broken), ds/dt, d2s/dt2 */
+    double *H;            /* n history field: the largest psi+ so far (eq. 8) */
+    double *lap;          /* n Laplacian of s (eq. 62), summed by the gradient pass */
+    double *sd_n;         /* n symplectic: ds/dt at the start of the step */
+    double *ltab;         /* ntab: 2 V dW/dr / r, so lap_i = sum_j ltab (s_i - s_j) */
     long npairs;          /* neighbour relations, both directions (2 x the half lists) */
 
     int **bc_list;      /* per BC with `near`: particle indices */
@@ -240,6 +261,9 @@ void sph_sim_step(sph_sim *s, double dt);
 void sph_sim_free(sph_sim *s);
 /* Energies of a body: strain (sum V psi) and kinetic (sum m |v|^2 / 2). */
 void sph_body_energies(const sph_body *b, double *strain, double *kinetic);
+/* Fracture energy of a body: sum V Gc ((1 - s)^2 / (4 eps0) + eps0 |grad s|^2); 0 without
+ * fracture. */
+double sph_fracture_energy(const sph_body *b);
 
 /* Component k (0..dim-1) of a compact vector -> 3D axis (0 = x, 1 = y, 2 = z). */
 static inline int sph_axis(int dim, int k) { return dim == 2 ? 2 * k : k; }

@@ -18,6 +18,7 @@
 /* The arrays of a .vtu file, in the order their blocks are appended. */
 typedef enum {
     A_DISPLACEMENT, A_VELOCITY, A_STRESS, A_VON_MISES, A_J, A_ENERGY,
+    A_PHASE, A_HISTORY, /* bodies with fracture only */
     A_POINTS, A_CONNECTIVITY, A_OFFSETS, A_TYPES, A_COUNT
 } array_id;
 
@@ -35,6 +36,8 @@ static const array_info ARRAYS[A_COUNT] = {
     [A_VON_MISES]    = {"sigma_vm", "Float64", 1, sizeof(double)},
     [A_J]            = {"J", "Float64", 1, sizeof(double)},
     [A_ENERGY]       = {"strain_energy", "Float64", 1, sizeof(double)},
+    [A_PHASE]        = {"phase_field", "Float64", 1, sizeof(double)},
+    [A_HISTORY]      = {"history", "Float64", 1, sizeof(double)},
     [A_POINTS]       = {"Points", "Float64", 3, sizeof(double)},
     [A_CONNECTIVITY] = {"connectivity", "Int64", 1, sizeof(int64_t)},
     [A_OFFSETS]      = {"offsets", "Int64", 1, sizeof(int64_t)},
@@ -128,6 +131,17 @@ static void fill_energy(const sph_body *b, double *out)
         out[i] = b->psi ? b->psi[i] : 0.0;
 }
 
+static int present(array_id a, const sph_body *b)
+{
+    return (a != A_PHASE && a != A_HISTORY) || b->s;
+}
+
+static void fill_scalar(const sph_body *b, const double *x, double *out)
+{
+    for (int i = 0; i < b->n; i++)
+        out[i] = x[i];
+}
+
 /* One cell per particle: connectivity i, offset i+1, type VTK_VERTEX. */
 static void fill_cells(array_id a, int n, void *buf)
 {
@@ -150,6 +164,8 @@ static void fill_array(array_id a, const sph_body *b, void *buf)
     case A_VON_MISES:    fill_von_mises(b, buf); break;
     case A_J:            fill_jacobian(b, buf); break;
     case A_ENERGY:       fill_energy(b, buf); break;
+    case A_PHASE:        fill_scalar(b, b->s, buf); break;
+    case A_HISTORY:      fill_scalar(b, b->H, buf); break;
     case A_POINTS:       fill_points(b, buf); break;
     default:             fill_cells(a, b->n, buf); break;
     }
@@ -172,7 +188,8 @@ static void write_header(FILE *f, const sph_body *b, double t)
     uint64_t off[A_COUNT], pos = 0;
     for (int a = 0; a < A_COUNT; a++) {
         off[a] = pos;
-        pos += sizeof(uint64_t) + block_bytes((array_id)a, (size_t)b->n);
+        if (present((array_id)a, b))
+            pos += sizeof(uint64_t) + block_bytes((array_id)a, (size_t)b->n);
     }
     fprintf(f, "<?xml version=\"1.0\"?>\n"
                "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"%s\""
@@ -182,8 +199,9 @@ static void write_header(FILE *f, const sph_body *b, double t)
                "    <Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n"
                "      <PointData Scalars=\"sigma_vm\" Vectors=\"displacement\">\n",
             host_byte_order(), t, b->n, b->n);
-    for (int a = A_DISPLACEMENT; a <= A_ENERGY; a++)
-        write_data_array(f, (array_id)a, off[a], in);
+    for (int a = A_DISPLACEMENT; a <= A_HISTORY; a++)
+        if (present((array_id)a, b))
+            write_data_array(f, (array_id)a, off[a], in);
     fprintf(f, "      </PointData>\n      <Points>\n");
     write_data_array(f, A_POINTS, off[A_POINTS], in);
     fprintf(f, "      </Points>\n      <Cells>\n");
@@ -198,6 +216,8 @@ static void write_header(FILE *f, const sph_body *b, double t)
 static void write_blocks(FILE *f, const sph_body *b, void *buf)
 {
     for (int a = 0; a < A_COUNT; a++) {
+        if (!present((array_id)a, b))
+            continue;
         uint64_t bytes = block_bytes((array_id)a, (size_t)b->n);
         fill_array((array_id)a, b, buf);
         if (fwrite(&bytes, sizeof bytes, 1, f) != 1)

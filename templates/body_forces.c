@@ -8,14 +8,27 @@ static void @B@_gradient_pass(sph_body *b)
     const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
     const double *restrict wtab = b->wtab, *restrict u = b->u;
     double *restrict A = b->A; /* zero on entry: the stress pass clears what it read */
+//@if FRACTURE
+    /* the Laplacian of the phase field (eq. 62), a symmetric pair sum, rides along */
+    const double *restrict sf = b->s, *restrict ltab = b->ltab;
+    double *restrict lap = b->lap; /* zero on entry, like A */
+//@endif
     for (int colour = 0; colour < 2; colour++) {
 #pragma omp parallel for schedule(dynamic, 1)
         for (int s = colour; s < b->nstripes; s += 2)
             for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
                 double Ai[D * D] = {0};
+//@if FRACTURE
+                double lapi = 0;
+//@endif
                 for (int p = hs[i]; p < hs[i + 1]; p++) {
                     const int j = hb[p];
                     const double *w = wtab + (size_t)hk[p] * D;
+//@if FRACTURE
+                    const double lij = ltab[hk[p]] * (sf[i] - sf[j]);
+                    lapi += lij;
+                    lap[j] -= lij;
+//@endif
                     for (int r = 0; r < D; r++) {
                         const double du = u[j * D + r] - u[i * D + r];
                         for (int c = 0; c < D; c++) {
@@ -26,13 +39,21 @@ static void @B@_gradient_pass(sph_body *b)
                 }
                 for (int k = 0; k < D * D; k++)
                     A[(size_t)i * D * D + k] += Ai[k];
+//@if FRACTURE
+                lap[i] += lapi;
+//@endif
             }
     }
 }
 
 /* Pass 2, per particle: F = I + A L^T (eq. 53 with the corrected gradient), the material law
  * (S, psi), P = F S (eq. 2), and what the momentum pass needs of each particle: Q = P L and,
- * for artificial viscosity, Cv = cof(F) L = J F^-T L. */
+ * for artificial viscosity, Cv = cof(F) L = J F^-T L.
+//@if FRACTURE
+ * With fracture: F = I where s <= s_l (eq. 63), the stress degraded by s (eq. 18), the
+ * history H = max(H, psi+) (eq. 8) and the phase-field acceleration of eq. 61.
+//@endif
+ */
 static void @B@_stress_pass(sph_body *b)
 {
     enum { D = @DIM@ };
@@ -42,6 +63,10 @@ static void @B@_stress_pass(sph_body *b)
     double *restrict Fs = b->F, *restrict Q = b->Q, *restrict psi = b->psi;
 //@if VISCOSITY
     double *restrict Cv = b->Cv;
+//@endif
+//@if FRACTURE
+    const double *restrict sf = b->s;
+    double *restrict lap = b->lap, *restrict H = b->H, *restrict sdd = b->sdd;
 //@endif
     @B@_gradient_pass(b);
 #pragma omp parallel for schedule(static)
@@ -61,7 +86,22 @@ static void @B@_stress_pass(sph_body *b)
                 F[sph_axis(D, r) * 3 + sph_axis(D, c)] += s;
             }
         double S[9], e;
+//@if FRACTURE
+        if (sf[i] <= @SLIMIT@) /* eq. 63: a broken particle carries no deformation */
+            for (int k = 0; k < 9; k++)
+                F[k] = k % 4 == 0;
+        double ep;
+        @B@_material(F, sf[i], S, &e, &ep);
+        H[i] = fmax(H[i], ep);
+        /* eq. 61 without its damping term: s'' + gamma s' = c^2/(2 eps0) (2 eps0 lap s +
+         * (1 - s)/(2 eps0) - 2 s H/Gc), c = c0; gamma s' is integrated by the update */
+        sdd[i] = @PF_A@ * (2 * @EPS0@ * lap[i] + (1 - sf[i]) * (0.5 / @EPS0@) -
+                           2 * sf[i] * H[i] * (1.0 / @GC@));
+        lap[i] = 0; /* ready for the next step's gradient pass */
+//@endif
+//@if NO_FRACTURE
         @B@_material(F, S, &e);
+//@endif
         psi[i] = e;
         for (int r = 0; r < D; r++) /* the out-of-plane entries of a 2D F never change */
             for (int c = 0; c < D; c++)
@@ -207,7 +247,13 @@ static void @B@_stress_output(sph_body *b)
     for (int i = 0; i < b->n; i++) {
         const double *F = b->F + (size_t)i * 9;
         double S[9], e, FS[9], sig[9];
+//@if FRACTURE
+        double ep;
+        @B@_material(F, b->s[i], S, &e, &ep);
+//@endif
+//@if NO_FRACTURE
         @B@_material(F, S, &e);
+//@endif
         sph_mat3_mul(F, S, FS);
         sph_mat3_mul_bt(FS, F, sig);
         const double J = sph_det3(F);

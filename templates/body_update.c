@@ -10,6 +10,29 @@ static inline double @B@_free_acc(const sph_body *b, int i, int k)
     return b->a[i * @DIM@ + k];
 }
 
+//@if FRACTURE
+/* The phase field's rate over a step of length h from s'_0 with the undamped s'' of the
+ * stress pass: s'_1 = s'_0 + h (s'' - gamma s'_1), the damping of eq. 61 taken at the end
+ * of the step, gamma = 2 sqrt(4 eps0 H/Gc + 1) c / (2 eps0) (M of eq. 9).  Explicitly it would
+ * need h gamma < 2, and gamma grows without bound with the history H of broken material;
+ * this form is stable for any h and equals eq. 61 to O(h gamma). */
+static inline double @B@_phase_rate(double sd0, double sdd, double H, double h)
+{
+    const double gamma = sqrt(4 * @EPS0@ * H * (1.0 / @GC@) + 1) * (@C0@ / @EPS0@);
+    return (sd0 + h * sdd) / (1 + h * gamma);
+}
+
+/* A step of the phase field s += h s', kept in [0, 1] (broken to intact); at a bound its
+ * rate stops. */
+static inline void @B@_phase_move(double *s, double *sd, double h)
+{
+    const double x = *s + h * *sd;
+    *s = x < 0 ? 0 : x > 1 ? 1 : x;
+    if (x != *s)
+        *sd = 0;
+}
+
+//@endif
 //@if SYMPLECTIC
 /* Symplectic predictor (Alg. 2, step 1): v_{n+1/2} = v_n + dt/2 a_{n-1/2},
  * u_{n+1/2} = u_n + dt/2 v_n; v_n is kept in work for the corrector. */
@@ -17,13 +40,23 @@ static void @B@_predict(sph_body *b, double dt)
 {
     enum { D = @DIM@ };
     double *restrict u = b->u, *restrict v = b->v, *restrict vn = b->work;
+//@if FRACTURE
+    double *restrict s = b->s, *restrict sd = b->sd, *restrict sdn = b->sd_n;
+    const double *restrict sdd = b->sdd, *restrict H = b->H;
+//@endif
 #pragma omp parallel for schedule(static)
-    for (int i = 0; i < b->n; i++)
+    for (int i = 0; i < b->n; i++) {
         for (int k = 0; k < D; k++) {
             vn[i * D + k] = v[i * D + k];
             u[i * D + k] += 0.5 * dt * v[i * D + k];
             v[i * D + k] += 0.5 * dt * @B@_free_acc(b, i, k);
         }
+//@if FRACTURE
+        sdn[i] = sd[i]; /* the phase field the same way */
+        @B@_phase_move(&s[i], &sd[i], 0.5 * dt);
+        sd[i] = @B@_phase_rate(sd[i], sdd[i], H[i], 0.5 * dt);
+//@endif
+    }
 }
 //@endif
 
@@ -47,9 +80,24 @@ static void @B@_update(sph_body *b, double dt)
     const double *vn = b->work, du = 0.5 * dt;
 //@endif
     double vmax2 = 0, amax2 = 0;
+//@if FRACTURE
+    /* the phase field with the same scheme (Alg. 1-2): s' from s'', then s */
+    double *restrict s = b->s, *restrict sd = b->sd;
+    const double *restrict sdd = b->sdd, *restrict H = b->H;
+//@if VERLET
+    const double *sdn = b->sd;
+//@endif
+//@if SYMPLECTIC
+    const double *sdn = b->sd_n;
+//@endif
+//@endif
 #pragma omp parallel for schedule(static) reduction(max : vmax2, amax2)
     for (int i = 0; i < b->n; i++) {
         double v2 = 0, a2 = 0;
+//@if FRACTURE
+        sd[i] = @B@_phase_rate(sdn[i], sdd[i], H[i], dt);
+        @B@_phase_move(&s[i], &sd[i], du);
+//@endif
         for (int k = 0; k < D; k++) {
             const double ak = @B@_free_acc(b, i, k);
             v[i * D + k] = vn[i * D + k] + dt * ak;

@@ -20,7 +20,9 @@ set(marks
   "gravity=@B@_gravity"
   "velocity_bcs=@B@_velocity_bcs(sph_body"
   "force_bcs=@B@_force_bcs(sph_body"
-  "hourglass=htab")
+  "hourglass=htab"
+  "fracture=ltab"
+  "restrict=@B@_restrict(sph_body")
 
 string(REGEX MATCHALL "body [A-Za-z0-9_]+: dim [23][^\n]*\n[^\n]*features:[^\n]*" bodies "${plan}")
 foreach(entry ${bodies})
@@ -50,12 +52,26 @@ foreach(entry ${bodies})
       message(FATAL_ERROR "${stem}/${body}: ${feature} is off but '${word}' is in its code")
     endif()
   endforeach()
-  foreach(word phase fracture plastic contact notch)
+  string(REGEX MATCH "fracture=([01])" _ "${entry}")
+  set(frac ${CMAKE_MATCH_1})
+  set(words plastic contact)
+  if(frac EQUAL 0)
+    list(APPEND words phase fracture notch sph_sym_pos)
+  endif()
+  foreach(word ${words})
     string(FIND "${rest}" "${word}" at)
     if(NOT at EQUAL -1)
       message(FATAL_ERROR "${stem}/${body}: '${word}' in the code of a body without it")
     endif()
   endforeach()
+  if(frac EQUAL 1)
+    set(any_fracture 1)
+  endif()
   string(REGEX MATCH "features: ([^\n]*)" _ "${entry}")
   message(STATUS "${stem}/${body}: ${CMAKE_MATCH_1}")
 endforeach()
+# the tensor routines of the tension/compression split are included only when used
+string(FIND "${code}" "sph_tensor.h" at)
+if(NOT any_fracture AND NOT at EQUAL -1)
+  message(FATAL_ERROR "${stem}: sph_tensor.h included without a body with fracture")
+endif()

@@ -6,7 +6,10 @@
 #
 # The printed model is written to WORKDIR/case.sph; `sphc --dump=model` of both must agree
 # except for the first line (model name and file), the source lines of statements and the
-# line saying that the imported case also writes SoliDualSPHysics' output files.
+# line saying that the imported case also writes SoliDualSPHysics' output files.  Their
+# `sphc --dump=ast` must agree too (the printed model parses back to the imported tree,
+# fracture items included, which --dump=model does not show), up to how a negative number
+# is held: a literal in the importer's tree, a negated one in the parser's.
 # GOLDEN: the printed model must equal this file (sphc runs in the case's folder, so the
 # first line names the case without folders).
 
@@ -29,16 +32,17 @@ if(NOT rc EQUAL 0)
 endif()
 file(WRITE "${model}" "${printed}")
 
-function(dump src result)
+function(dump stage src result)
   set(args "")
   if(src STREQUAL XML)
     set(args ${sphc_args})
   endif()
-  execute_process(COMMAND "${SPHC}" ${args} --dump=model "${src}"
+  execute_process(COMMAND "${SPHC}" ${args} --dump=${stage} "${src}"
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "sphc --dump=model ${src} failed (exit ${rc}):\n${err}")
+    message(FATAL_ERROR "sphc --dump=${stage} ${src} failed (exit ${rc}):\n${err}")
   endif()
+  string(REGEX REPLACE "\\(- ([0-9][0-9.e+-]*)\\)" "-\\1" out "${out}")  # (- 2) -> -2
   string(FIND "${out}" "\n" eol)   # the first line names the model and its file
   math(EXPR eol "${eol} + 1")
   string(SUBSTRING "${out}" ${eol} -1 out)
@@ -48,12 +52,14 @@ function(dump src result)
   set(${result} "${out}" PARENT_SCOPE)
 endfunction()
 
-dump("${XML}" from_xml)
-dump("${model}" from_sph)
-if(NOT from_xml STREQUAL from_sph)
-  message(FATAL_ERROR "the printed model differs from the case:\n--- case:\n${from_xml}\n"
-                      "--- printed (${model}):\n${from_sph}")
-endif()
+foreach(stage model ast)
+  dump(${stage} "${XML}" from_xml)
+  dump(${stage} "${model}" from_sph)
+  if(NOT from_xml STREQUAL from_sph)
+    message(FATAL_ERROR "the printed model differs from the case (--dump=${stage}):\n"
+                        "--- case:\n${from_xml}\n--- printed (${model}):\n${from_sph}")
+  endif()
+endforeach()
 
 if(DEFINED GOLDEN)
   file(READ "${GOLDEN}" expected)

@@ -1,0 +1,187 @@
+/* sph_tensor.h — positive and negative parts of symmetric tensors (header only).
+ *
+ * Used by the generated code for phase-field fracture: the tension/compression split of
+ * the Green–Lagrange strain (paper eq. 13–16), E = Q Λ Qᵀ, E⁺ = Q Λ⁺ Qᵀ with Λ⁺ the
+ * positive parts of the eigenvalues, and E⁻ = E − E⁺.
+ *
+ * Conventions: a 3×3 tensor is a row-major array of 9 doubles (A[3*i+j] = A_ij); the input
+ * is assumed symmetric and is symmetrised as (A_ij + A_ji)/2, so every output is exactly
+ * symmetric. Eigenvectors are the COLUMNS of Q (Q[3*i+k] is component i of eigenvector k),
+ * A = Q diag(lam) Qᵀ, and the eigenvalues are sorted in DESCENDING order, lam[0] >= lam[1]
+ * >= lam[2]. The 2×2 variant works on the x–z plane (plane strain): {axx, axz, azz}.
+ *
+ * Method (3×3): cyclic Jacobi. The matrix is first divided by its largest |a_ij| (no
+ * overflow or underflow in squares, and the zero matrix returns at once: lam = 0, Q = I);
+ * after that the Frobenius norm lies in [1, 3] and is kept by the rotations, so the test
+ * "every |a_pq| <= SPH_EIG_TOL" is a test relative to the Frobenius norm. Each rotation
+ * takes the smaller angle (|φ| <= π/4) and is computed without dividing by the
+ * off-diagonal entry; a rotation is made only for an entry above the tolerance, so nothing
+ * divides by zero. Convergence is quadratic: 3–4 sweeps (7–12 rotations) for random
+ * matrices, at most SPH_EIG_MAX_SWEEPS. Eigenvalues come out accurate to a few ulps of the
+ * norm, Q orthonormal to a few ulps, and repeated eigenvalues (double, triple, c·I) need no
+ * special case. The positive part is the projection onto the cone of positive semidefinite
+ * tensors, hence 1-Lipschitz: its error is the backward error of the decomposition, a few
+ * ulps of the norm, even where eigenvalues (nearly) coincide or straddle zero.
+ *
+ * Method (2×2): closed form, eigenvalues m ± r, m = (axx+azz)/2, r = hypot((axx−azz)/2, axz).
+ */
+#ifndef SPH_TENSOR_H
+#define SPH_TENSOR_H
+
+#include <math.h>
+
+/* Off-diagonal entries at or below this (relative to the largest entry) count as zero. */
+#define SPH_EIG_TOL 1e-18
+/* Upper bound on the Jacobi sweeps (never reached in practice: quadratic convergence). */
+#define SPH_EIG_MAX_SWEEPS 32
+
+static inline double sph_max(double a, double b) { return a > b ? a : b; }
+static inline double sph_min(double a, double b) { return a < b ? a : b; }
+static inline double sph_absmax(double a, double b) { return sph_max(fabs(a), fabs(b)); }
+
+/* (a + b) / 2, exactly a when a == b (also for subnormals) and free of overflow. */
+static inline double sph_sym_avg(double a, double b) { return a == b ? a : 0.5 * a + 0.5 * b; }
+
+/* One Jacobi rotation in the (p, q) plane, p < q, that makes the (p, q) entry zero. The
+ * matrix is held as its diagonal d and its off-diagonal entries o, o[r] being the entry
+ * between the two indices other than r (o[0] = a12, o[1] = a02, o[2] = a01); the columns
+ * p and q of V are rotated alike. With h = d_q − d_p the angle φ has tan 2φ = 2 a_pq / h,
+ * |φ| <= π/4: t = tan φ = 2 a_pq sign(h) / w, w = |h| + g, g = sqrt(h² + 4 a_pq²), and
+ * cos φ, sin φ = (w, 2 a_pq sign(h)) / sqrt(w² + 4 a_pq²). The caller scales the matrix to
+ * a norm of order 1, so no square over- or underflows (|a_pq| > SPH_EIG_TOL here). */
+static inline void sph_jacobi_rotate(double d[3], double o[3], double V[9], int p, int q)
+{
+    int r = 3 - p - q;
+    double a = o[r];
+    if (fabs(a) <= SPH_EIG_TOL)
+        return; /* negligible */
+    double h = d[q] - d[p], a2 = a + a, sg = h < 0.0 ? -1.0 : 1.0;
+    double g = sqrt(h * h + a2 * a2); /* eigenvalue gap of the 2×2 block, >= 2|a| > 0 */
+    double w = fabs(h) + g, x = w * w + a2 * a2;
+    /* 1/sqrt(x) as sqrt(x) * (1/x): the square root and the division run in parallel. */
+    double rn = sqrt(x) * (1.0 / x), c = w * rn, s = sg * a2 * rn;
+    double ta = sg * 0.5 * (g - fabs(h)); /* t a_pq = 2 a² sign(h) / w, as g² − h² = 4a² */
+    d[p] -= ta;
+    d[q] += ta;
+    o[r] = 0.0;
+    double arp = o[q], arq = o[p]; /* the entries (r, p) and (r, q) */
+    o[q] = c * arp - s * arq;
+    o[p] = s * arp + c * arq;
+    for (int k = 0; k < 3; k++) {
+        double vp = V[3 * k + p], vq = V[3 * k + q];
+        V[3 * k + p] = c * vp - s * vq;
+        V[3 * k + q] = s * vp + c * vq;
+    }
+}
+
+/* Cyclic Jacobi: eigenvalues lam (unsorted) and eigenvectors in the columns of Q. */
+static inline void sph_sym_eig3_unsorted(const double A[9], double lam[3], double Q[9])
+{
+    for (int k = 0; k < 9; k++)
+        Q[k] = (k % 4 == 0); /* identity */
+    double a01 = sph_sym_avg(A[1], A[3]), a02 = sph_sym_avg(A[2], A[6]);
+    double a12 = sph_sym_avg(A[5], A[7]);
+    double scale = sph_absmax(sph_absmax(A[0], A[4]), sph_absmax(A[8], a01));
+    scale = sph_absmax(scale, sph_absmax(a02, a12));
+    if (scale == 0.0) { /* the zero matrix */
+        lam[0] = lam[1] = lam[2] = 0.0;
+        return;
+    }
+    /* Divide (multiplying by 1/scale would overflow for a subnormal scale); the largest
+     * entry becomes ±1 and the Frobenius norm lies in [1, 3] (rotations keep it). */
+    double d[3] = {A[0] / scale, A[4] / scale, A[8] / scale};
+    double o[3] = {a12 / scale, a02 / scale, a01 / scale};
+    for (int sweep = 0; sweep < SPH_EIG_MAX_SWEEPS; sweep++) {
+        if (fabs(o[0]) <= SPH_EIG_TOL && fabs(o[1]) <= SPH_EIG_TOL && fabs(o[2]) <= SPH_EIG_TOL)
+            break; /* converged: off-diagonal negligible relative to the norm */
+        sph_jacobi_rotate(d, o, Q, 0, 1);
+        sph_jacobi_rotate(d, o, Q, 0, 2);
+        sph_jacobi_rotate(d, o, Q, 1, 2);
+    }
+    for (int k = 0; k < 3; k++)
+        lam[k] = d[k] * scale;
+}
+
+/* Swaps eigenpairs i and j (eigenvalue and column of Q). */
+static inline void sph_eig_swap(double lam[3], double Q[9], int i, int j)
+{
+    double t = lam[i];
+    lam[i] = lam[j];
+    lam[j] = t;
+    for (int k = 0; k < 3; k++) {
+        t = Q[3 * k + i];
+        Q[3 * k + i] = Q[3 * k + j];
+        Q[3 * k + j] = t;
+    }
+}
+
+/* Eigen-decomposition of a symmetric 3×3 tensor: A = Q diag(lam) Qᵀ, lam DESCENDING,
+ * eigenvectors in the columns of Q, Q orthonormal (a rotation or a reflection). Finite
+ * input gives finite output (as long as the eigenvalues themselves are representable);
+ * the zero matrix and c·I give lam = c exactly and Q = I. */
+static inline void sph_sym_eig3(const double A[9], double lam[3], double Q[9])
+{
+    sph_sym_eig3_unsorted(A, lam, Q);
+    if (lam[0] < lam[1])
+        sph_eig_swap(lam, Q, 0, 1);
+    if (lam[1] < lam[2])
+        sph_eig_swap(lam, Q, 1, 2);
+    if (lam[0] < lam[1])
+        sph_eig_swap(lam, Q, 0, 1);
+}
+
+/* Positive part Ap = Σ max(lam_k, 0) q_k q_kᵀ of a symmetric 3×3 tensor (the negative part
+ * is A − Ap). Exactly the (symmetrised) A when no eigenvalue is negative, exactly 0 when
+ * none is positive. */
+static inline void sph_sym_pos3(const double A[9], double Ap[9])
+{
+    double lam[3], Q[9];
+    sph_sym_eig3_unsorted(A, lam, Q); /* the order does not matter here */
+    double lo = sph_min(lam[0], sph_min(lam[1], lam[2]));
+    double hi = sph_max(lam[0], sph_max(lam[1], lam[2]));
+    if (lo >= 0.0) { /* positive semidefinite: Ap = A */
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                Ap[3 * i + j] = sph_sym_avg(A[3 * i + j], A[3 * j + i]);
+        return;
+    }
+    if (hi <= 0.0) { /* negative semidefinite: Ap = 0 */
+        for (int k = 0; k < 9; k++)
+            Ap[k] = 0.0;
+        return;
+    }
+    /* Mixed signs: sum over the positive eigenvalues. */
+    double w[3] = {sph_max(lam[0], 0.0), sph_max(lam[1], 0.0), sph_max(lam[2], 0.0)};
+    for (int i = 0; i < 3; i++)
+        for (int j = i; j < 3; j++) {
+            double v = 0.0;
+            for (int k = 0; k < 3; k++)
+                v += w[k] * Q[3 * i + k] * Q[3 * j + k];
+            Ap[3 * i + j] = Ap[3 * j + i] = v;
+        }
+}
+
+/* Positive part of the symmetric 2×2 tensor {{axx, axz}, {axz, azz}} (x–z plane, plane
+ * strain), closed form; out = {pxx, pxz, pzz}. The negative part is A − out. */
+static inline void sph_sym_pos2(double axx, double axz, double azz, double out[3])
+{
+    double m = 0.5 * axx + 0.5 * azz, dh = 0.5 * axx - 0.5 * azz, r2 = dh * dh + axz * axz;
+    /* r = hypot(dh, axz); sqrt is several times faster, hypot only where r2 could have
+     * over- or underflowed (and for r2 = 0, e.g. A = c·I). */
+    double r = r2 < 0x1p1000 && r2 > 0x1p-1000 ? sqrt(r2) : hypot(dh, axz);
+    double l1 = m + r, l2 = m - r; /* eigenvalues, l1 >= l2 */
+    if (l2 >= 0.0) { /* positive semidefinite: Ap = A */
+        out[0] = axx, out[1] = axz, out[2] = azz;
+        return;
+    }
+    if (l1 <= 0.0) { /* negative semidefinite: Ap = 0 */
+        out[0] = out[1] = out[2] = 0.0;
+        return;
+    }
+    /* l1 > 0 > l2: Ap = l1 q1 q1ᵀ = l1 (A − l2 I) / (l1 − l2), where l1 − l2 > 0 and the
+     * weight l1 / (l1 − l2) lies in (0, 1). */
+    double wt = l1 / (l1 - l2);
+    out[0] = wt * (axx - l2), out[1] = wt * axz, out[2] = wt * (azz - l2);
+}
+
+#endif /* SPH_TENSOR_H */
