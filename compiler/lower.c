@@ -47,6 +47,27 @@ static int count_ops(const SGraph *g)
     return n;
 }
 
+/* With fracture: the degraded stress and energy (the phase field is `s`) and psi+. */
+static void dump_degraded(const SGraph *g, const LawRoots *r, FILE *out)
+{
+    int roots[11];
+    memcpy(roots, r->Sd, sizeof r->Sd);
+    roots[9] = r->psid;
+    roots[10] = r->psip;
+    fputs("  degraded by the phase field (eq. 7, 18):\n", out);
+    sg_emit(g, roots, 11, out, "    ");
+    for (int k = 0; k < 9; k++) {
+        fprintf(out, "    S[%d] = ", k);
+        sg_ref(g, r->Sd[k], out);
+        fputs("\n", out);
+    }
+    fputs("    psi = ", out);
+    sg_ref(g, r->psid, out);
+    fputs("\n    psi+ = ", out);
+    sg_ref(g, r->psip, out);
+    fputs("\n", out);
+}
+
 void plan_dump(const Model *m, FILE *out)
 {
     BodyPlan *plans = calloc((size_t)m->nbodies, sizeof *plans);
@@ -76,6 +97,8 @@ void plan_dump(const Model *m, FILE *out)
         fputs("    psi = ", out);
         sg_ref(&p->law, p->roots.psi, out);
         fputs("\n", out);
+        if (p->roots.has_tension)
+            dump_degraded(&p->law, &p->roots, out);
     }
     free(plans);
 }

@@ -42,6 +42,18 @@ static void body(FILE *out, const BodyModel *b)
     }
     for (int k = 0; k < b->nmeasures; k++)
         fprintf(out, "    measure %s\n", b->measures[k].name);
+    const FractureModel *f = &b->fracture;
+    if (!f->on)
+        return;
+    fprintf(out, "    fracture Gc %g length %g limit %g%s\n", f->Gc, f->eps0, f->limit,
+            f->restrict_expr ? "  restricted" : "");
+    for (int k = 0; k < f->nnotches; k++) {
+        fputs("    notch", out);
+        for (int c = 0; c < 4; c++)
+            fprintf(out, " [%g %g %g]", f->notches[k][c][0], f->notches[k][c][1],
+                    f->notches[k][c][2]);
+        fputs("\n", out);
+    }
 }
 
 void model_dump(const Model *m, FILE *out)
