@@ -104,6 +104,7 @@ static int scene_setting(Model *m, const Setting *s)
 {
     static const char *const kernels[] = {"wendland", "cubic"};
     static const char *const integrators[] = {"verlet", "symplectic"};
+    static const char *const precisions[] = {"double", "single"};
     int k;
     double v;
     if (!strcmp(s->key, "dimension")) {
@@ -126,6 +127,12 @@ static int scene_setting(Model *m, const Setting *s)
         if (scene_name(s, integrators, 2, &k))
             return -1;
         m->integrator = (IntegratorKind)k;
+        return 0;
+    }
+    if (!strcmp(s->key, "precision")) {
+        if (scene_name(s, precisions, 2, &k))
+            return -1;
+        m->single = k == 1;
         return 0;
     }
     if (!strcmp(s->key, "gravity"))

@@ -173,7 +173,7 @@ int build_program(const Model *m, const Options *o, const Paths *paths)
     }
     char src[4200], lib[4200], inc[4200];
     snprintf(src, sizeof src, "%s/%s.c", dir, m->name);
-    snprintf(lib, sizeof lib, "%s/libsphrt.a", paths->lib);
+    snprintf(lib, sizeof lib, "%s/libsphrt%s.a", paths->lib, m->single ? "_single" : "");
     snprintf(inc, sizeof inc, "-I%s", paths->include);
     if (write_source(m, paths, src))
         return -1;

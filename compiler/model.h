@@ -106,6 +106,7 @@ typedef struct {
     double dp, coefh, cfl, dtmin, dt, t_end, t_out;
     KernelKind kernel;
     IntegratorKind integrator;
+    int single;           /* precision single: the pair passes' arrays in float */
     double gravity[3];
     ConstDef *consts;
     int nconsts;

@@ -60,10 +60,11 @@ void model_dump(const Model *m, FILE *out)
 {
     fprintf(out, "model %s (%s)\n", m->name, m->source);
     fprintf(out, "  scene: dim %d dp %g kernel %s coefh %g integrator %s cfl %g dtmin %g dt %g "
-                 "end %g output %g gravity [%g %g %g]\n",
+                 "end %g output %g gravity [%g %g %g] precision %s\n",
             m->dim, m->dp, m->kernel == KERNEL_WENDLAND ? "wendland" : "cubic", m->coefh,
             m->integrator == INTEGRATOR_VERLET ? "verlet" : "symplectic", m->cfl, m->dtmin, m->dt,
-            m->t_end, m->t_out, m->gravity[0], m->gravity[1], m->gravity[2]);
+            m->t_end, m->t_out, m->gravity[0], m->gravity[1], m->gravity[2],
+            m->single ? "single" : "double");
     if (m->compat_outputs)
         fputs("  outputs: also SoliDualSPHysics' DeformStruc_Energies.csv and "
               "MeasuringPlData_MK<mk>_PL<k>.csv\n", out);

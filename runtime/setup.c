@@ -84,9 +84,9 @@ static void allocate(sph_body *b)
     b->F = zalloc(n * 9, sizeof(double));
     for (size_t i = 0; i < n; i++)
         b->F[9 * i] = b->F[9 * i + 4] = b->F[9 * i + 8] = 1.0;
-    b->Q = zalloc(n * D * D, sizeof(double));
-    b->A = zalloc(n * D * D, sizeof(double));
-    b->Cv = zalloc(n * D * D, sizeof(double));
+    b->Q = zalloc(n * D * D, sizeof *b->Q);
+    b->A = zalloc(n * D * D, sizeof *b->A);
+    b->Cv = zalloc(n * D * D, sizeof *b->Cv);
     b->psi = zalloc(n, sizeof(double));
     b->sigma = zalloc(n * 6, sizeof(double));
     b->fix = zalloc(n, 1);
@@ -114,10 +114,17 @@ static double viscosity_factor(const sph_body *b, const double *dX, const double
 }
 
 /* Pairs at exactly the support radius have a zero kernel gradient and contribute nothing to
- * any pass; removing them saves a sixth of the pair work on a lattice (24 -> 20 in 2D). */
+ * any pass; removing them saves a sixth of the pair work on a lattice (24 -> 20 in 2D).  In
+ * single precision, pairs whose gradient is below 1e-30 of the largest go too (at the very
+ * edge of the support): in float it underflows, and the viscosity factor of eq. 60 (about
+ * 1/|w|) would overflow. */
 static void drop_silent_pairs(sph_body *b, double *w)
 {
     const int D = b->dim;
+    double wmax = 0;
+    for (long p = 0; p < b->npairs * D; p++)
+        wmax = fmax(wmax, fabs(w[p]));
+    const double tiny = sizeof(sph_real) < sizeof(double) ? 1e-30 * wmax : 0.0;
     long q = 0;
     int begin = 0;
     for (int i = 0; i < b->n; i++) {
@@ -126,7 +133,7 @@ static void drop_silent_pairs(sph_body *b, double *w)
         for (int p = begin; p < end; p++) {
             int silent = 1;
             for (int c = 0; c < D; c++)
-                silent &= w[(size_t)p * D + c] == 0.0;
+                silent &= fabs(w[(size_t)p * D + c]) <= tiny;
             if (silent)
                 continue;
             b->nb[q] = b->nb[p];
@@ -184,11 +191,11 @@ static void offset_tables(sph_body *b, double *w, sph_kernel_kind kernel)
     if (!lattice)
         ntab = (int)np;
     b->ntab = ntab;
-    b->wtab = zalloc((size_t)ntab * D, sizeof(double));
-    b->gtab = zalloc((size_t)ntab, sizeof(double));
-    b->htab = zalloc((size_t)ntab, sizeof(double));
+    b->wtab = zalloc((size_t)ntab * D, sizeof *b->wtab);
+    b->gtab = zalloc((size_t)ntab, sizeof *b->gtab);
+    b->htab = zalloc((size_t)ntab, sizeof *b->htab);
     if (b->desc->fracture)
-        b->ltab = zalloc((size_t)ntab, sizeof(double));
+        b->ltab = zalloc((size_t)ntab, sizeof *b->ltab);
     for (int i = 0; i < b->n; i++)
         for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
             int k = lattice ? b->nb_k[p] : p;
@@ -196,15 +203,15 @@ static void offset_tables(sph_body *b, double *w, sph_kernel_kind kernel)
             double dX[3];
             for (int c = 0; c < D; c++) {
                 dX[c] = b->X[(size_t)i * D + c] - b->X[(size_t)b->nb[p] * D + c];
-                b->wtab[(size_t)k * D + c] = w[(size_t)p * D + c];
+                b->wtab[(size_t)k * D + c] = (sph_real)w[(size_t)p * D + c];
             }
-            b->gtab[k] = viscosity_factor(b, dX, w + (size_t)p * D);
+            b->gtab[k] = (sph_real)viscosity_factor(b, dX, w + (size_t)p * D);
             double r2 = 0;
             for (int c = 0; c < D; c++)
                 r2 += dX[c] * dX[c];
-            b->htab[k] = b->vol * sph_kernel_w(kernel, D, sqrt(r2), b->h) / (b->rho0 * r2);
+            b->htab[k] = (sph_real)(b->vol * sph_kernel_w(kernel, D, sqrt(r2), b->h) / (b->rho0 * r2));
             if (b->ltab) /* eq. 62: 2 V_j (r0 . grad W) / r0^2 = 2 V dW/dr / r */
-                b->ltab[k] = 2 * b->vol * sph_kernel_dwdr_over_r(kernel, D, sqrt(r2), b->h);
+                b->ltab[k] = (sph_real)(2 * b->vol * sph_kernel_dwdr_over_r(kernel, D, sqrt(r2), b->h));
         }
 }
 

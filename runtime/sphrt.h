@@ -191,6 +191,17 @@ typedef struct {
 
 /* ------------------------------------------------------------------ state */
 
+/* Precision of the pair passes' working arrays: the offset tables, A, Q and Cv.  double,
+ * or float in the runtime built with SPH_SINGLE (libsphrt_single), which programs of models
+ * with `precision single` link (their generated code defines SPH_SINGLE).  Positions,
+ * displacements, velocities, accelerations, F, the material law and the time integration
+ * are double in both. */
+#ifdef SPH_SINGLE
+typedef float sph_real;
+#else
+typedef double sph_real;
+#endif
+
 struct sph_body {
     const sph_body_desc *desc;
     int n, dim;
@@ -200,8 +211,8 @@ struct sph_body {
     double *u, *v, *a;  /* n*dim displacement, velocity, acceleration */
     double *F;          /* n*9 deformation gradient (3×3) */
     double *L;          /* n*dim*dim correction */
-    double *Q;          /* n*dim*dim  P·L (first Piola–Kirchhoff times correction) */
-    double *Cv;         /* n*dim*dim  cof(F)·L for artificial viscosity */
+    sph_real *Q;        /* n*dim*dim  P·L (first Piola–Kirchhoff times correction) */
+    sph_real *Cv;       /* n*dim*dim  cof(F)·L for artificial viscosity */
     double *psi;        /* n strain energy density */
     double *sigma;      /* n*6 Cauchy stress, filled at output */
     double *work;       /* n*dim scratch for integrators (symplectic: v at n) */
@@ -209,9 +220,9 @@ struct sph_body {
 
     int *nb_start, *nb;   /* CSR neighbour lists, both directions (set-up only; freed) */
     int *nb_k;            /* per pair: entry of the offset tables (set-up only; freed) */
-    double *wtab;         /* ntab*dim: V_j grad W for each distinct offset */
-    double *gtab;         /* ntab: G_ij = gtab * (v_i - v_j) . w_ij  (eq. 60) */
-    double *htab;         /* ntab: V W(r0) / (rho0 r0^2), for the hourglass penalty */
+    sph_real *wtab;       /* ntab*dim: V_j grad W for each distinct offset */
+    sph_real *gtab;       /* ntab: G_ij = gtab * (v_i - v_j) . w_ij  (eq. 60) */
+    sph_real *htab;       /* ntab: V W(r0) / (rho0 r0^2), for the hourglass penalty */
     int ntab;
     /* Half lists (j > i only) for the passes that visit each pair once and add its share
      * to both particles.  Particles are cut into stripes of consecutive indices, at least as
@@ -221,14 +232,14 @@ struct sph_body {
     int *hb_start, *hb, *hb_k;
     int *stripe;          /* nstripes + 1 particle indices */
     int nstripes;
-    double *A;            /* n*dim*dim: sum_j (u_j - u_i) (x) w_ij, the pair part of eq. 53 */
+    sph_real *A;          /* n*dim*dim: sum_j (u_j - u_i) (x) w_ij, the pair part of eq. 53 */
 
     /* Phase-field fracture (NULL unless the body has fracture). */
     double *s, *sd, *sdd; /* n phase field (1 intact, 0 broken), ds/dt, d2s/dt2 */
     double *H;            /* n history field: the largest psi+ so far (eq. 8) */
     double *lap;          /* n Laplacian of s (eq. 62), summed by the gradient pass */
     double *sd_n;         /* n symplectic: ds/dt at the start of the step */
-    double *ltab;         /* ntab: 2 V dW/dr / r, so lap_i = sum_j ltab (s_i - s_j) */
+    sph_real *ltab;       /* ntab: 2 V dW/dr / r, so lap_i = sum_j ltab (s_i - s_j) */
     long npairs;          /* neighbour relations, both directions (2 x the half lists) */
 
     int **bc_list;      /* per BC with `near`: particle indices */

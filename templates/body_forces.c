@@ -6,31 +6,33 @@ static void @B@_gradient_pass(sph_body *b)
 {
     enum { D = @DIM@ };
     const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
-    const double *restrict wtab = b->wtab, *restrict u = b->u;
-    double *restrict A = b->A; /* zero on entry: the stress pass clears what it read */
+    const sph_real *restrict wtab = b->wtab;
+    const double *restrict u = b->u;
+    sph_real *restrict A = b->A; /* zero on entry: the stress pass clears what it read */
 //@if FRACTURE
     /* the Laplacian of the phase field (eq. 62), a symmetric pair sum, rides along */
-    const double *restrict sf = b->s, *restrict ltab = b->ltab;
+    const double *restrict sf = b->s;
+    const sph_real *restrict ltab = b->ltab;
     double *restrict lap = b->lap; /* zero on entry, like A */
 //@endif
     for (int colour = 0; colour < 2; colour++) {
 #pragma omp parallel for schedule(dynamic, 1)
         for (int s = colour; s < b->nstripes; s += 2)
             for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
-                double Ai[D * D] = {0};
+                sph_real Ai[D * D] = {0};
 //@if FRACTURE
                 double lapi = 0;
 //@endif
                 for (int p = hs[i]; p < hs[i + 1]; p++) {
                     const int j = hb[p];
-                    const double *w = wtab + (size_t)hk[p] * D;
+                    const sph_real *w = wtab + (size_t)hk[p] * D;
 //@if FRACTURE
                     const double lij = ltab[hk[p]] * (sf[i] - sf[j]);
                     lapi += lij;
                     lap[j] -= lij;
 //@endif
                     for (int r = 0; r < D; r++) {
-                        const double du = u[j * D + r] - u[i * D + r];
+                        const sph_real du = (sph_real)(u[j * D + r] - u[i * D + r]);
                         for (int c = 0; c < D; c++) {
                             Ai[r * D + c] += du * w[c];
                             A[(size_t)j * D * D + r * D + c] += du * w[c];
@@ -58,11 +60,12 @@ static void @B@_stress_pass(sph_body *b)
 {
     enum { D = @DIM@ };
     const int n = b->n;
-    double *restrict Ac = b->A;
+    sph_real *restrict Ac = b->A;
     const double *restrict Lc = b->L;
-    double *restrict Fs = b->F, *restrict Q = b->Q, *restrict psi = b->psi;
+    double *restrict Fs = b->F, *restrict psi = b->psi;
+    sph_real *restrict Q = b->Q;
 //@if VISCOSITY
-    double *restrict Cv = b->Cv;
+    sph_real *restrict Cv = b->Cv;
 //@endif
 //@if FRACTURE
     const double *restrict sf = b->s;
@@ -121,7 +124,7 @@ static void @B@_stress_pass(sph_body *b)
                 double s = 0;
                 for (int k = 0; k < D; k++)
                     s += P[r * D + k] * L[k * D + c];
-                Q[(size_t)i * D * D + r * D + c] = s;
+                Q[(size_t)i * D * D + r * D + c] = (sph_real)s;
             }
 //@if VISCOSITY
         /* cof(F) = J F^-T: the Piola transform of the viscous pressure (eq. 57) */
@@ -130,7 +133,7 @@ static void @B@_stress_pass(sph_body *b)
                 double s = 0;
                 for (int k = 0; k < D; k++)
                     s += sph_cofactor(F, sph_axis(D, r), sph_axis(D, k)) * L[k * D + c];
-                Cv[(size_t)i * D * D + r * D + c] = s;
+                Cv[(size_t)i * D * D + r * D + c] = (sph_real)s;
             }
 //@endif
     }
@@ -144,15 +147,16 @@ static void @B@_momentum_pass(sph_body *b)
 {
     enum { D = @DIM@ };
     const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
-    const double *restrict wtab = b->wtab, *restrict Q = b->Q;
+    const sph_real *restrict wtab = b->wtab, *restrict Q = b->Q;
     double *restrict acc = b->a;
-    const double inv_rho = 1.0 / b->rho0;
+    const sph_real inv_rho = (sph_real)(1.0 / b->rho0);
 //@if VISCOSITY
-    const double *restrict v = b->v, *restrict Cv = b->Cv, *restrict gtab = b->gtab;
+    const double *restrict v = b->v;
+    const sph_real *restrict Cv = b->Cv, *restrict gtab = b->gtab;
 //@endif
 //@if HOURGLASS
     const double *restrict X = b->X, *restrict u = b->u, *restrict Fs = b->F;
-    const double *restrict htab = b->htab;
+    const sph_real *restrict htab = b->htab;
 //@endif
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < b->n; i++)
@@ -167,18 +171,18 @@ static void @B@_momentum_pass(sph_body *b)
 #pragma omp parallel for schedule(dynamic, 1)
         for (int s = colour; s < b->nstripes; s += 2)
             for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
-                const double *Qi = Q + (size_t)i * D * D;
+                const sph_real *Qi = Q + (size_t)i * D * D;
 //@if VISCOSITY
-                const double *Ci = Cv + (size_t)i * D * D;
+                const sph_real *Ci = Cv + (size_t)i * D * D;
 //@endif
-                double fi[D] = {0};
+                sph_real fi[D] = {0};
                 for (int p = hs[i]; p < hs[i + 1]; p++) {
                     const int j = hb[p], k = hk[p];
-                    const double *w = wtab + (size_t)k * D;
-                    const double *Qj = Q + (size_t)j * D * D;
-                    double f[D];
+                    const sph_real *w = wtab + (size_t)k * D;
+                    const sph_real *Qj = Q + (size_t)j * D * D;
+                    sph_real f[D];
                     for (int r = 0; r < D; r++) {
-                        double s2 = 0;
+                        sph_real s2 = 0;
                         for (int c = 0; c < D; c++)
                             s2 += (Qi[r * D + c] + Qj[r * D + c]) * w[c];
                         f[r] = s2 * inv_rho;
@@ -187,19 +191,19 @@ static void @B@_momentum_pass(sph_body *b)
                     /* G_ij (eq. 60; gtab holds h / (r^2 + 0.001 h^2) in the units of w) and
                      * the viscous pressure pi_ij (eq. 58, times rho0), which resists relative
                      * motion along the reference separation. */
-                    double vw = 0;
+                    sph_real vw = 0;
                     for (int c = 0; c < D; c++)
-                        vw += (v[i * D + c] - v[j * D + c]) * w[c];
-                    const double G = gtab[k] * vw;
-                    double pi = -@BETA1@ * @C0@ * G;
+                        vw += (sph_real)(v[i * D + c] - v[j * D + c]) * w[c];
+                    const sph_real G = gtab[k] * vw;
+                    sph_real pi = (sph_real)(-@BETA1@ * @C0@) * G;
 //@if BETA2
-                    const double Gc = 0.5 * (G - fabs(G)); /* min(G, 0): beta2 acts on approach */
-                    pi += @BETA2@ * Gc * Gc;
+                    const sph_real Gc = G < 0 ? G : 0; /* min(G, 0): beta2 acts on approach */
+                    pi += (sph_real)@BETA2@ * Gc * Gc;
 //@endif
-                    const double *Cj = Cv + (size_t)j * D * D;
+                    const sph_real *Cj = Cv + (size_t)j * D * D, hpi = (sph_real)0.5 * pi;
                     for (int r = 0; r < D; r++)
                         for (int c = 0; c < D; c++)
-                            f[r] -= 0.5 * pi * (Ci[r * D + c] + Cj[r * D + c]) * w[c];
+                            f[r] -= hpi * (Ci[r * D + c] + Cj[r * D + c]) * w[c];
 //@endif
 //@if HOURGLASS
                     /* Hourglass control (Ganzenmueller 2015): the pair's separation predicted
@@ -221,7 +225,7 @@ static void @B@_momentum_pass(sph_body *b)
                     }
                     const double hg = @HG@ * htab[k] * delta / r2; /* delta/r times 1/r */
                     for (int r = 0; r < D; r++)
-                        f[r] -= hg * xij[r];
+                        f[r] -= (sph_real)(hg * xij[r]);
 //@endif
                     for (int r = 0; r < D; r++) {
                         fi[r] += f[r];
