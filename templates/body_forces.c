@@ -128,12 +128,22 @@ static void @B@_stress_pass(sph_body *b)
             }
 //@if VISCOSITY
         /* cof(F) = J F^-T: the Piola transform of the viscous pressure (eq. 57) */
+//@if FRACTURE
+        /* degraded like the elastic stress, so that a crack does not carry viscous stress
+         * either (its faces would otherwise be held back as they separate) */
+        const double vdeg = sf[i] * sf[i];
+//@endif
         for (int r = 0; r < D; r++)
             for (int c = 0; c < D; c++) {
                 double s = 0;
                 for (int k = 0; k < D; k++)
                     s += sph_cofactor(F, sph_axis(D, r), sph_axis(D, k)) * L[k * D + c];
+//@if FRACTURE
+                Cv[(size_t)i * D * D + r * D + c] = (sph_real)(s * vdeg);
+//@endif
+//@if NO_FRACTURE
                 Cv[(size_t)i * D * D + r * D + c] = (sph_real)s;
+//@endif
             }
 //@endif
     }
