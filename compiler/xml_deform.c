@@ -52,17 +52,6 @@ static int nonnegative(const XmlCtx *x, const xmlNode *n, const char *attr, doub
     return -1;
 }
 
-static int positive_value(const XmlCtx *x, const xmlNode *n, double *v)
-{
-    if (xml_card_number(x, n, v))
-        return -1;
-    if (*v > 0)
-        return 0;
-    diag_error(xml_loc(x, n), "<%s> attribute 'value': must be positive (got %g)", xml_name(n),
-               *v);
-    return -1;
-}
-
 static int artvisc(const XmlCtx *x, const xmlNode *n, Cards *c)
 {
     static const char *const attrs[] = {"factor1", "factor2", NULL};
@@ -122,7 +111,7 @@ static int card(XmlCtx *x, const xmlNode *n, Cards *c)
     if (xml_is(n, "density")) {
         c->has_density = 1;
         c->density_loc = xml_loc(x, n);
-        return positive_value(x, n, &c->density);
+        return xml_card_positive(x, n, &c->density);
     }
     if (xml_is(n, "constitmodel")) {
         c->model_loc = xml_loc(x, n);

@@ -22,17 +22,6 @@
 static const char *const NUMBER_CARDS[XF_N] = {"Gc", "pflenscale", "pflim"};
 static const char *const NUMBER_ARGS[XF_N] = {"Gc", "length", "limit"};
 
-static int positive_card(const XmlCtx *x, const xmlNode *n, double *v)
-{
-    if (xml_card_number(x, n, v))
-        return -1;
-    if (*v > 0)
-        return 0;
-    diag_error(xml_loc(x, n), "<%s> attribute 'value': must be positive (got %g)", xml_name(n),
-               *v);
-    return -1;
-}
-
 /* <notch>: the quad as a BI_NOTCH item, each corner located at its <pK>. */
 static int notch(const XmlCtx *x, const xmlNode *n, XmlFracture *f)
 {
@@ -96,7 +85,7 @@ int xml_fracture_card(const XmlCtx *x, const xmlNode *n, XmlFracture *f)
     f->first = f->first ? f->first : n;
     if (k < XF_N) {
         f->card[k] = n;
-        return positive_card(x, n, &f->value[k]);
+        return xml_card_positive(x, n, &f->value[k]);
     }
     return xml_is(n, "notch") ? notch(x, n, f) : restrictphi(x, n, f);
 }

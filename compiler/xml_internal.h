@@ -102,6 +102,8 @@ int xml_integer(const XmlCtx *x, const xmlNode *n, const char *attr, int require
                 long hi, long *out);
 /* A card <name value="..."/>: checks its attributes and reads value (required). */
 int xml_card_number(const XmlCtx *x, const xmlNode *n, double *out);
+/* The same, and the value must be positive. */
+int xml_card_positive(const XmlCtx *x, const xmlNode *n, double *out);
 /* A card <name value="true|false|1|0"/>. */
 int xml_card_bool(const XmlCtx *x, const xmlNode *n, int *out);
 /* x, y and z of a point element such as <point x=".." y=".." z=".."/> (all required). */

@@ -78,25 +78,13 @@ static int gravity(XmlCtx *x, const xmlNode *n)
     return 0;
 }
 
-static int positive_card(XmlCtx *x, const xmlNode *n, double *v)
-{
-    if (xml_card_number(x, n, v))
-        return -1;
-    if (!(*v > 0)) {
-        diag_error(xml_loc(x, n), "<%s> attribute 'value': must be positive (got %g)",
-                   xml_name(n), *v);
-        return -1;
-    }
-    return 0;
-}
-
 static int constant(XmlCtx *x, const xmlNode *n)
 {
     double v;
     if (xml_is(n, "gravity"))
         return gravity(x, n);
     if (xml_is(n, "coefh") || xml_is(n, "cflnumber") || xml_is(n, "hdp")) {
-        if (positive_card(x, n, &v))
+        if (xml_card_positive(x, n, &v))
             return -1;
         if (xml_is(n, "hdp"))
             v /= sqrt((double)x->dim);

@@ -190,6 +190,17 @@ int xml_card_number(const XmlCtx *x, const xmlNode *n, double *out)
     return xml_number(x, n, "value", 1, out) == 1 ? 0 : -1;
 }
 
+int xml_card_positive(const XmlCtx *x, const xmlNode *n, double *out)
+{
+    if (xml_card_number(x, n, out))
+        return -1;
+    if (*out > 0)
+        return 0;
+    diag_error(xml_loc(x, n), "<%s> attribute 'value': must be positive (got %g)", xml_name(n),
+               *out);
+    return -1;
+}
+
 int xml_card_bool(const XmlCtx *x, const xmlNode *n, int *out)
 {
     static const char *const value[] = {"value", NULL};
