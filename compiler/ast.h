@@ -73,9 +73,10 @@ typedef enum {
     MS_LET,    /* let name = expr                        */
     MS_STRESS, /* stress name = expr   (2nd Piola-Kirchhoff) */
     MS_ENERGY, /* energy name = expr   (strain energy density) */
-    MS_STATE,  /* state name = expr    (initial value; later issues) */
+    MS_STATE,  /* state name = expr    (per-particle state, its initial value) */
     MS_IF,     /* if cond { body } else { orelse }        */
-    MS_BLOCK   /* named block, e.g. tension { ... }       */
+    MS_BLOCK,  /* named block, e.g. tension { ... }       */
+    MS_ASSIGN  /* name = expr          (a new value of a let or state) */
 } MatStmtKind;
 
 typedef struct MatStmt MatStmt;
@@ -87,8 +88,8 @@ typedef struct {
 struct MatStmt {
     MatStmtKind kind;
     SrcLoc loc;
-    char *name;        /* LET/STRESS/ENERGY/STATE target, BLOCK name */
-    Expr *value;       /* LET/STRESS/ENERGY/STATE value, IF condition */
+    char *name;        /* LET/STRESS/ENERGY/STATE/ASSIGN target, BLOCK name */
+    Expr *value;       /* LET/STRESS/ENERGY/STATE/ASSIGN value, IF condition */
     MatStmtList body;  /* IF then-part, BLOCK contents */
     MatStmtList orelse;/* IF else-part */
 };

@@ -117,7 +117,7 @@ static void dump_matstmts(const MatStmtList *l, FILE *out, int depth);
 
 static void dump_matstmt(const MatStmt *m, FILE *out, int depth)
 {
-    static const char *const words[] = { "let", "stress", "energy", "state" };
+    static const char *const words[] = { "let", "stress", "energy", "state", "", "", "" };
     indent(out, depth);
     switch (m->kind) {
     case MS_LET:
@@ -141,6 +141,11 @@ static void dump_matstmt(const MatStmt *m, FILE *out, int depth)
             dump_matstmts(&m->orelse, out, depth + 2);
             fputc(')', out);
         }
+        fputc(')', out);
+        break;
+    case MS_ASSIGN:
+        fprintf(out, "(= %s ", m->name);
+        ast_dump_expr(m->value, out);
         fputc(')', out);
         break;
     case MS_BLOCK:

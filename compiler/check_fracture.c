@@ -155,6 +155,14 @@ int check_fracture_body(const BodyModel *b, const BodyDecl *d)
         }
         return 0;
     }
+    for (int i = 0; b->law && i < b->law->body.n; i++)
+        if (b->law->body.items[i].kind == MS_STATE) {
+            diag_error(f->loc, "fracture cannot be combined with material '%s', which has state "
+                               "(plasticity): the paper's phase field is for elastic materials "
+                               "only (section 2.3.3, remark 3)",
+                       b->law->name);
+            return -1;
+        }
     if (b->law && !has_tension(b->law)) {
         diag_error(f->loc, "fracture needs the tensile part of the material: material '%s' has "
                            "no 'tension { energy ...; stress ... }' block",

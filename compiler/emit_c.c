@@ -114,23 +114,43 @@ static void material(Emitter *E, const BodyModel *b, const BodyPlan *p)
         emit_fracture_material(out, b, p);
         return;
     }
-    fprintf(out, ".\n * In: deformation gradient F (3x3). Out: second Piola-Kirchhoff stress S, "
-                 "strain energy density psi. */\n");
-    fprintf(out, "static inline void %s_material(const double F[9], double S[9], double *psi)\n{\n",
-            b->name);
-    int roots[10];
-    memcpy(roots, p->roots.S, sizeof p->roots.S);
-    roots[9] = p->roots.psi;
-    fputs("    (void)F;\n", out);
-    sg_emit(&p->law, roots, 10, out, "    ");
+    const LawRoots *r = &p->roots;
+    if (p->nstate) {
+        fprintf(out, ".\n * In: deformation gradient F (3x3), the particle's state st (%d values:",
+                p->nstate);
+        for (int k = 0; k < r->nstates; k++)
+            fprintf(out, " %s%s", r->states[k].name, r->states[k].size == 9 ? "[9]" : "");
+        fprintf(out, ").\n * Out: second Piola-Kirchhoff stress S, strain energy density psi, "
+                     "the state at the end of the step st_new. */\n");
+        fprintf(out, "static inline void %s_material(const double F[9], const double *st, "
+                     "double *st_new, double S[9],\n                                   double *psi)\n{\n",
+                b->name);
+    } else {
+        fprintf(out, ".\n * In: deformation gradient F (3x3). Out: second Piola-Kirchhoff stress S, "
+                     "strain energy density psi. */\n");
+        fprintf(out, "static inline void %s_material(const double F[9], double S[9], double *psi)\n{\n",
+                b->name);
+    }
+    int roots[10 + LAW_MAX_SLOTS];
+    memcpy(roots, r->S, sizeof r->S);
+    roots[9] = r->psi;
+    memcpy(roots + 10, r->next, (size_t)p->nstate * sizeof(int));
+    fputs(p->nstate ? "    (void)F;\n    (void)st;\n" : "    (void)F;\n", out);
+    sg_emit(&p->law, roots, 10 + p->nstate, out, "    ");
     for (int k = 0; k < 9; k++) {
         fprintf(out, "    S[%d] = ", k);
-        sg_ref(&p->law, p->roots.S[k], out);
+        sg_ref(&p->law, r->S[k], out);
         fputs(";\n", out);
     }
     fputs("    *psi = ", out);
-    sg_ref(&p->law, p->roots.psi, out);
-    fputs(";\n}\n\n", out);
+    sg_ref(&p->law, r->psi, out);
+    fputs(";\n", out);
+    for (int k = 0; k < p->nstate; k++) {
+        fprintf(out, "    st_new[%d] = ", k);
+        sg_ref(&p->law, r->next[k], out);
+        fputs(";\n", out);
+    }
+    fputs("}\n\n", out);
 }
 
 static void fill_template(Emitter *E, const char *file, const BodyModel *b, const BodyPlan *p)
@@ -152,6 +172,9 @@ static void fill_template(Emitter *E, const char *file, const BodyModel *b, cons
     tpl_feature(&env, "SYMPLECTIC", p->symplectic);
     tpl_feature(&env, "FRACTURE", p->fracture);
     tpl_feature(&env, "NO_FRACTURE", !p->fracture);
+    tpl_feature(&env, "STATE", p->nstate > 0);
+    tpl_feature(&env, "PLAIN_LAW", !p->fracture && !p->nstate);
+    tpl_set(&env, "NSTATE", "%d", p->nstate);
     if (p->fracture) {
         const FractureModel *f = &b->fracture;
         tpl_set(&env, "GC", "%.17g", f->Gc);
@@ -439,8 +462,16 @@ static void bodies_desc(Emitter *E)
 {
     const Model *m = E->m;
     FILE *out = E->out;
-    for (int i = 0; i < m->nbodies; i++)
+    for (int i = 0; i < m->nbodies; i++) {
         body_desc_arrays(E, &m->bodies[i]);
+        const LawRoots *r = &E->plans[i].roots;
+        if (!r->nslots)
+            continue;
+        fprintf(out, "static const double %s_state_init[%d] = {", m->bodies[i].name, r->nslots);
+        for (int k = 0; k < r->nslots; k++)
+            fprintf(out, "%s%.17g", k ? ", " : "", r->init[k]);
+        fputs("};\n", out);
+    }
     fputs("static const sph_body_desc BODIES[] = {\n", out);
     for (int i = 0; i < m->nbodies; i++) {
         const BodyModel *b = &m->bodies[i];
@@ -458,6 +489,9 @@ static void bodies_desc(Emitter *E)
                     b->nmeasures);
         if (b->fracture.on)
             fprintf(out, "        .fracture = &%s_fracture,\n", b->name);
+        if (E->plans[i].nstate)
+            fprintf(out, "        .nstate = %d,\n        .state_init = %s_state_init,\n",
+                    E->plans[i].nstate, b->name);
         fputs("    },\n", out);
     }
     fputs("};\n\n", out);

@@ -22,6 +22,7 @@ typedef struct {
 typedef struct {
     const char *name;
     Val v;
+    int assigned;  /* made by `name = ...` (or the merge after an if): outlives its block */
 } Binding;
 
 typedef struct {
@@ -34,6 +35,7 @@ typedef struct {
     int has_stress, has_energy;
     int want_tension;  /* evaluate the tension block (fracture) */
     int in_tension;    /* inside it: stress and energy are S+ and psi+ */
+    int in_if;         /* inside an if block: only let and assignments */
     LawRoots out;
 } Law;
 
@@ -53,7 +55,16 @@ static void bind(Law *L, const char *name, Val v)
         L->capenv = L->capenv ? 2 * L->capenv : 16;
         L->env = realloc(L->env, (size_t)L->capenv * sizeof *L->env);
     }
-    L->env[L->nenv++] = (Binding){name, v};
+    L->env[L->nenv++] = (Binding){name, v, 0};
+}
+
+/* The innermost binding of name, or NULL. */
+static Binding *find_binding(Law *L, const char *name)
+{
+    for (int i = L->nenv - 1; i >= 0; i--)
+        if (!strcmp(L->env[i].name, name))
+            return &L->env[i];
+    return NULL;
 }
 
 static Val identity(Law *L)
@@ -398,6 +409,150 @@ static Val eval(Law *L, const Expr *e)
 
 static int statement(Law *L, const MatStmt *s);
 
+static int not_in_if(Law *L, const MatStmt *s, const char *what)
+{
+    diag_error(s->loc, "%s cannot be inside an if block of material '%s' (compute the value "
+                       "with lets and assignments, then define it after the block)",
+               what, L->law->name);
+    return -1;
+}
+
+/* state name = initial value: a per-particle variable read at the start of the law (graph
+ * inputs) whose value at the end of the law is stored back.  The initial value must be a
+ * constant (a number or a constant tensor such as I). */
+static int state_stmt(Law *L, const MatStmt *s)
+{
+    if (L->in_if || L->in_tension)
+        return not_in_if(L, s, "a state declaration");
+    LawRoots *r = &L->out;
+    if (find_binding(L, s->name)) {
+        diag_error(s->loc, "'%s' is already defined in material '%s'", s->name, L->law->name);
+        return -1;
+    }
+    Val v = eval(L, s->value);
+    if (!ok(v))
+        return -1;
+    int size = v.tensor ? 9 : 1;
+    if (r->nstates == LAW_MAX_STATES || r->nslots + size > LAW_MAX_SLOTS) {
+        diag_error(s->loc, "material '%s' has more state than sphc supports (%d values)",
+                   L->law->name, LAW_MAX_SLOTS);
+        return -1;
+    }
+    Val in = v;
+    for (int k = 0; k < size; k++) {
+        int node = v.tensor ? v.t[k] : v.s;
+        if (!sg_is_const(L->g, node, &r->init[r->nslots + k])) {
+            diag_error(s->value->loc, "the initial value of state '%s' must be a constant",
+                       s->name);
+            return -1;
+        }
+        int input = sg_input(L->g, LAW_INPUT_STATE + r->nslots + k);
+        *(v.tensor ? &in.t[k] : &in.s) = input;
+    }
+    r->states[r->nstates++] = (LawState){s->name, r->nslots, size};
+    r->nslots += size;
+    bind(L, s->name, in);
+    return 0;
+}
+
+/* name = expr: a new value of a let or a state variable, of the same type. */
+static int assign_stmt(Law *L, const MatStmt *s)
+{
+    Binding *b = find_binding(L, s->name);
+    if (!b) {
+        diag_error(s->loc, "'%s' is not a variable of material '%s' (declare it with let or "
+                           "state first)",
+                   s->name, L->law->name);
+        return -1;
+    }
+    if (!strcmp(s->name, "F")) {
+        diag_error(s->loc, "the deformation gradient F cannot be assigned");
+        return -1;
+    }
+    int tensor = b->v.tensor;
+    Val v = eval(L, s->value);
+    if (!ok(v))
+        return -1;
+    if (v.tensor != tensor) {
+        diag_error(s->value->loc, "'%s' is a %s and cannot take a %s", s->name,
+                   tensor ? "tensor" : "scalar", v.tensor ? "tensor" : "scalar");
+        return -1;
+    }
+    bind(L, s->name, v);
+    L->env[L->nenv - 1].assigned = 1;
+    return 0;
+}
+
+/* The assignments a branch made to variables that existed before it (the last of each):
+ * names and values in out, their count returned.  Its lets end with it. */
+static int branch(Law *L, const MatStmtList *body, int mark, Binding *out, int cap, int *bad)
+{
+    for (int i = 0; i < body->n; i++)
+        *bad |= statement(L, &body->items[i]) != 0;
+    int n = 0;
+    for (int i = L->nenv - 1; i >= mark; i--) {
+        const Binding *b = &L->env[i];
+        if (!b->assigned)
+            continue;
+        int seen = 0;
+        for (int k = 0; k < n; k++)
+            seen |= !strcmp(out[k].name, b->name);
+        if (!seen && n < cap)
+            out[n++] = *b;
+    }
+    L->nenv = mark;
+    return n;
+}
+
+static const Binding *among(const Binding *list, int n, const char *name)
+{
+    for (int k = 0; k < n; k++)
+        if (!strcmp(list[k].name, name))
+            return &list[k];
+    return NULL;
+}
+
+/* if c { ... } else { ... }: both branches are evaluated; every variable either assigns
+ * becomes select(c, its then-value, its else-value), with the value from before the block
+ * where a branch leaves it alone (the graph is pure, so this is exact). */
+static int if_stmt(Law *L, const MatStmt *s)
+{
+    Val c = need_scalar(s->value, eval(L, s->value), "the condition of 'if'");
+    if (!ok(c))
+        return -1;
+    enum { CAP = 64 };
+    Binding thn[CAP], els[CAP];
+    int mark = L->nenv, bad = 0, was = L->in_if;
+    L->in_if = 1;
+    int nt = branch(L, &s->body, mark, thn, CAP, &bad);
+    int ne = branch(L, &s->orelse, mark, els, CAP, &bad);
+    L->in_if = was;
+    if (bad)
+        return -1;
+    for (int pass = 0; pass < 2; pass++) {
+        const Binding *list = pass ? els : thn;
+        for (int k = 0; k < (pass ? ne : nt); k++) {
+            const char *name = list[k].name;
+            if (pass && among(thn, nt, name))
+                continue; /* merged in the first pass */
+            const Binding *pre = find_binding(L, name);
+            if (!pre)
+                continue; /* a let of the branch itself */
+            Val before = pre->v;
+            const Binding *a = among(thn, nt, name), *b = among(els, ne, name);
+            Val va = a ? a->v : before, vb = b ? b->v : before, m = va;
+            if (!va.tensor)
+                m.s = sg_select(L->g, c.s, va.s, vb.s);
+            else
+                for (int q = 0; q < 9; q++)
+                    m.t[q] = sg_select(L->g, c.s, va.t[q], vb.t[q]);
+            bind(L, name, m);
+            L->env[L->nenv - 1].assigned = 1;
+        }
+    }
+    return 0;
+}
+
 /* tension { let ...; energy psi = ...; stress S = ... }: the tensile parts psi+ and S+
  * (eq. 11, 17, 20, 31), both required; the compressive parts are the rest (psi- = psi -
  * psi+, S- = S - S+).  Its names are local to it.  Evaluated only for fracture bodies. */
@@ -441,6 +596,8 @@ static int statement(Law *L, const MatStmt *s)
         bind(L, s->name, v);
         return 0;
     case MS_STRESS:
+        if (L->in_if)
+            return not_in_if(L, s, "stress");
         if ((L->in_tension ? 2 : 1) & L->has_stress) {
             diag_error(s->loc, "material '%s' defines its %sstress twice", L->law->name,
                        L->in_tension ? "tensile " : "");
@@ -454,6 +611,8 @@ static int statement(Law *L, const MatStmt *s)
         bind(L, s->name, v);
         return 0;
     case MS_ENERGY:
+        if (L->in_if)
+            return not_in_if(L, s, "energy");
         if ((L->in_tension ? 2 : 1) & L->has_energy) {
             diag_error(s->loc, "material '%s' defines its %senergy twice", L->law->name,
                        L->in_tension ? "tensile " : "");
@@ -467,16 +626,18 @@ static int statement(Law *L, const MatStmt *s)
         bind(L, s->name, v);
         return 0;
     case MS_BLOCK:
+        if (L->in_if)
+            return not_in_if(L, s, "a tension block");
         if (!strcmp(s->name, "tension"))
             return tension_block(L, s);
         diag_error(s->loc, "unknown block '%s' in a material law (expected tension)", s->name);
         return -1;
     case MS_STATE:
+        return state_stmt(L, s);
     case MS_IF:
-        diag_error(s->loc, "%s in material laws is not supported yet (it arrives with "
-                           "plasticity)",
-                   s->kind == MS_STATE ? "'state'" : "'if'");
-        return -1;
+        return if_stmt(L, s);
+    case MS_ASSIGN:
+        return assign_stmt(L, s);
     }
     return -1;
 }
@@ -526,6 +687,12 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *p
     if (!bad && !(L.has_energy & 1)) {
         diag_error(law->loc, "material '%s' defines no 'energy'", law->name);
         bad = 1;
+    }
+    for (int v = 0; !bad && v < L.out.nstates; v++) { /* the state's values at the end */
+        const LawState *st = &L.out.states[v];
+        Val end = find_binding(&L, st->name)->v;
+        for (int k = 0; k < st->size; k++)
+            L.out.next[st->offset + k] = st->size == 1 ? end.s : end.t[k];
     }
     free(L.env);
     if (!bad && L.out.has_tension) {

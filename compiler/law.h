@@ -5,6 +5,15 @@
 #include "model.h"
 #include "scalar.h"
 
+#define LAW_MAX_SLOTS 48   /* per-particle state values of one law (a tensor takes 9) */
+#define LAW_MAX_STATES 16
+
+/* A state variable of a law: slots offset .. offset+size-1 of the particle's state. */
+typedef struct {
+    const char *name;
+    int offset, size;   /* size 1 (scalar) or 9 (tensor, row-major) */
+} LawState;
+
 typedef struct {
     int S[9];   /* second Piola–Kirchhoff stress, row-major 3×3 */
     int psi;    /* strain energy density */
@@ -13,6 +22,11 @@ typedef struct {
     int psip;   /* the tensile energy psi+ (eq. 11, 20) */
     int Sd[9];  /* degraded by the phase field s (input 9): S = s^2 S+ + S- (eq. 18) */
     int psid;   /* psi = s^2 psi+ + psi- (eq. 7) */
+    LawState states[LAW_MAX_STATES];
+    int nstates;
+    int nslots;                  /* state values per particle */
+    double init[LAW_MAX_SLOTS];  /* their initial values */
+    int next[LAW_MAX_SLOTS];     /* their values at the end of the law (graph nodes) */
 } LawRoots;
 
 /* Evaluate `law` for a body of dimension dim with parameter values params (NULL:
@@ -21,7 +35,9 @@ typedef struct {
 int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *params, int dim,
               int tension, LawRoots *out);
 
-/* The graph input that holds the phase field s in a degraded law (F is inputs 0-8). */
+/* Graph inputs: F is 0-8, the phase field s of a degraded law 9, state slot k is
+ * LAW_INPUT_STATE + k (emitted as st[k]). */
 #define LAW_INPUT_S 9
+#define LAW_INPUT_STATE 16
 
 #endif

@@ -35,6 +35,7 @@ int lower_model(const Model *m, BodyPlan *plans)
         features(m, b, p);
         sg_init(&p->law);
         bad |= law_build(&p->law, m, b->law, b->law_args, m->dim, b->fracture.on, &p->roots) != 0;
+        p->nstate = p->roots.nslots;
     }
     return bad ? -1 : 0;
 }
@@ -81,9 +82,9 @@ void plan_dump(const Model *m, FILE *out)
         fprintf(out, "body %s: dim %d, law %s, %s integrator\n", b->name, m->dim, b->law->name,
                 p->symplectic ? "symplectic" : "verlet");
         fprintf(out, "  features: viscosity=%d beta2=%d gravity=%d velocity_bcs=%d "
-                     "force_bcs=%d hourglass=%d fracture=%d restrict=%d plasticity=0 contact=0\n",
+                     "force_bcs=%d hourglass=%d fracture=%d restrict=%d state=%d contact=0\n",
                 p->viscosity, p->beta2, p->gravity, p->velocity_bcs, p->force_bcs, p->hourglass,
-                p->fracture, p->restrict_phase);
+                p->fracture, p->restrict_phase, p->nstate > 0);
         fprintf(out, "  material law: %d graph nodes\n", count_ops(&p->law));
         int roots[10];
         memcpy(roots, p->roots.S, sizeof p->roots.S);

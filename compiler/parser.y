@@ -373,6 +373,7 @@ matstmt
                                           $$.body = $4; $$.orelse = $6; }
     | IDENT '{' matstmts '}'            { $$ = ast_matstmt(MS_BLOCK, LOC(@1), $1, NULL);
                                           $$.body = $3; }
+    | IDENT '=' expr                    { $$ = ast_matstmt(MS_ASSIGN, LOC(@1), $1, $3); }
     ;
 
 else_opt

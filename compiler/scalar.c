@@ -290,8 +290,10 @@ void sg_ref(const SGraph *g, int id, FILE *out)
     } else if (s->op == SN_INPUT) {
         if ((int)s->v < 9)
             fprintf(out, "F[%d]", (int)s->v);
+        else if ((int)s->v < 16)
+            fputs("s", out); /* the phase field (law.h: LAW_INPUT_S) */
         else
-            fputs("s", out); /* the phase field (LAW_INPUT_S) */
+            fprintf(out, "st[%d]", (int)s->v - 16); /* a state slot (LAW_INPUT_STATE) */
     } else if (s->op == SN_PARAM) {
         fprintf(out, "p%d", (int)s->v);
     } else if (s->op == SN_PART) {

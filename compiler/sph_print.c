@@ -278,7 +278,7 @@ static void print_stmts(const MatStmtList *l, int depth, FILE *out);
 
 static void print_stmt(const MatStmt *s, int depth, FILE *out)
 {
-    static const char *const words[] = {"let", "stress", "energy", "state"};
+    static const char *const words[] = {"let", "stress", "energy", "state", "", "", ""};
     fprintf(out, "%*s", 2 * depth, "");
     switch (s->kind) {
     case MS_LET: case MS_STRESS: case MS_ENERGY: case MS_STATE:
@@ -296,6 +296,11 @@ static void print_stmt(const MatStmt *s, int depth, FILE *out)
             print_stmts(&s->orelse, depth + 1, out);
         }
         fprintf(out, "%*s}\n", 2 * depth, "");
+        return;
+    case MS_ASSIGN:
+        fprintf(out, "%s = ", s->name);
+        sph_print_expr(s->value, out);
+        fputc('\n', out);
         return;
     case MS_BLOCK:
         fprintf(out, "%s {\n", s->name);

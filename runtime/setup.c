@@ -90,6 +90,13 @@ static void allocate(sph_body *b)
     b->psi = zalloc(n, sizeof(double));
     b->sigma = zalloc(n * 6, sizeof(double));
     b->fix = zalloc(n, 1);
+    const int ns = b->desc->nstate;
+    if (ns > 0) {
+        b->state = zalloc(n * (size_t)ns, sizeof(double));
+        for (size_t i = 0; i < n; i++)
+            for (int k = 0; k < ns; k++)
+                b->state[i * (size_t)ns + (size_t)k] = b->desc->state_init[k];
+    }
     if (!b->desc->fracture)
         return;
     b->s = zalloc(n, sizeof(double));
@@ -325,7 +332,7 @@ void sph_body_free(sph_body *b)
     free(b->nb_start), free(b->nb), free(b->nb_k), free(b->wtab), free(b->gtab), free(b->htab);
     free(b->hb_start), free(b->hb), free(b->hb_k), free(b->stripe), free(b->A);
     free(b->s), free(b->sd), free(b->sdd), free(b->H), free(b->lap), free(b->sd_n);
-    free(b->ltab);
+    free(b->ltab), free(b->state);
 }
 
 /* ------------------------------------------------------------------ measured quantities */

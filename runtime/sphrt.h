@@ -141,6 +141,8 @@ typedef struct {
     const sph_measure_desc *measures;
     int nmeasures;
     const sph_fracture_desc *fracture; /* NULL: no fracture */
+    int nstate;                 /* state values per particle of the material law (plasticity) */
+    const double *state_init;   /* their initial values */
 } sph_body_desc;
 
 /* Expectations, checked at the end of the run and written to summary.json. */
@@ -233,6 +235,8 @@ struct sph_body {
     int *stripe;          /* nstripes + 1 particle indices */
     int nstripes;
     sph_real *A;          /* n*dim*dim: sum_j (u_j - u_i) (x) w_ij, the pair part of eq. 53 */
+
+    double *state;        /* n*nstate state of the material law (NULL without state) */
 
     /* Phase-field fracture (NULL unless the body has fracture). */
     double *s, *sd, *sdd; /* n phase field (1 intact, 0 broken), ds/dt, d2s/dt2 */

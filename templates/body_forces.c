@@ -102,7 +102,14 @@ static void @B@_stress_pass(sph_body *b)
                            2 * sf[i] * H[i] * (1.0 / @GC@));
         lap[i] = 0; /* ready for the next step's gradient pass */
 //@endif
-//@if NO_FRACTURE
+//@if STATE
+        /* the law's state (plasticity) advances once per step, here */
+        double *st = b->state + (size_t)i * @NSTATE@, st_new[@NSTATE@];
+        @B@_material(F, st, st_new, S, &e);
+        for (int k = 0; k < @NSTATE@; k++)
+            st[k] = st_new[k];
+//@endif
+//@if PLAIN_LAW
         @B@_material(F, S, &e);
 //@endif
         psi[i] = e;
@@ -265,7 +272,11 @@ static void @B@_stress_output(sph_body *b)
         double ep;
         @B@_material(F, b->s[i], S, &e, &ep);
 //@endif
-//@if NO_FRACTURE
+//@if STATE
+        double st_new[@NSTATE@]; /* the state as the last step left it: not advanced here */
+        @B@_material(F, b->state + (size_t)i * @NSTATE@, st_new, S, &e);
+//@endif
+//@if PLAIN_LAW
         @B@_material(F, S, &e);
 //@endif
         sph_mat3_mul(F, S, FS);

@@ -22,7 +22,8 @@ set(marks
   "force_bcs=@B@_force_bcs(sph_body"
   "hourglass=htab"
   "fracture=ltab"
-  "restrict=@B@_restrict(sph_body")
+  "restrict=@B@_restrict(sph_body"
+  "state=st_new")
 
 string(REGEX MATCHALL "body [A-Za-z0-9_]+: dim [23][^\n]*\n[^\n]*features:[^\n]*" bodies "${plan}")
 foreach(entry ${bodies})
@@ -54,7 +55,12 @@ foreach(entry ${bodies})
   endforeach()
   string(REGEX MATCH "fracture=([01])" _ "${entry}")
   set(frac ${CMAKE_MATCH_1})
-  set(words plastic contact)
+  string(REGEX MATCH "state=([01])" _ "${entry}")
+  set(state ${CMAKE_MATCH_1})
+  set(words contact)
+  if(state EQUAL 0)
+    list(APPEND words plastic b->state st_new)
+  endif()
   if(frac EQUAL 0)
     list(APPEND words phase fracture notch sph_sym_pos)
   endif()
