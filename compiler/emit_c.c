@@ -471,6 +471,15 @@ static void bodies_desc(Emitter *E)
         for (int k = 0; k < r->nslots; k++)
             fprintf(out, "%s%.17g", k ? ", " : "", r->init[k]);
         fputs("};\n", out);
+        /* the names of the scalar state variables, which the VTU files carry */
+        fprintf(out, "static const char *const %s_state_names[%d] = {", m->bodies[i].name,
+                r->nslots);
+        for (int v = 0; v < r->nstates; v++)
+            for (int k = 0; k < r->states[v].size; k++)
+                fprintf(out, "%s%s%s%s", v || k ? ", " : "", r->states[v].size == 1 ? "\"" : "",
+                        r->states[v].size == 1 ? r->states[v].name : "NULL",
+                        r->states[v].size == 1 ? "\"" : "");
+        fputs("};\n", out);
     }
     fputs("static const sph_body_desc BODIES[] = {\n", out);
     for (int i = 0; i < m->nbodies; i++) {
@@ -490,8 +499,9 @@ static void bodies_desc(Emitter *E)
         if (b->fracture.on)
             fprintf(out, "        .fracture = &%s_fracture,\n", b->name);
         if (E->plans[i].nstate)
-            fprintf(out, "        .nstate = %d,\n        .state_init = %s_state_init,\n",
-                    E->plans[i].nstate, b->name);
+            fprintf(out, "        .nstate = %d,\n        .state_init = %s_state_init,\n"
+                         "        .state_names = %s_state_names,\n",
+                    E->plans[i].nstate, b->name, b->name);
         fputs("    },\n", out);
     }
     fputs("};\n\n", out);

@@ -143,6 +143,8 @@ typedef struct {
     const sph_fracture_desc *fracture; /* NULL: no fracture */
     int nstate;                 /* state values per particle of the material law (plasticity) */
     const double *state_init;   /* their initial values */
+    const char *const *state_names; /* per value: the law's name of a scalar state variable
+                                       (written to the VTU files), NULL for tensor entries */
 } sph_body_desc;
 
 /* Expectations, checked at the end of the run and written to summary.json. */

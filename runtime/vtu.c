@@ -181,7 +181,15 @@ static void write_data_array(FILE *f, array_id a, uint64_t offset, const char *i
     fprintf(f, " format=\"appended\" offset=\"%llu\"/>\n", (unsigned long long)offset);
 }
 
-/* Everything before the binary data; offsets follow the order of ARRAYS. */
+/* The law's scalar state variables (e.g. the equivalent plastic strain `ep`), written as
+ * point data after the fixed arrays, named as in the law. */
+static int state_output(const sph_body *b, int k)
+{
+    const sph_body_desc *d = b->desc;
+    return d && d->state_names && k < d->nstate && d->state_names[k];
+}
+
+/* Everything before the binary data; offsets follow the order of ARRAYS, then the state. */
 static void write_header(FILE *f, const sph_body *b, double t)
 {
     const char *in = "        ";
@@ -191,6 +199,7 @@ static void write_header(FILE *f, const sph_body *b, double t)
         if (present((array_id)a, b))
             pos += sizeof(uint64_t) + block_bytes((array_id)a, (size_t)b->n);
     }
+    const uint64_t state_bytes = sizeof(uint64_t) + (uint64_t)b->n * sizeof(double);
     fprintf(f, "<?xml version=\"1.0\"?>\n"
                "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"%s\""
                " header_type=\"UInt64\">\n  <UnstructuredGrid>\n"
@@ -202,6 +211,13 @@ static void write_header(FILE *f, const sph_body *b, double t)
     for (int a = A_DISPLACEMENT; a <= A_HISTORY; a++)
         if (present((array_id)a, b))
             write_data_array(f, (array_id)a, off[a], in);
+    for (int k = 0; b->desc && k < b->desc->nstate; k++)
+        if (state_output(b, k)) {
+            fprintf(f, "%s<DataArray type=\"Float64\" Name=\"%s\" format=\"appended\" "
+                       "offset=\"%llu\"/>\n",
+                    in, b->desc->state_names[k], (unsigned long long)pos);
+            pos += state_bytes;
+        }
     fprintf(f, "      </PointData>\n      <Points>\n");
     write_data_array(f, A_POINTS, off[A_POINTS], in);
     fprintf(f, "      </Points>\n      <Cells>\n");
@@ -223,6 +239,17 @@ static void write_blocks(FILE *f, const sph_body *b, void *buf)
         if (fwrite(&bytes, sizeof bytes, 1, f) != 1)
             return;
         if (bytes && fwrite(buf, 1, (size_t)bytes, f) != bytes)
+            return;
+    }
+    for (int k = 0; b->desc && k < b->desc->nstate; k++) {
+        if (!state_output(b, k))
+            continue;
+        double *v = buf;
+        const int ns = b->desc->nstate;
+        for (int i = 0; i < b->n; i++)
+            v[i] = b->state[(size_t)i * ns + k];
+        uint64_t bytes = (uint64_t)b->n * sizeof(double);
+        if (fwrite(&bytes, sizeof bytes, 1, f) != 1 || (bytes && fwrite(buf, 1, bytes, f) != bytes))
             return;
     }
 }

@@ -9,12 +9,16 @@
  * to 1e-10 (eq. 51); the state is the same at every particle; unloading is elastic: from the
  * second step after the reversal (the first still sees the last loading increment: forces
  * come before the update) ep does not change, and sigma_xx falls with the elastic slope
- * K + 4/3 mu (within 2 %: Cauchy stress against F - 1, finite-strain terms of 1 %). */
+ * K + 4/3 mu (within 2 %: Cauchy stress against F - 1, finite-strain terms of 1 %).  The
+ * particle files carry ep. */
 #define main generated_main
 #include "j2strain2d.c"
 #undef main
 
+#include <string.h>
+
 #include "check.h"
+#include "output.h"
 
 enum { D = 2, NS = 10 };
 
@@ -75,6 +79,15 @@ int main(void)
     check_close("unloading: ep unchanged (relative)", b->state[9] / ep_unload, 1, 1e-12);
     check_close("unloading slope / (K + 4/3 mu)",
                 (s_top - s_end) / (eps_top - eps_end) / (K + 4.0 / 3 * mu), 1, 0.02);
+    /* the law's scalar state goes to the particle files under its own name */
+    char text[4096] = {0};
+    FILE *f = NULL;
+    if (sph_write_vtu("test_j2_state.vtu", b, sim.t) == 0 && (f = fopen("test_j2_state.vtu", "rb"))) {
+        size_t got = fread(text, 1, sizeof text - 1, f);
+        text[got] = 0;
+        fclose(f);
+    }
+    check_close("VTU file has the state variable 'ep'", strstr(text, "Name=\"ep\"") != NULL, 1, 0);
     sph_sim_free(&sim);
     return check_result();
 }
