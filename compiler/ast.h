@@ -76,7 +76,8 @@ typedef enum {
     MS_STATE,  /* state name = expr    (per-particle state, its initial value) */
     MS_IF,     /* if cond { body } else { orelse }        */
     MS_BLOCK,  /* named block, e.g. tension { ... }       */
-    MS_ASSIGN  /* name = expr          (a new value of a let or state) */
+    MS_ASSIGN, /* name = expr          (a new value of a let or state) */
+    MS_DISSIPATION /* dissipation name: state `name` is the dissipated energy density */
 } MatStmtKind;
 
 typedef struct MatStmt MatStmt;

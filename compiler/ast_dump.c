@@ -143,6 +143,9 @@ static void dump_matstmt(const MatStmt *m, FILE *out, int depth)
         }
         fputc(')', out);
         break;
+    case MS_DISSIPATION:
+        fprintf(out, "(dissipation %s)", m->name);
+        break;
     case MS_ASSIGN:
         fprintf(out, "(= %s ", m->name);
         ast_dump_expr(m->value, out);

@@ -502,6 +502,9 @@ static void bodies_desc(Emitter *E)
             fprintf(out, "        .nstate = %d,\n        .state_init = %s_state_init,\n"
                          "        .state_names = %s_state_names,\n",
                     E->plans[i].nstate, b->name, b->name);
+        if (E->plans[i].roots.dissipation)
+            fprintf(out, "        .dissipation = %d, /* plastic work in state value %d */\n",
+                    E->plans[i].roots.dissipation, E->plans[i].roots.dissipation - 1);
         fputs("    },\n", out);
     }
     fputs("};\n\n", out);

@@ -455,6 +455,28 @@ static int state_stmt(Law *L, const MatStmt *s)
     return 0;
 }
 
+/* dissipation name: the scalar state variable `name` accumulates the energy density the law
+ * has dissipated (plastic work); the program reports its volume integral per body. */
+static int dissipation_stmt(Law *L, const MatStmt *s)
+{
+    LawRoots *r = &L->out;
+    if (L->in_if || L->in_tension)
+        return not_in_if(L, s, "a dissipation declaration");
+    for (int v = 0; v < r->nstates; v++)
+        if (!strcmp(r->states[v].name, s->name) && r->states[v].size == 1) {
+            if (r->dissipation) {
+                diag_error(s->loc, "material '%s' declares its dissipation twice", L->law->name);
+                return -1;
+            }
+            r->dissipation = 1 + r->states[v].offset;
+            return 0;
+        }
+    diag_error(s->loc, "'%s' is not a scalar state variable of material '%s' (dissipation "
+                       "names one, e.g. state wp = 0)",
+               s->name, L->law->name);
+    return -1;
+}
+
 /* name = expr: a new value of a let or a state variable, of the same type. */
 static int assign_stmt(Law *L, const MatStmt *s)
 {
@@ -638,6 +660,8 @@ static int statement(Law *L, const MatStmt *s)
         return if_stmt(L, s);
     case MS_ASSIGN:
         return assign_stmt(L, s);
+    case MS_DISSIPATION:
+        return dissipation_stmt(L, s);
     }
     return -1;
 }

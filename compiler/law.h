@@ -27,6 +27,7 @@ typedef struct {
     int nslots;                  /* state values per particle */
     double init[LAW_MAX_SLOTS];  /* their initial values */
     int next[LAW_MAX_SLOTS];     /* their values at the end of the law (graph nodes) */
+    int dissipation;             /* 1 + the slot of the dissipated energy density; 0: none */
 } LawRoots;
 
 /* Evaluate `law` for a body of dimension dim with parameter values params (NULL:

@@ -248,6 +248,7 @@ static void report_unclosed(ParseState *ps, const YYLTYPE *at, int at_eof, const
 %token <char *> STRING "string"
 %token IMPORT "import" SCENE "scene" LET "let" FN "fn" MATERIAL "material" BODY "body"
 %token SHAPE "shape" STRESS "stress" ENERGY "energy" STATE "state" IF "if" ELSE "else"
+%token DISSIPATION "dissipation"
 %token VELOCITY "velocity" FORCE "force" POINT "point" SURFACE "surface" ACCEL "accel"
 %token FROM "from" TO "to" NEAR "near" MEASURE "measure" PLANE "plane"
 %token EXPECT "expect" REFERENCE "reference" WITHIN "within"
@@ -374,6 +375,7 @@ matstmt
     | IDENT '{' matstmts '}'            { $$ = ast_matstmt(MS_BLOCK, LOC(@1), $1, NULL);
                                           $$.body = $3; }
     | IDENT '=' expr                    { $$ = ast_matstmt(MS_ASSIGN, LOC(@1), $1, $3); }
+    | DISSIPATION IDENT                 { $$ = ast_matstmt(MS_DISSIPATION, LOC(@2), $2, NULL); }
     ;
 
 else_opt

@@ -297,6 +297,9 @@ static void print_stmt(const MatStmt *s, int depth, FILE *out)
         }
         fprintf(out, "%*s}\n", 2 * depth, "");
         return;
+    case MS_DISSIPATION:
+        fprintf(out, "dissipation %s\n", s->name);
+        return;
     case MS_ASSIGN:
         fprintf(out, "%s = ", s->name);
         sph_print_expr(s->value, out);

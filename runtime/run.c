@@ -51,7 +51,7 @@ static int energy_columns(const sph_model *m)
 {
     int n = 2 + 2 * m->nbodies;
     for (int i = 0; i < m->nbodies; i++)
-        n += m->bodies[i].fracture != NULL;
+        n += (m->bodies[i].fracture != NULL) + (m->bodies[i].dissipation > 0);
     return n;
 }
 
@@ -76,6 +76,9 @@ static int open_outputs(run_state *r)
     for (int i = 0; i < m->nbodies; i++)
         if (m->bodies[i].fracture)
             cols[c++] = joinf("%s_fracture%s", m->bodies[i].name, "");
+    for (int i = 0; i < m->nbodies; i++)
+        if (m->bodies[i].dissipation)
+            cols[c++] = joinf("%s_plastic%s", m->bodies[i].name, "");
     cols[c] = joinf("total%s%s", "", "");
     char *path = joinf("%s/energies.csv%s", r->opt.out_dir, "");
     bad = sph_csv_open(&r->energies, path, (const char *const *)cols, ncol);
@@ -121,6 +124,11 @@ static int record(run_state *r)
             total[0] += row[c++];
         }
     }
+    for (int i = 0; i < s->nbodies; i++)
+        if (s->bodies[i].desc->dissipation) { /* plastic work: where the rest went */
+            row[c] = sph_dissipated_energy(&s->bodies[i]);
+            total[0] += row[c++];
+        }
     row[ncol - 1] = total[0] + total[1];
     int bad = sph_csv_row(&r->energies, row);
     if (r->m->compat_outputs)

@@ -351,6 +351,17 @@ void sph_body_energies(const sph_body *b, double *strain, double *kinetic)
     *kinetic = 0.5 * b->mass * ek;
 }
 
+double sph_dissipated_energy(const sph_body *b)
+{
+    const int slot = b->desc->dissipation - 1, ns = b->desc->nstate;
+    if (slot < 0 || !b->state)
+        return 0.0;
+    double w = 0;
+    for (int i = 0; i < b->n; i++)
+        w += b->state[(size_t)i * ns + slot];
+    return w * b->vol;
+}
+
 void sph_measure(const sph_body *b, int k, double out[6])
 {
     memset(out, 0, 6 * sizeof(double));

@@ -145,6 +145,8 @@ typedef struct {
     const double *state_init;   /* their initial values */
     const char *const *state_names; /* per value: the law's name of a scalar state variable
                                        (written to the VTU files), NULL for tensor entries */
+    int dissipation;            /* 1 + the state value holding the dissipated energy density
+                                   (plastic work); 0: none */
 } sph_body_desc;
 
 /* Expectations, checked at the end of the run and written to summary.json. */
@@ -281,6 +283,8 @@ void sph_body_energies(const sph_body *b, double *strain, double *kinetic);
 /* Fracture energy of a body: sum V Gc ((1 - s)^2 / (4 eps0) + eps0 |grad s|^2); 0 without
  * fracture. */
 double sph_fracture_energy(const sph_body *b);
+/* Energy a body has dissipated in its material law (plastic work): sum V w; 0 without. */
+double sph_dissipated_energy(const sph_body *b);
 
 /* Component k (0..dim-1) of a compact vector -> 3D axis (0 = x, 1 = y, 2 = z). */
 static inline int sph_axis(int dim, int k) { return dim == 2 ? 2 * k : k; }

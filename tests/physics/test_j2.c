@@ -10,7 +10,9 @@
  * second step after the reversal (the first still sees the last loading increment: forces
  * come before the update) ep does not change, and sigma_xx falls with the elastic slope
  * K + 4/3 mu (within 2 %: Cauchy stress against F - 1, finite-strain terms of 1 %).  The
- * particle files carry ep. */
+ * plastic work wp (the law's dissipation) at the top equals the integral of sigma_eq dg,
+ * sigma_y0 g + sqrt(2/3) H g^2 / 2, within 2 %, and the body's dissipated energy is its
+ * volume integral.  The particle files carry ep. */
 #define main generated_main
 #include "j2strain2d.c"
 #undef main
@@ -20,7 +22,7 @@
 #include "check.h"
 #include "output.h"
 
-enum { D = 2, NS = 10 };
+enum { D = 2, NS = 11 }; /* Cp (9), ep, wp */
 
 static double det3(const double *A)
 {
@@ -36,9 +38,10 @@ int main(void)
     sph_body *b = &sim.bodies[0];
     const double E = 200e9, nu = 0.3, sy = 300e6, H = 2e9;
     const double K = E / (3 * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
-    check_close("state values per particle (Cp: 9, ep: 1)", b->desc->nstate, NS, 0);
+    check_close("state values per particle (Cp: 9, ep, wp)", b->desc->nstate, NS, 0);
     double worst_s = 0, worst_ep = 0, worst_det = 0, spread = 0;
     double ep_top = 0, s_top = 0, eps_top = 0, s_end = 0, eps_end = 0, ep_unload = -1;
+    double g_top = 0, wp_top = 0;
     int plastic_checks = 0, unload_steps = 0;
     while (sim.t < MODEL.t_end - 1e-12) {
         sph_sim_step(&sim, fmin(sph_sim_stable_dt(&sim), MODEL.t_end - sim.t));
@@ -61,7 +64,7 @@ int main(void)
                 worst_ep = fmax(worst_ep, fabs(ep / (sqrt(2.0 / 3) * g) - 1));
                 plastic_checks++;
             }
-            ep_top = ep, s_top = sxx, eps_top = eps;
+            ep_top = ep, s_top = sxx, eps_top = eps, g_top = g, wp_top = b->state[10];
         } else {
             s_end = sxx, eps_end = eps;
             if (++unload_steps == 2)
@@ -75,6 +78,10 @@ int main(void)
     check_close("plastic steps checked", plastic_checks > 50, 1, 0);
     check_close("loading: max |ep / (sqrt(2/3) g) - 1|", worst_ep, 0, 0.02);
     check_close("max |det Cp - 1|", worst_det, 0, 1e-10);
+    check_close("plastic work at the top / (sy g + sqrt(2/3) H g^2 / 2)",
+                wp_top / (sy * g_top + 0.5 * sqrt(2.0 / 3) * H * g_top * g_top), 1, 0.02);
+    check_close("dissipated energy of the body / (V wp)",
+                sph_dissipated_energy(b) / (b->n * b->vol * b->state[10]), 1, 1e-9);
     check_close("spread of ep over the particles", spread, 0, 1e-12);
     check_close("unloading: ep unchanged (relative)", b->state[9] / ep_unload, 1, 1e-12);
     check_close("unloading slope / (K + 4/3 mu)",
