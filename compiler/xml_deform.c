@@ -5,7 +5,8 @@
  *     <nbsrange value="1"/>                  nbsrange 1
  *     <density value="1000"/>                material svk(density 1000,
  *     <u_mu value=".."/> <u_bulk value=".."/>                 shear .., bulk ..)
- *     <constitmodel value="1"/>              (1 svk, 2 neohookean; 3 J2: not supported yet)
+ *     <constitmodel value="1"/>              (1 svk, 2 neohookean, 3 j2 with <yieldstress>
+ *                                             and <hardening>: yield, hardening)
  *     <artvisc factor1=".." factor2=".."/>   viscosity .., ..   (default 0.2, 0)
  *     <fracture value="1"/> <Gc ../> ..      fracture(..), notch .., restrict ..  (xml_fracture.c)
  *     <bcvel ../> <bcforce ../>              velocity .. / force ..  (xml_bc.c)
@@ -36,6 +37,9 @@ typedef struct {
     SrcLoc density_loc, el_loc[EL_N], model_loc, visc_loc, refine_loc, nbs_loc;
     long model, refine, nbsrange;
     const xmlNode *fracture_card, *plastic_card; /* the last <fracture>, the first J2 card */
+    int has_yield, has_hardening;
+    double yield, hardening;
+    SrcLoc yield_loc, hardening_loc;
     XmlFracture frac;
 } Cards;
 
@@ -94,8 +98,12 @@ static int other_card(XmlCtx *x, const xmlNode *n, Cards *c)
         return xml_card_bool(x, n, &c->fracture);
     }
     if (xml_is(n, "yieldstress") || xml_is(n, "hardening")) {
+        int yield = xml_is(n, "yieldstress");
         c->plastic_card = c->plastic_card ? c->plastic_card : n;
-        return xml_card_number(x, n, &v) || nonnegative(x, n, "value", v);
+        *(yield ? &c->has_yield : &c->has_hardening) = 1;
+        *(yield ? &c->yield_loc : &c->hardening_loc) = xml_loc(x, n);
+        return xml_card_number(x, n, yield ? &c->yield : &c->hardening) ||
+               nonnegative(x, n, "value", yield ? c->yield : c->hardening);
     }
     if (xml_is(n, "restcoef") || xml_is(n, "kfric"))
         return xml_card_number(x, n, &v) || nonnegative(x, n, "value", v);
@@ -173,14 +181,24 @@ static int elastic_option(const Cards *c)
     return 0;
 }
 
-/* J2 plasticity is not supported yet; SoliDualSPHysics turns fracture off under it, so its
- * error comes first.  Fracture needs its cards (xml_fracture_check).  The cards of either
- * without it are ignored with a warning. */
-static int special_models(const XmlCtx *x, const Cards *c)
+/* J2 plasticity (constitmodel 3) needs <yieldstress> and <hardening>; SoliDualSPHysics turns
+ * fracture off under it, and so does the importer, with a warning.  Fracture needs its cards
+ * (xml_fracture_check).  The cards of either without it are ignored with a warning. */
+static int special_models(const XmlCtx *x, Cards *c)
 {
     if (c->model == 3) {
-        diag_error(c->model_loc, "<constitmodel>: J2 plasticity (value 3) is not supported yet");
-        return -1;
+        if (!c->has_yield || !c->has_hardening) {
+            diag_error(c->model_loc, "<constitmodel value=\"3\">: J2 plasticity of "
+                                     "<deformstrucbody mkbound=\"%d\"> needs <%s value=\"...\"/>",
+                       c->mk, c->has_yield ? "hardening" : "yieldstress");
+            return -1;
+        }
+        if (c->fracture)
+            diag_warning(xml_loc(x, c->fracture_card), "<fracture> is ignored with J2 plasticity "
+                                                      "(<constitmodel value=\"3\"/>), as "
+                                                      "SoliDualSPHysics does");
+        c->fracture = 0;
+        return 0;
     }
     if (c->plastic_card)
         diag_warning(xml_loc(x, c->plastic_card), "<%s> is ignored: only J2 plasticity "
@@ -235,7 +253,7 @@ static void elastic_args_2d(const Cards *c, SettingList *args)
 
 static void push_material(XmlCtx *x, const Cards *c, BodyDecl *b)
 {
-    static const char *const laws[] = {NULL, "svk", "neohookean"};
+    static const char *const laws[] = {NULL, "svk", "neohookean", "j2"};
     SrcLoc loc = c->model_loc.line ? c->model_loc : c->loc;
     BodyItem it = {0};
     it.kind = BI_MATERIAL;
@@ -251,6 +269,12 @@ static void push_material(XmlCtx *x, const Cards *c, BodyDecl *b)
             if (c->has_el[k])
                 ast_push_setting(&it.material.args, ast_setting(c->el_loc[k], ELASTIC_ARGS[k],
                                                                 ast_num(c->el_loc[k], c->el[k])));
+    if (c->model == 3) { /* stdlib/j2.sph */
+        ast_push_setting(&it.material.args, ast_setting(c->yield_loc, "yield",
+                                                        ast_num(c->yield_loc, c->yield)));
+        ast_push_setting(&it.material.args, ast_setting(c->hardening_loc, "hardening",
+                                                        ast_num(c->hardening_loc, c->hardening)));
+    }
     ast_push_bodyitem(b, it);
     if (!x->uses_law[c->model])
         x->law_loc[c->model] = loc;

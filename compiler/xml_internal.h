@@ -68,8 +68,8 @@ typedef struct {
     /* bodies, and the constitutive models they use (1 svk, 2 neohookean) */
     Item *bodies;
     int nbodies;
-    int uses_law[3];
-    SrcLoc law_loc[3];
+    int uses_law[4];       /* by constitmodel: 1 svk, 2 neohookean, 3 j2 */
+    SrcLoc law_loc[4];
     int nmeasures;            /* measurement planes so far (their names count on) */
 } XmlCtx;
 

@@ -23,6 +23,7 @@ static int is_keyword(const char *s)
 {
     static const char *const words[] = {
         "import", "scene", "let", "fn", "material", "body", "shape", "stress", "energy",
+        "dissipation",
         "state", "if", "else", "velocity", "force", "point", "surface", "accel", "from", "to",
         "near", "measure", "plane", "expect", "reference", "within", "and", "or", "not",
         "skip", "Skip", "notch", "fracture", NULL};

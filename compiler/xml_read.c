@@ -253,8 +253,8 @@ static int read_case(XmlCtx *x, const xmlNode *root)
 
 static void push_imports(const XmlCtx *x, Program *prog)
 {
-    static const char *const laws[] = {NULL, "svk", "neohookean"};
-    for (int k = 1; k <= 2; k++)
+    static const char *const laws[] = {NULL, "svk", "neohookean", "j2"};
+    for (int k = 1; k <= 3; k++)
         if (x->uses_law[k]) {
             Item it = {0};
             it.kind = IT_IMPORT;
