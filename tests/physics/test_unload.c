@@ -10,8 +10,11 @@
  *    once by about 1e-7 and comes back);
  *  - after unloading psi+ is 0 but H keeps its value (eq. 8), s never increases over a step
  *    and stays at the steady state: the crack does not heal. */
+#ifndef MODEL_C /* the same checks run on unload2d_symplectic.c */
+#define MODEL_C "unload2d.c"
+#endif
 #define main generated_main
-#include "unload2d.c"
+#include MODEL_C
 #undef main
 
 #include "check.h"
