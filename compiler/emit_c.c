@@ -137,19 +137,9 @@ static void material(Emitter *E, const BodyModel *b, const BodyPlan *p)
     memcpy(roots + 10, r->next, (size_t)p->nstate * sizeof(int));
     fputs(p->nstate ? "    (void)F;\n    (void)st;\n" : "    (void)F;\n", out);
     sg_emit(&p->law, roots, 10 + p->nstate, out, "    ");
-    for (int k = 0; k < 9; k++) {
-        fprintf(out, "    S[%d] = ", k);
-        sg_ref(&p->law, r->S[k], out);
-        fputs(";\n", out);
-    }
-    fputs("    *psi = ", out);
-    sg_ref(&p->law, r->psi, out);
-    fputs(";\n", out);
-    for (int k = 0; k < p->nstate; k++) {
-        fprintf(out, "    st_new[%d] = ", k);
-        sg_ref(&p->law, r->next[k], out);
-        fputs(";\n", out);
-    }
+    sg_emit_outputs(&p->law, "    ", "S", r->S, 9, ";", out);
+    sg_emit_outputs(&p->law, "    ", "*psi", &r->psi, -1, ";", out);
+    sg_emit_outputs(&p->law, "    ", "st_new", r->next, p->nstate, ";", out);
     fputs("}\n\n", out);
 }
 

@@ -25,16 +25,10 @@ void emit_fracture_material(FILE *out, const BodyModel *b, const BodyPlan *p)
     roots[10] = r->psip;
     fputs("    (void)F;\n    (void)s;\n", out);
     sg_emit(&p->law, roots, 11, out, "    ");
-    for (int k = 0; k < 9; k++) {
-        fprintf(out, "    S[%d] = ", k);
-        sg_ref(&p->law, r->Sd[k], out);
-        fputs(";\n", out);
-    }
-    fputs("    *psi = ", out);
-    sg_ref(&p->law, r->psid, out);
-    fputs(";\n    *psip = ", out);
-    sg_ref(&p->law, r->psip, out);
-    fputs(";\n}\n\n", out);
+    sg_emit_outputs(&p->law, "    ", "S", r->Sd, 9, ";", out);
+    sg_emit_outputs(&p->law, "    ", "*psi", &r->psid, -1, ";", out);
+    sg_emit_outputs(&p->law, "    ", "*psip", &r->psip, -1, ";", out);
+    fputs("}\n\n", out);
 }
 
 /* The lower bound of the phase field: after each update s = max(s, bound) wherever the

@@ -57,16 +57,9 @@ static void dump_degraded(const SGraph *g, const LawRoots *r, FILE *out)
     roots[10] = r->psip;
     fputs("  degraded by the phase field (eq. 7, 18):\n", out);
     sg_emit(g, roots, 11, out, "    ");
-    for (int k = 0; k < 9; k++) {
-        fprintf(out, "    S[%d] = ", k);
-        sg_ref(g, r->Sd[k], out);
-        fputs("\n", out);
-    }
-    fputs("    psi = ", out);
-    sg_ref(g, r->psid, out);
-    fputs("\n    psi+ = ", out);
-    sg_ref(g, r->psip, out);
-    fputs("\n", out);
+    sg_emit_outputs(g, "    ", "S", r->Sd, 9, "", out);
+    sg_emit_outputs(g, "    ", "psi", &r->psid, -1, "", out);
+    sg_emit_outputs(g, "    ", "psi+", &r->psip, -1, "", out);
 }
 
 void plan_dump(const Model *m, FILE *out)
@@ -86,18 +79,14 @@ void plan_dump(const Model *m, FILE *out)
                 p->viscosity, p->beta2, p->gravity, p->velocity_bcs, p->force_bcs, p->hourglass,
                 p->fracture, p->restrict_phase, p->nstate > 0);
         fprintf(out, "  material law: %d graph nodes\n", count_ops(&p->law));
-        int roots[10];
+        int roots[10 + LAW_MAX_SLOTS];
         memcpy(roots, p->roots.S, sizeof p->roots.S);
         roots[9] = p->roots.psi;
-        sg_emit(&p->law, roots, 10, out, "    ");
-        for (int k = 0; k < 9; k++) {
-            fprintf(out, "    S[%d] = ", k);
-            sg_ref(&p->law, p->roots.S[k], out);
-            fputs("\n", out);
-        }
-        fputs("    psi = ", out);
-        sg_ref(&p->law, p->roots.psi, out);
-        fputs("\n", out);
+        memcpy(roots + 10, p->roots.next, (size_t)p->nstate * sizeof(int));
+        sg_emit(&p->law, roots, 10 + p->nstate, out, "    ");
+        sg_emit_outputs(&p->law, "    ", "S", p->roots.S, 9, "", out);
+        sg_emit_outputs(&p->law, "    ", "psi", &p->roots.psi, -1, "", out);
+        sg_emit_outputs(&p->law, "    ", "st_new", p->roots.next, p->nstate, "", out);
         if (p->roots.has_tension)
             dump_degraded(&p->law, &p->roots, out);
     }

@@ -405,3 +405,16 @@ void sg_emit(const SGraph *g, const int *roots, int nroots, FILE *out, const cha
     }
     free(live);
 }
+
+void sg_emit_outputs(const SGraph *g, const char *indent, const char *name, const int *ids, int n,
+                     const char *end, FILE *out)
+{
+    for (int k = 0; k < (n < 0 ? 1 : n); k++) {
+        if (n < 0)
+            fprintf(out, "%s%s = ", indent, name);
+        else
+            fprintf(out, "%s%s[%d] = ", indent, name, k);
+        sg_ref(g, ids[k], out);
+        fprintf(out, "%s\n", end);
+    }
+}

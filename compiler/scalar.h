@@ -66,5 +66,9 @@ int sg_is_const(const SGraph *g, int id, double *v);
  * use sg_ref to print an operand (constant, input, or temporary). */
 void sg_emit(const SGraph *g, const int *roots, int nroots, FILE *out, const char *indent);
 void sg_ref(const SGraph *g, int id, FILE *out);
+/* `<indent>name[k] = <ref of ids[k]><end>` for k < n, one line each; `<indent>name = ...` for
+ * n = -1 (one value, ids[0]): the outputs of an emitted function or a plan dump. */
+void sg_emit_outputs(const SGraph *g, const char *indent, const char *name, const int *ids, int n,
+                     const char *end, FILE *out);
 
 #endif
