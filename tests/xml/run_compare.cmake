@@ -26,23 +26,14 @@ file(READ "${SPH}" text)
 string(REGEX REPLACE "refine [0-9]+" "refine ${MAPFAC}" text "${text}")
 file(WRITE "${WORKDIR}/from_sph.sph" "${text}")
 
+include(${CMAKE_CURRENT_LIST_DIR}/build_and_run.cmake)
 foreach(name from_xml from_sph)
   if(name STREQUAL "from_xml")
     set(src "${WORKDIR}/from_xml.xml")
   else()
     set(src "${WORKDIR}/from_sph.sph")
   endif()
-  execute_process(COMMAND "${SPHC}" -o "${WORKDIR}/${name}" "${src}"
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "sphc ${src} failed (exit ${rc}):\n${out}\n${err}")
-  endif()
-  execute_process(COMMAND "${WORKDIR}/${name}" --quiet --threads 1 --end ${END} --every ${EVERY}
-                          --out "${WORKDIR}/${name}_out"
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "${name} failed (exit ${rc}):\n${out}\n${err}")
-  endif()
+  build_and_run(${src} ${name})
 endforeach()
 
 # summary.json: particles and steps

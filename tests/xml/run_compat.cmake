@@ -19,19 +19,7 @@ endforeach()
 file(REMOVE_RECURSE "${WORKDIR}")
 file(MAKE_DIRECTORY "${WORKDIR}")
 
-function(build_and_run src name)
-  execute_process(COMMAND "${SPHC}" -o "${WORKDIR}/${name}" "${src}"
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "sphc ${src} failed (exit ${rc}):\n${out}\n${err}")
-  endif()
-  execute_process(COMMAND "${WORKDIR}/${name}" --quiet --threads 1 --end ${END} --every ${EVERY}
-                          --out "${WORKDIR}/${name}_out"
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "${name} failed (exit ${rc}):\n${out}\n${err}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/build_and_run.cmake)
 
 # The lines of a CSV file as lists of fields (rows joined with '|').
 function(read_rows file sep out_header out_rows)
