@@ -137,6 +137,16 @@ static int scene_setting(Model *m, const Setting *s)
     }
     if (!strcmp(s->key, "gravity"))
         return s->nvalues == 1 ? check_vec3(m, s->values[0], "gravity", m->gravity) : -1;
+    if (!strcmp(s->key, "contact")) {
+        if (scene_number(m, s, &m->contact, 0))
+            return -1;
+        if (!(m->contact >= 0) || !isfinite(m->contact)) {
+            diag_error(s->values[0]->loc, "'contact' must be 0 (off) or a positive stiffness "
+                                          "multiplier (got %g)", m->contact);
+            return -1;
+        }
+        return 0;
+    }
     struct { const char *key; double *dst; } nums[] = {
         {"dp", &m->dp}, {"coefh", &m->coefh}, {"cfl", &m->cfl}, {"dtmin", &m->dtmin},
         {"dt", &m->dt}, {"end", &m->t_end}, {"output", &m->t_out},
@@ -174,6 +184,7 @@ static void scene_defaults(Model *m)
     m->coefh = 1.0;
     m->cfl = 0.2;
     m->dtmin = 0.01;
+    m->contact = 1.0;
 }
 
 /* ------------------------------------------------------------------ expectations */

@@ -387,6 +387,24 @@ static int check_lattice(const Model *m, const Setting *s, BodyModel *b)
     return 0;
 }
 
+/* restitution e (0 < e <= 1) and friction mu (>= 0) of the body's contacts. */
+static int check_contact_setting(const Model *m, const Setting *s, double *out)
+{
+    const int rest = !strcmp(s->key, "restitution");
+    if (s->nvalues != 1) {
+        diag_error(s->loc, "'%s' takes one value", s->key);
+        return -1;
+    }
+    if (check_const_expr(m, s->values[0], s->key, out))
+        return -1;
+    if (rest ? !(*out > 0 && *out <= 1) : !(*out >= 0 && isfinite(*out))) {
+        diag_error(s->values[0]->loc, "'%s' must be %s (got %g)", s->key,
+                   rest ? "in (0, 1], 1 for an elastic contact" : "0 or positive", *out);
+        return -1;
+    }
+    return 0;
+}
+
 static int check_setting(const Model *m, const Setting *s, BodyModel *b)
 {
     if (!strcmp(s->key, "refine"))
@@ -399,8 +417,12 @@ static int check_setting(const Model *m, const Setting *s, BodyModel *b)
         return check_hourglass(m, s, b);
     if (!strcmp(s->key, "lattice"))
         return check_lattice(m, s, b);
+    if (!strcmp(s->key, "restitution"))
+        return check_contact_setting(m, s, &b->restitution);
+    if (!strcmp(s->key, "friction"))
+        return check_contact_setting(m, s, &b->friction);
     diag_error(s->loc, "unknown body setting '%s' (expected refine, nbsrange, viscosity, "
-                       "hourglass, lattice or restrict)",
+                       "hourglass, lattice, restitution, friction or restrict)",
                s->key);
     return -1;
 }
@@ -505,6 +527,7 @@ int check_body(Model *m, const BodyDecl *d, BodyModel *b)
     b->name = d->name;
     b->loc = d->loc;
     b->refine = 1;
+    b->restitution = 1;
     b->bcs = calloc((size_t)d->n + 1, sizeof *b->bcs);
     b->measures = calloc((size_t)d->n + 1, sizeof *b->measures);
     int nshape = 0, nmat = 0, bad = 0;

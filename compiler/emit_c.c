@@ -153,6 +153,7 @@ static void fill_template(Emitter *E, const char *file, const BodyModel *b, cons
     tpl_set(&env, "C0", "%.17g", b->c0);
     tpl_set(&env, "HG", "%.17g", 0.5 * b->hourglass * b->E); /* alpha E / 2 */
     tpl_feature(&env, "VISCOSITY", p->viscosity);
+    tpl_feature(&env, "NO_VISCOSITY", !p->viscosity);
     tpl_feature(&env, "BETA2", p->beta2);
     tpl_feature(&env, "HOURGLASS", p->hourglass);
     tpl_feature(&env, "GRAVITY", p->gravity);
@@ -335,6 +336,30 @@ static void bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
 
 /* ------------------------------------------------------------------ the scene */
 
+/* A body's part of the step up to its internal forces (Alg. 1-2)... */
+static void step_forces(Emitter *E, int i)
+{
+    const char *n = E->m->bodies[i].name;
+    const BodyPlan *p = &E->plans[i];
+    if (p->velocity_bcs)
+        fprintf(E->out, "        %s_velocity_bcs(b, t, dt);\n", n);
+    if (p->symplectic)
+        fprintf(E->out, "        %s_predict(b, dt);\n", n);
+    fprintf(E->out, "        %s_forces(b);\n", n);
+}
+
+/* ... and from its force boundary conditions to the end. */
+static void step_update(Emitter *E, int i)
+{
+    const char *n = E->m->bodies[i].name;
+    const BodyPlan *p = &E->plans[i];
+    if (p->force_bcs)
+        fprintf(E->out, "        %s_force_bcs(b, t%s, dt);\n", n, p->symplectic ? " + 0.5 * dt" : "");
+    fprintf(E->out, "        %s_update(b, dt);\n", n);
+    if (p->restrict_phase)
+        fprintf(E->out, "        %s_restrict(b, t + dt, dt);\n", n);
+}
+
 static void scene_step(Emitter *E)
 {
     const Model *m = E->m;
@@ -349,21 +374,25 @@ static void scene_step(Emitter *E)
     fprintf(out, "/* One time step of every body: %s. */\n"
                  "static void model_step(sph_sim *s, double dt)\n{\n    const double t = s->t;\n",
             sym ? "symplectic predictor-corrector (Alg. 2)" : "Verlet (Alg. 1)");
-    for (int i = 0; i < m->nbodies; i++) {
-        const char *n = m->bodies[i].name;
-        const BodyPlan *p = &E->plans[i];
-        fprintf(out, "    {\n        sph_body *b = &s->bodies[%d];\n", i);
-        if (p->velocity_bcs)
-            fprintf(out, "        %s_velocity_bcs(b, t, dt);\n", n);
-        if (sym)
-            fprintf(out, "        %s_predict(b, dt);\n", n);
-        fprintf(out, "        %s_forces(b);\n", n);
-        if (p->force_bcs)
-            fprintf(out, "        %s_force_bcs(b, t%s, dt);\n", n, sym ? " + 0.5 * dt" : "");
-        fprintf(out, "        %s_update(b, dt);\n", n);
-        if (p->restrict_phase)
-            fprintf(out, "        %s_restrict(b, t + dt, dt);\n", n);
-        fputs("    }\n", out);
+    if (!model_has_contact(m))
+        for (int i = 0; i < m->nbodies; i++) {
+            fprintf(out, "    {\n        sph_body *b = &s->bodies[%d];\n", i);
+            step_forces(E, i);
+            step_update(E, i);
+            fputs("    }\n", out);
+        }
+    else { /* contact needs every body's positions at the same time level */
+        for (int i = 0; i < m->nbodies; i++) {
+            fprintf(out, "    {\n        sph_body *b = &s->bodies[%d];\n", i);
+            step_forces(E, i);
+            fputs("    }\n", out);
+        }
+        fputs("    sph_contact_forces(s, dt); /* between the bodies: adds to their a */\n", out);
+        for (int i = 0; i < m->nbodies; i++) {
+            fprintf(out, "    {\n        sph_body *b = &s->bodies[%d];\n", i);
+            step_update(E, i);
+            fputs("    }\n", out);
+        }
     }
     fputs("    (void)t;\n}\n\n", out);
     fputs("/* Cauchy stress of every particle, for output. */\n"
@@ -495,6 +524,12 @@ static void bodies_desc(Emitter *E)
         if (E->plans[i].roots.dissipation)
             fprintf(out, "        .dissipation = %d, /* plastic work in state value %d */\n",
                     E->plans[i].roots.dissipation, E->plans[i].roots.dissipation - 1);
+        if (E->plans[i].viscosity)
+            fputs("        .viscous = 1,\n", out);
+        if (model_has_contact(m))
+            fprintf(out, "        .young = %.17g,\n        .poisson = %.17g, /* contact stiffness */\n"
+                         "        .restitution = %.17g,\n        .friction = %.17g,\n",
+                    b->E, b->nu, b->restitution, b->friction);
         fputs("    },\n", out);
     }
     fputs("};\n\n", out);
@@ -539,6 +574,9 @@ static void model_desc(Emitter *E)
     FILE *out = E->out;
     bodies_desc(E);
     expects(E);
+    if (model_has_contact(m))
+        fprintf(out, "/* Contact between the bodies (runtime/contact.c). */\n"
+                     "static const sph_contact_desc CONTACT = {.coef = %.17g};\n\n", m->contact);
     fprintf(out,
             "static const sph_model MODEL = {\n"
             "    .name = \"%s\",\n    .source = \"%s\",\n    .dim = %d,\n    .dp = %.17g,\n"
@@ -546,7 +584,7 @@ static void model_desc(Emitter *E)
             "    .dtmin_coef = %.17g,\n    .dt_fixed = %.17g,\n    .t_end = %.17g,\n"
             "    .t_out = %.17g,\n    .gravity = {%.17g, %.17g, %.17g},\n"
             "    .bodies = BODIES,\n    .nbodies = %d,\n    .expects = %s,\n    .nexpects = %d,\n"
-            "    .compat_outputs = %d,\n"
+            "    .compat_outputs = %d,\n%s"
             "    .velocity_bcs = model_velocity_bcs,\n    .step = model_step,\n"
             "    .stress_output = model_stress_output,\n};\n\n"
             "int main(int argc, char **argv)\n{\n    return sph_main(&MODEL, argc, argv);\n}\n",
@@ -554,7 +592,8 @@ static void model_desc(Emitter *E)
             m->kernel == KERNEL_WENDLAND ? "SPH_WENDLAND" : "SPH_CUBIC", m->coefh,
             m->integrator == INTEGRATOR_VERLET ? "SPH_VERLET" : "SPH_SYMPLECTIC", m->cfl, m->dtmin,
             m->dt, m->t_end, m->t_out, m->gravity[0], m->gravity[1], m->gravity[2], m->nbodies,
-            m->nexpects ? "EXPECTS" : "NULL", m->nexpects, m->compat_outputs);
+            m->nexpects ? "EXPECTS" : "NULL", m->nexpects, m->compat_outputs,
+            model_has_contact(m) ? "    .contact = &CONTACT,\n" : "");
 }
 
 int emit_c_program(const Model *m, const char *templates_dir, FILE *out)

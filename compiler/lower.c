@@ -75,9 +75,9 @@ void plan_dump(const Model *m, FILE *out)
         fprintf(out, "body %s: dim %d, law %s, %s integrator\n", b->name, m->dim, b->law->name,
                 p->symplectic ? "symplectic" : "verlet");
         fprintf(out, "  features: viscosity=%d beta2=%d gravity=%d velocity_bcs=%d "
-                     "force_bcs=%d hourglass=%d fracture=%d restrict=%d state=%d contact=0\n",
+                     "force_bcs=%d hourglass=%d fracture=%d restrict=%d state=%d contact=%d\n",
                 p->viscosity, p->beta2, p->gravity, p->velocity_bcs, p->force_bcs, p->hourglass,
-                p->fracture, p->restrict_phase, p->nstate > 0);
+                p->fracture, p->restrict_phase, p->nstate > 0, model_has_contact(m));
         fprintf(out, "  material law: %d graph nodes\n", count_ops(&p->law));
         int roots[10 + LAW_MAX_SLOTS];
         memcpy(roots, p->roots.S, sizeof p->roots.S);

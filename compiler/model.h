@@ -86,6 +86,8 @@ typedef struct {
     MeasureModel *measures;
     int nmeasures;
     FractureModel fracture;
+    double restitution;            /* contact: coefficient of restitution (1: elastic) */
+    double friction;               /* contact: Coulomb friction coefficient */
 } BodyModel;
 
 typedef struct {
@@ -119,7 +121,11 @@ typedef struct {
     ExpectModel *expects;
     int nexpects;
     int compat_outputs;   /* also write SoliDualSPHysics' output files (imported cases) */
+    double contact;       /* contact stiffness multiplier (1); 0: bodies pass through each other */
 } Model;
+
+/* 1 when the scene's bodies touch each other: several bodies and contact not switched off. */
+static inline int model_has_contact(const Model *m) { return m->nbodies > 1 && m->contact > 0; }
 
 /* Check the program; returns 0 and fills *m when there are no errors. */
 int check_program(const Program *p, Model *m);

@@ -42,6 +42,7 @@ static void body(FILE *out, const BodyModel *b)
     }
     for (int k = 0; k < b->nmeasures; k++)
         fprintf(out, "    measure %s\n", b->measures[k].name);
+    fprintf(out, "    contact restitution %g friction %g\n", b->restitution, b->friction);
     const FractureModel *f = &b->fracture;
     if (!f->on)
         return;
@@ -65,6 +66,8 @@ void model_dump(const Model *m, FILE *out)
             m->integrator == INTEGRATOR_VERLET ? "verlet" : "symplectic", m->cfl, m->dtmin, m->dt,
             m->t_end, m->t_out, m->gravity[0], m->gravity[1], m->gravity[2],
             m->single ? "single" : "double");
+    if (model_has_contact(m))
+        fprintf(out, "  contact between the bodies: stiffness multiplier %g\n", m->contact);
     if (m->compat_outputs)
         fputs("  outputs: also SoliDualSPHysics' DeformStruc_Energies.csv and "
               "MeasuringPlData_MK<mk>_PL<k>.csv\n", out);

@@ -17,8 +17,8 @@
  * is the three-dimensional bulk modulus (the sph language's `bulk`, also in 2D); with
  * --xml-elastic2d=sdsph a 2D case's constants are those of 2D elasticity, as
  * SoliDualSPHysics reads them (elastic_args_2d).
- * J2 plasticity and contact cards are read and checked, then reported as not supported
- * yet. */
+ * Contact: <contcoeff> (in <deformstrucs>) is the scene's `contact` multiplier, <restcoef>
+ * and <kfric> the body's `restitution` and `friction`. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,6 +40,9 @@ typedef struct {
     int has_yield, has_hardening;
     double yield, hardening;
     SrcLoc yield_loc, hardening_loc;
+    int has_rest, has_fric;        /* contact: <restcoef>, <kfric> */
+    double rest, fric;
+    SrcLoc rest_loc, fric_loc;
     XmlFracture frac;
 } Cards;
 
@@ -105,8 +108,24 @@ static int other_card(XmlCtx *x, const xmlNode *n, Cards *c)
         return xml_card_number(x, n, yield ? &c->yield : &c->hardening) ||
                nonnegative(x, n, "value", yield ? c->yield : c->hardening);
     }
-    if (xml_is(n, "restcoef") || xml_is(n, "kfric"))
-        return xml_card_number(x, n, &v) || nonnegative(x, n, "value", v);
+    if (xml_is(n, "restcoef")) {
+        c->has_rest = 1;
+        c->rest_loc = xml_loc(x, n);
+        if (xml_card_number(x, n, &c->rest))
+            return -1;
+        if (!(c->rest > 0 && c->rest <= 1)) {
+            diag_error(c->rest_loc, "<restcoef> attribute 'value': a coefficient of restitution "
+                                    "in (0, 1] (got %g)", c->rest);
+            return -1;
+        }
+        return 0;
+    }
+    if (xml_is(n, "kfric")) {
+        c->has_fric = 1;
+        c->fric_loc = xml_loc(x, n);
+        return xml_card_number(x, n, &c->fric) || nonnegative(x, n, "value", c->fric);
+    }
+    (void)v;
     return xml_fracture_card(x, n, &c->frac);
 }
 
@@ -308,6 +327,10 @@ static int push_settings(XmlCtx *x, const Cards *c, BodyDecl *b)
     if (c->beta2 != 0)
         ast_push_expr(&visc.values, &visc.nvalues, ast_num(vl, c->beta2));
     push_item(b, BI_SETTING, vl, visc);
+    if (c->has_rest) /* default 1, as SoliDualSPHysics' documentation of the card says */
+        push_setting(b, c->rest_loc, "restitution", c->rest);
+    if (c->has_fric)
+        push_setting(b, c->fric_loc, "friction", c->fric);
     if (c->fracture)
         xml_fracture_items(x, &c->frac, c->fracture_card, b);
     return 0;
@@ -401,8 +424,17 @@ static int top_card(XmlCtx *x, const xmlNode *n)
         xml_scene_number(x, xml_loc(x, n), "dt", v);
         return 0;
     }
-    if (xml_is(n, "contcoeff"))
-        return xml_card_number(x, n, &v) || nonnegative(x, n, "value", v);
+    if (xml_is(n, "contcoeff")) {
+        if (xml_card_number(x, n, &v))
+            return -1;
+        if (!(v >= 1)) { /* as SoliDualSPHysics reads it */
+            diag_warning(xml_loc(x, n), "<contcoeff> value %g is below 1: 1 is used, as "
+                                        "SoliDualSPHysics does", v);
+            v = 1;
+        }
+        xml_scene_number(x, xml_loc(x, n), "contact", v);
+        return 0;
+    }
     diag_error(xml_loc(x, n), "<%s> is not expected in <deformstrucs> (expected "
                               "<deformstrucbody>, <timestep> or <contcoeff>)", xml_name(n));
     return -1;
@@ -411,25 +443,17 @@ static int top_card(XmlCtx *x, const xmlNode *n)
 int xml_deformstrucs(XmlCtx *x, const xmlNode *deformstrucs)
 {
     int bad = 0;
-    const xmlNode *second = NULL;
     int nbodies = 0;
     for (xmlNode *c = xml_first(deformstrucs); c; c = xml_next(c)) {
         if (!xml_is(c, "deformstrucbody")) {
             bad |= top_card(x, c) != 0;
             continue;
         }
-        if (++nbodies == 2)
-            second = c;
+        nbodies++;
         bad |= body(x, c) != 0;
     }
     if (!nbodies) {
         diag_error(xml_loc(x, deformstrucs), "<deformstrucs> has no <deformstrucbody>");
-        return -1;
-    }
-    if (second && !bad) {
-        diag_error(xml_loc(x, second), "<deformstrucbody>: several deformable bodies interact "
-                                       "by contact in SoliDualSPHysics, which is not supported "
-                                       "yet");
         return -1;
     }
     return bad ? -1 : 0;

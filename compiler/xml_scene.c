@@ -17,7 +17,7 @@
 
 /* The order in which a .sph scene lists its settings. */
 static const char *const ORDER[] = {"dimension", "dp",  "kernel", "coefh",  "integrator", "cfl",
-                                    "dtmin",     "dt",  "end",    "output", "gravity",    NULL};
+                                    "dtmin",     "dt",  "end",    "output", "gravity",    "contact", NULL};
 
 static void set(XmlCtx *x, Setting s)
 {

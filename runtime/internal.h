@@ -16,6 +16,9 @@ int sph_region_bbox_dim(const sph_region *r, int dim, double lo[3], double hi[3]
 int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m);
 void sph_body_free(sph_body *b);
 
+/* contact.c: the contact state of a scene with contact (pair laws, search); idempotent. */
+void sph_contact_init(sph_sim *s);
+
 /* A growable time series of one measured quantity set. */
 typedef struct {
     double *t;

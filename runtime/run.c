@@ -51,8 +51,9 @@ static int energy_columns(const sph_model *m)
 {
     int n = 2 + 2 * m->nbodies;
     for (int i = 0; i < m->nbodies; i++)
-        n += (m->bodies[i].fracture != NULL) + (m->bodies[i].dissipation > 0);
-    return n;
+        n += (m->bodies[i].fracture != NULL) + (m->bodies[i].dissipation > 0) +
+             m->bodies[i].viscous;
+    return n + (m->contact ? 2 : 0);
 }
 
 static int open_outputs(run_state *r)
@@ -64,7 +65,8 @@ static int open_outputs(run_state *r)
     if (bad)
         return -1;
     /* time, strain and kinetic energy of each body, fracture energy of each body with
-     * fracture, total */
+     * fracture, plastic work of each body with plasticity, viscous dissipation of each body
+     * with artificial viscosity, contact (stored, dissipated), total */
     int ncol = energy_columns(m);
     char **cols = calloc((size_t)ncol, sizeof *cols);
     cols[0] = joinf("time%s%s", "", "");
@@ -79,6 +81,13 @@ static int open_outputs(run_state *r)
     for (int i = 0; i < m->nbodies; i++)
         if (m->bodies[i].dissipation)
             cols[c++] = joinf("%s_plastic%s", m->bodies[i].name, "");
+    for (int i = 0; i < m->nbodies; i++)
+        if (m->bodies[i].viscous)
+            cols[c++] = joinf("%s_viscous%s", m->bodies[i].name, "");
+    if (m->contact) {
+        cols[c++] = joinf("contact%s%s", "", "");
+        cols[c++] = joinf("contact_dissipated%s%s", "", "");
+    }
     cols[c] = joinf("total%s%s", "", "");
     char *path = joinf("%s/energies.csv%s", r->opt.out_dir, "");
     bad = sph_csv_open(&r->energies, path, (const char *const *)cols, ncol);
@@ -129,6 +138,16 @@ static int record(run_state *r)
             row[c] = sph_dissipated_energy(&s->bodies[i]);
             total[0] += row[c++];
         }
+    for (int i = 0; i < s->nbodies; i++)
+        if (s->bodies[i].desc->viscous) { /* what the artificial viscosity took */
+            row[c] = s->bodies[i].visc_dissipated;
+            total[0] += row[c++];
+        }
+    if (r->m->contact) { /* stored in the contacts, and what their damping and friction took */
+        sph_contact_energies(s, &row[c], &row[c + 1]);
+        total[0] += row[c] + row[c + 1];
+        c += 2;
+    }
     row[ncol - 1] = total[0] + total[1];
     int bad = sph_csv_row(&r->energies, row);
     if (r->m->compat_outputs)

@@ -26,6 +26,7 @@ int sph_sim_init(sph_sim *s, const sph_model *m, int verbose)
     s->m = m;
     s->t = s->dt = 0;
     s->step = 0;
+    s->contact = NULL;
     s->nbodies = m->nbodies;
     s->bodies = calloc((size_t)m->nbodies, sizeof(sph_body));
     for (int i = 0; i < m->nbodies; i++) {
@@ -36,6 +37,7 @@ int sph_sim_init(sph_sim *s, const sph_model *m, int verbose)
             printf("%s: body %s: %d particles, dx = %g m, %.1f neighbours each, c0 = %g m/s\n",
                    m->name, m->bodies[i].name, b->n, b->dx, (double)b->npairs / b->n, b->c0);
     }
+    sph_contact_init(s);
     m->velocity_bcs(s, 0.0); /* initial conditions: the BCs at t = 0 */
     initial_speeds(s);
     return 0;
@@ -53,6 +55,7 @@ double sph_sim_stable_dt(const sph_sim *s)
         double dta = b->amax2 > 0 ? sqrt(b->h / sqrt(b->amax2)) : INFINITY;  /* eq. 66 */
         dt = fmin(dt, fmin(dtv, dta));
     }
+    dt = fmin(dt, sph_contact_dt(s)); /* the stiffest contact */
     return m->cfl * dt; /* eq. 64 */
 }
 
@@ -66,6 +69,7 @@ void sph_sim_step(sph_sim *s, double dt)
 
 void sph_sim_free(sph_sim *s)
 {
+    sph_contact_free(s);
     for (int i = 0; i < s->nbodies; i++)
         sph_body_free(&s->bodies[i]);
     free(s->bodies);

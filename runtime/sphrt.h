@@ -147,7 +147,22 @@ typedef struct {
                                        (written to the VTU files), NULL for tensor entries */
     int dissipation;            /* 1 + the state value holding the dissipated energy density
                                    (plastic work); 0: none */
+    int viscous;                /* 1: artificial viscosity, whose dissipated energy the run
+                                   reports */
+    /* Contact with the other bodies (scenes with contact, see sph_contact_desc). */
+    double young, poisson;      /* elastic constants of the contact stiffness */
+    double restitution;         /* coefficient of restitution, 0 < e <= 1 */
+    double friction;            /* Coulomb friction coefficient */
 } sph_body_desc;
+
+/* Contact between the particles of different bodies (runtime/contact.c): particles are
+ * spheres of diameter dx in 3D and cylinders of diameter dx and unit length in 2D (plane
+ * strain); two touch when closer than the mean of their diameters.  The normal force is
+ * Hertz's law of the touching spheres (cylinders: linear), times `coef`, with damping from
+ * the restitution and Coulomb friction. */
+typedef struct {
+    double coef;                /* multiplies the contact stiffness (SoliDualSPHysics' contcoeff) */
+} sph_contact_desc;
 
 /* Expectations, checked at the end of the run and written to summary.json. */
 typedef enum { SPH_EXPECT_PERIOD, SPH_EXPECT_AMPLITUDE, SPH_EXPECT_ENERGY,
@@ -185,6 +200,7 @@ typedef struct {
      * (DeformStruc_Energies.csv, MeasuringPlData_MK<mk>_PL<k>.csv; docs/xml.md).  Set for
      * models imported from XML case files. */
     int compat_outputs;
+    const sph_contact_desc *contact; /* NULL: the bodies do not touch each other */
 
     /* Generated passes. */
     /* Apply velocity boundary conditions at time t (v set, fix bits set). */
@@ -257,7 +273,12 @@ struct sph_body {
 
     /* reductions written by the generated update pass */
     double vmax2, amax2;
+    /* artificial viscosity: the rate at which it dissipates energy (momentum pass) and the
+     * energy it has dissipated so far (update) */
+    double visc_rate, visc_dissipated;
 };
+
+typedef struct sph_contact sph_contact;
 
 struct sph_sim {
     const sph_model *m;
@@ -266,6 +287,7 @@ struct sph_sim {
     double t, dt;
     long step;
     int threads;
+    sph_contact *contact;  /* contact state (contact.c); NULL until the first contact pass */
 };
 
 /* Entry point of a generated program. */
@@ -285,6 +307,20 @@ void sph_body_energies(const sph_body *b, double *strain, double *kinetic);
 double sph_fracture_energy(const sph_body *b);
 /* Energy a body has dissipated in its material law (plastic work): sum V w; 0 without. */
 double sph_dissipated_energy(const sph_body *b);
+
+/* Contact (m->contact set; runtime/contact.c).  The contact pass adds every body's contact
+ * accelerations to its `a`, from the current positions X + u and velocities v; generated
+ * steps call it after the bodies' force passes and before their updates.  dt is the step's
+ * length (friction stops a pair's sliding at most within one step). */
+void sph_contact_forces(sph_sim *s, double dt);
+/* The contact's bound on the time step, sqrt(m_pair / k) of the stiffest contact (before eq. 64's
+ * C_CFL); INFINITY without contact. */
+double sph_contact_dt(const sph_sim *s);
+/* The energy stored in the contacts now and the energy the contacts' damping and friction
+ * have dissipated so far (both 0 without contact). */
+void sph_contact_energies(const sph_sim *s, double *stored, double *dissipated);
+/* Frees the contact state (sph_sim_free calls it). */
+void sph_contact_free(sph_sim *s);
 
 /* Component k (0..dim-1) of a compact vector -> 3D axis (0 = x, 1 = y, 2 = z). */
 static inline int sph_axis(int dim, int k) { return dim == 2 ? 2 * k : k; }

@@ -184,13 +184,22 @@ static void @B@_momentum_pass(sph_body *b)
 //@if NO_GRAVITY
             acc[i * D + r] = 0;
 //@endif
+//@if VISCOSITY
+    double visc_power = 0; /* sum over pairs of f_visc . (v_i - v_j): the viscous work rate */
+//@endif
     for (int colour = 0; colour < 2; colour++) {
+//@if VISCOSITY
+#pragma omp parallel for schedule(dynamic, 1) reduction(+ : visc_power)
+//@endif
+//@if NO_VISCOSITY
 #pragma omp parallel for schedule(dynamic, 1)
+//@endif
         for (int s = colour; s < b->nstripes; s += 2)
             for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
                 const sph_real *Qi = Q + (size_t)i * D * D;
 //@if VISCOSITY
                 const sph_real *Ci = Cv + (size_t)i * D * D;
+                sph_real pv = 0;
 //@endif
                 sph_real fi[D] = {0};
                 for (int p = hs[i]; p < hs[i + 1]; p++) {
@@ -208,9 +217,11 @@ static void @B@_momentum_pass(sph_body *b)
                     /* G_ij (eq. 60; gtab holds h / (r^2 + 0.001 h^2) in the units of w) and
                      * the viscous pressure pi_ij (eq. 58, times rho0), which resists relative
                      * motion along the reference separation. */
-                    sph_real vw = 0;
-                    for (int c = 0; c < D; c++)
-                        vw += (sph_real)(v[i * D + c] - v[j * D + c]) * w[c];
+                    sph_real vw = 0, dv[D];
+                    for (int c = 0; c < D; c++) {
+                        dv[c] = (sph_real)(v[i * D + c] - v[j * D + c]);
+                        vw += dv[c] * w[c];
+                    }
                     const sph_real G = gtab[k] * vw;
                     sph_real pi = (sph_real)(-@BETA1@ * @C0@) * G;
 //@if BETA2
@@ -218,9 +229,13 @@ static void @B@_momentum_pass(sph_body *b)
                     pi += (sph_real)@BETA2@ * Gc * Gc;
 //@endif
                     const sph_real *Cj = Cv + (size_t)j * D * D, hpi = (sph_real)0.5 * pi;
-                    for (int r = 0; r < D; r++)
+                    for (int r = 0; r < D; r++) {
+                        sph_real fv = 0;
                         for (int c = 0; c < D; c++)
-                            f[r] -= hpi * (Ci[r * D + c] + Cj[r * D + c]) * w[c];
+                            fv += (Ci[r * D + c] + Cj[r * D + c]) * w[c];
+                        f[r] -= hpi * fv;
+                        pv -= hpi * fv * dv[r];
+                    }
 //@endif
 //@if HOURGLASS
                     /* Hourglass control (Ganzenmueller 2015): the pair's separation predicted
@@ -251,8 +266,14 @@ static void @B@_momentum_pass(sph_body *b)
                 }
                 for (int r = 0; r < D; r++)
                     acc[i * D + r] += fi[r];
+//@if VISCOSITY
+                visc_power += pv;
+//@endif
             }
     }
+//@if VISCOSITY
+    b->visc_rate = -b->mass * visc_power; /* energy per second the viscosity dissipates */
+//@endif
 }
 
 static void @B@_forces(sph_body *b)

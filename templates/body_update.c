@@ -110,4 +110,7 @@ static void @B@_update(sph_body *b, double dt)
     }
     b->vmax2 = vmax2;
     b->amax2 = amax2;
+//@if VISCOSITY
+    b->visc_dissipated += b->visc_rate * dt;
+//@endif
 }

@@ -1,0 +1,224 @@
+/* contact.c — contact between the particles of different bodies (sphrt.h).
+ *
+ * Particles are spheres of diameter dx (3D) or cylinders of diameter dx and unit length
+ * (2D, plane strain).  Particles i of body A and j of body B, at distance r = |x_i - x_j|
+ * in the current configuration, overlap by delta = d_c - r, d_c = (dx_A + dx_B)/2, and
+ * then push each other apart along n = (x_i - x_j)/r with
+ *
+ *   F_n = max(0, F_e(delta) - c v_n),  v_n = (v_i - v_j) . n   (v_n < 0: approaching)
+ *   F_e = k delta^{3/2},  k = coef 4/3 E* sqrt(R*)            (3D: Hertz, touching spheres)
+ *   F_e = k delta,        k = coef pi/4 E* (1 m)              (2D: cylinders, linear)
+ *   1/E* = (1 - nu_A^2)/E_A + (1 - nu_B^2)/E_B,  R* = R_A R_B/(R_A + R_B),  R = dx/2
+ *   c = 2 zeta sqrt(m* k_t),  k_t = dF_e/d delta,  m* = m_i m_j/(m_i + m_j)
+ *   zeta = -ln e / sqrt(pi^2 + ln^2 e),  e = (e_A + e_B)/2 (the restitutions)
+ *
+ * c makes a linear contact (2D) bounce back with exactly the speed ratio e, and a Hertz
+ * contact (3D, c following k_t) approximately so.  Friction opposes the tangential slip
+ * v_t = (v_i - v_j) - v_n n with F_t = min(mu F_n, m* |v_t| / dt), mu = (mu_A + mu_B)/2:
+ * Coulomb's law, except that it stops a slip within one step rather than reversing it.
+ * The pair force is computed from both sides with the same arithmetic, so it is exactly
+ * equal and opposite: contact conserves linear momentum to round-off.
+ *
+ * The energy stored in a contact is the potential of F_e (2/5 k delta^{5/2}; 1/2 k delta^2);
+ * the work of the damping and friction forces is summed as dissipated energy.  The contact's
+ * time-step bound is 1/omega = sqrt(m* / k_t) of the stiffest contact, and never above its
+ * value at an overlap of 0.1 d_c (so a first impact finds the step already small). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "contact_search.h"
+#include "internal.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+typedef struct {
+    double dc;     /* contact distance */
+    double k;      /* stiffness of F_e */
+    double zeta;   /* damping ratio */
+    double mu;     /* friction coefficient */
+    double mstar;  /* reduced mass of a particle pair */
+    double w2ref;  /* omega^2 at an overlap of 0.1 dc */
+} pair_law;
+
+struct sph_contact {
+    int dim, n, nbodies;
+    int *base;         /* nbodies + 1: first global index of each body */
+    int *body;         /* n: body of each global particle */
+    double *dc;        /* nbodies^2 contact distances (for the search) */
+    pair_law *law;     /* nbodies^2 */
+    double *x;         /* n*dim current positions */
+    sph_csearch search;
+    double stored, dissipated, w2max;
+};
+
+static double hertz(int dim) { return dim == 3 ? 1.5 : 1.0; } /* F_e ~ delta^hertz */
+
+static pair_law make_law(const sph_model *m, const sph_body *A, const sph_body *B)
+{
+    const sph_body_desc *a = A->desc, *b = B->desc;
+    const double estar = 1.0 / ((1 - a->poisson * a->poisson) / a->young +
+                                (1 - b->poisson * b->poisson) / b->young);
+    const double ra = 0.5 * A->dx, rb = 0.5 * B->dx, e = 0.5 * (a->restitution + b->restitution);
+    pair_law L;
+    L.dc = ra + rb;
+    L.k = m->contact->coef * (m->dim == 3 ? 4.0 / 3.0 * estar * sqrt(ra * rb / (ra + rb))
+                                          : 0.25 * M_PI * estar);
+    L.zeta = e >= 1 ? 0 : -log(e) / sqrt(M_PI * M_PI + log(e) * log(e));
+    L.mu = 0.5 * (a->friction + b->friction);
+    L.mstar = A->mass * B->mass / (A->mass + B->mass);
+    const double kt = m->dim == 3 ? 1.5 * L.k * sqrt(0.1 * L.dc) : L.k;
+    L.w2ref = kt / L.mstar;
+    return L;
+}
+
+void sph_contact_init(sph_sim *s)
+{
+    if (!s->m->contact || s->contact)
+        return;
+    sph_contact *c = s->contact = calloc(1, sizeof *c);
+    const int nb = s->nbodies;
+    c->dim = s->m->dim;
+    c->nbodies = nb;
+    c->base = calloc((size_t)nb + 1, sizeof *c->base);
+    for (int i = 0; i < nb; i++)
+        c->base[i + 1] = c->base[i] + s->bodies[i].n;
+    c->n = c->base[nb];
+    c->body = malloc(((size_t)c->n + 1) * sizeof *c->body);
+    for (int i = 0; i < nb; i++)
+        for (int p = c->base[i]; p < c->base[i + 1]; p++)
+            c->body[p] = i;
+    c->dc = malloc((size_t)nb * nb * sizeof *c->dc);
+    c->law = malloc((size_t)nb * nb * sizeof *c->law);
+    double dxmax = 0;
+    for (int i = 0; i < nb; i++) {
+        dxmax = fmax(dxmax, s->bodies[i].dx);
+        for (int j = 0; j < nb; j++) {
+            c->law[i * nb + j] = make_law(s->m, &s->bodies[i], &s->bodies[j]);
+            c->dc[i * nb + j] = c->law[i * nb + j].dc;
+        }
+    }
+    c->x = malloc(((size_t)c->n * c->dim + 1) * sizeof *c->x);
+    c->search = (sph_csearch){.n = c->n, .dim = c->dim, .nbodies = nb, .body = c->body,
+                              .dc = c->dc, .skin = 0.5 * dxmax};
+}
+
+/* Current positions of every particle into c->x. */
+static void gather(sph_contact *c, const sph_sim *s)
+{
+    for (int i = 0; i < s->nbodies; i++) {
+        const sph_body *b = &s->bodies[i];
+        double *x = c->x + (size_t)c->base[i] * c->dim;
+        const size_t nd = (size_t)b->n * c->dim;
+#pragma omp parallel for schedule(static)
+        for (size_t p = 0; p < nd; p++)
+            x[p] = b->X[p] + b->u[p];
+    }
+}
+
+/* Contact force on particle i (global gi) from j (global gj); returns the force in f and
+ * adds half the pair's stored energy and dissipated power (each pair is seen twice). */
+static void pair_force(const sph_contact *c, const sph_sim *s, int gi, int gj, double dt,
+                       double f[3], double *stored, double *power, double *w2)
+{
+    const int D = c->dim, bi = c->body[gi], bj = c->body[gj];
+    const pair_law *L = &c->law[bi * c->nbodies + bj];
+    const double *xi = c->x + (size_t)gi * D, *xj = c->x + (size_t)gj * D;
+    const double *vi = s->bodies[bi].v + (size_t)(gi - c->base[bi]) * D;
+    const double *vj = s->bodies[bj].v + (size_t)(gj - c->base[bj]) * D;
+    double n[3] = {0, 0, 0}, dv[3] = {0, 0, 0}, r2 = 0;
+    f[0] = f[1] = f[2] = 0;
+    for (int k = 0; k < D; k++) {
+        n[k] = xi[k] - xj[k];
+        dv[k] = vi[k] - vj[k];
+        r2 += n[k] * n[k];
+    }
+    if (!(r2 < L->dc * L->dc) || r2 == 0)
+        return;
+    const double r = sqrt(r2), delta = L->dc - r;
+    double vn = 0;
+    for (int k = 0; k < D; k++) {
+        n[k] /= r;
+        vn += dv[k] * n[k];
+    }
+    const double root = D == 3 ? sqrt(delta) : 1.0;
+    const double fe = L->k * delta * root, kt = hertz(D) * L->k * root;
+    const double damp = 2 * L->zeta * sqrt(L->mstar * kt);
+    const double fn = fmax(0.0, fe - damp * vn);
+    double vt[3], vt2 = 0;
+    for (int k = 0; k < D; k++) {
+        vt[k] = dv[k] - vn * n[k];
+        vt2 += vt[k] * vt[k];
+    }
+    const double vtn = sqrt(vt2), ft = vtn > 0 ? fmin(L->mu * fn, L->mstar * vtn / dt) : 0;
+    for (int k = 0; k < D; k++)
+        f[k] = fn * n[k] - (vtn > 0 ? ft * vt[k] / vtn : 0);
+    *stored += 0.5 * L->k * delta * delta * root / (hertz(D) + 1);
+    *power += 0.5 * ((fe - fn) * vn + ft * vtn); /* work of damping and friction */
+    *w2 = fmax(*w2, kt / L->mstar);
+}
+
+void sph_contact_forces(sph_sim *s, double dt)
+{
+    if (!s->m->contact)
+        return;
+    sph_contact_init(s);
+    sph_contact *c = s->contact;
+    gather(c, s);
+    sph_csearch_update(&c->search, c->x);
+    const sph_csearch *q = &c->search;
+    double stored = 0, power = 0, w2 = 0;
+#pragma omp parallel for schedule(dynamic, 32) reduction(+ : stored, power) reduction(max : w2)
+    for (int a = 0; a < q->nactive; a++) {
+        const int gi = q->active[a], bi = c->body[gi];
+        double fi[3] = {0, 0, 0}, f[3];
+        for (int p = q->start[gi]; p < q->start[gi + 1]; p++) {
+            pair_force(c, s, gi, q->nb[p], dt, f, &stored, &power, &w2);
+            for (int k = 0; k < c->dim; k++)
+                fi[k] += f[k];
+        }
+        sph_body *b = &s->bodies[bi];
+        double *acc = b->a + (size_t)(gi - c->base[bi]) * c->dim;
+        for (int k = 0; k < c->dim; k++)
+            acc[k] += fi[k] / b->mass;
+    }
+    c->stored = stored;
+    c->dissipated += power * dt;
+    c->w2max = w2;
+}
+
+double sph_contact_dt(const sph_sim *s)
+{
+    const sph_contact *c = s->contact;
+    if (!c)
+        return INFINITY;
+    double w2 = c->w2max;
+    for (int i = 0; i < c->nbodies; i++)
+        for (int j = 0; j < c->nbodies; j++)
+            if (i != j)
+                w2 = fmax(w2, c->law[i * c->nbodies + j].w2ref);
+    return 1.0 / sqrt(w2);
+}
+
+void sph_contact_energies(const sph_sim *s, double *stored, double *dissipated)
+{
+    *stored = s->contact ? s->contact->stored : 0;
+    *dissipated = s->contact ? s->contact->dissipated : 0;
+}
+
+void sph_contact_free(sph_sim *s)
+{
+    sph_contact *c = s->contact;
+    if (!c)
+        return;
+    sph_csearch_free(&c->search);
+    free(c->base);
+    free(c->body);
+    free(c->dc);
+    free(c->law);
+    free(c->x);
+    free(c);
+    s->contact = NULL;
+}

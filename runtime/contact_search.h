@@ -1,0 +1,28 @@
+/* contact_search.h — candidate contact pairs in the current configuration.
+ *
+ * The particles of every body get one global index (body by body).  Candidates are the
+ * pairs of particles of different bodies closer than their contact distance plus a skin;
+ * they are found with a hashed cell list and kept until some particle has moved more than
+ * half the skin since, so between two rebuilds no pair can come into contact unseen. */
+#ifndef SPHRT_CONTACT_SEARCH_H
+#define SPHRT_CONTACT_SEARCH_H
+
+typedef struct {
+    int n, dim, nbodies;
+    const int *body;       /* n: body of each particle */
+    const double *dc;      /* nbodies^2: contact distance of a pair of bodies */
+    double skin;
+    double *x0;            /* n*dim positions at the last rebuild */
+    int *start, *nb;       /* candidates of each particle (CSR over the global index, both
+                              directions) */
+    int *active, nactive;  /* the particles that have candidates */
+    long builds;           /* rebuilds so far */
+    int built;
+} sph_csearch;
+
+/* Brings the candidates up to date with positions x (n*dim): rebuilds when a particle has
+ * moved more than skin/2 since the last rebuild.  Returns 1 when it rebuilt. */
+int sph_csearch_update(sph_csearch *c, const double *x);
+void sph_csearch_free(sph_csearch *c);
+
+#endif

@@ -1,0 +1,112 @@
+/* Flyer plates at test-suite resolution (flyer2d.sph): two J2 steel plates meet at
+ * 2 x 200 m/s; contact with restitution 0.95.  Checked over the whole run (600 us: the
+ * impact at 125 us, the waves' return and the plates' separation):
+ *  - linear momentum stays zero to round-off (1e-12 of one plate's momentum);
+ *  - the motion is mirror symmetric about the mid-plane z = 1.075 m (each particle of the
+ *    top plate against the mirror image of its partner in the bottom plate);
+ *  - no interpenetration: particles of different plates never come closer than 0.7 dx,
+ *    and the top plate stays above the bottom one;
+ *  - energy balance: kinetic + strain + plastic work + viscous dissipation + contact
+ *    (stored and dissipated) stays within 2 % of the initial kinetic energy;
+ *  - the impact made plastic strain, and the contact dissipated energy (e < 1). */
+#define main generated_main
+#include "flyer2d.c"
+#undef main
+
+#include "check.h"
+
+enum { D = 2, NS = 11 }; /* state: Cp (9), ep, wp */
+
+static double total_energy(const sph_sim *s)
+{
+    double e = 0, stored, dissipated;
+    for (int k = 0; k < s->nbodies; k++) {
+        double es, ek;
+        sph_body_energies(&s->bodies[k], &es, &ek);
+        e += es + ek + sph_dissipated_energy(&s->bodies[k]) + s->bodies[k].visc_dissipated;
+    }
+    sph_contact_energies(s, &stored, &dissipated);
+    return e + stored + dissipated;
+}
+
+/* The partner of every bottom particle in the top plate: reference position mirrored. */
+static int *mirror_map(const sph_body *top, const sph_body *bot, double zm)
+{
+    int *map = malloc((size_t)bot->n * sizeof *map);
+    for (int i = 0; i < bot->n; i++) {
+        map[i] = -1;
+        for (int j = 0; j < top->n; j++)
+            if (fabs(top->X[j * D] - bot->X[i * D]) < 1e-9 &&
+                fabs(top->X[j * D + 1] - (2 * zm - bot->X[i * D + 1])) < 1e-9)
+                map[i] = j;
+    }
+    return map;
+}
+
+int main(void)
+{
+    const double zm = 1.075, v0 = 200;
+    sph_sim sim;
+    if (sph_sim_init(&sim, &MODEL, 0))
+        return 1;
+    sph_body *top = &sim.bodies[0], *bot = &sim.bodies[1];
+    const double dx = top->dx, p_plate = top->n * top->mass * v0;
+    const double e0 = total_energy(&sim);
+    int *map = mirror_map(top, bot, zm), unmatched = 0;
+    for (int i = 0; i < bot->n; i++)
+        unmatched += map[i] < 0;
+    double pmax = 0, closest = INFINITY, order = INFINITY, drift = 0, asym = 0;
+    while (sim.t < MODEL.t_end - 1e-15) {
+        sph_sim_step(&sim, fmin(sph_sim_stable_dt(&sim), MODEL.t_end - sim.t));
+        double p[D] = {0, 0}, ztop = INFINITY, zbot = -INFINITY;
+        for (int b = 0; b < 2; b++)
+            for (int i = 0; i < sim.bodies[b].n; i++)
+                for (int k = 0; k < D; k++)
+                    p[k] += sim.bodies[b].mass * sim.bodies[b].v[i * D + k];
+        pmax = fmax(pmax, hypot(p[0], p[1]) / p_plate);
+        for (int i = 0; i < top->n; i++)
+            ztop = fmin(ztop, top->X[i * D + 1] + top->u[i * D + 1]);
+        for (int i = 0; i < bot->n; i++)
+            zbot = fmax(zbot, bot->X[i * D + 1] + bot->u[i * D + 1]);
+        order = fmin(order, ztop - zbot);
+        for (int i = 0; i < bot->n; i++) {
+            const double xb = bot->X[i * D] + bot->u[i * D], zb = bot->X[i * D + 1] + bot->u[i * D + 1];
+            if (map[i] >= 0) {
+                const int j = map[i];
+                const double xt = top->X[j * D] + top->u[j * D], zt = top->X[j * D + 1] + top->u[j * D + 1];
+                asym = fmax(asym, hypot(xt - xb, zt - (2 * zm - zb)) / dx);
+            }
+            if (zb < zbot - 2 * dx)
+                continue; /* only the bottom plate's top rows can touch */
+            for (int j = 0; j < top->n; j++) {
+                const double xt = top->X[j * D] + top->u[j * D], zt = top->X[j * D + 1] + top->u[j * D + 1];
+                closest = fmin(closest, hypot(xt - xb, zt - zb) / dx);
+            }
+        }
+        drift = fmax(drift, fabs(total_energy(&sim) - e0) / e0);
+    }
+    double ep_max = 0, stored, dissipated;
+    for (int b = 0; b < 2; b++)
+        for (int i = 0; i < sim.bodies[b].n; i++)
+            ep_max = fmax(ep_max, sim.bodies[b].state[(size_t)i * NS + 9]);
+    sph_contact_energies(&sim, &stored, &dissipated);
+    double ek_top, es_top;
+    sph_body_energies(top, &es_top, &ek_top);
+    printf("%ld steps: |momentum| <= %.3g of a plate's, asymmetry <= %.3g dx, closest pair "
+           "%.3f dx, top - bottom >= %.3f dx, energy drift <= %.3g %%, largest ep %.3g, "
+           "plastic work %.4g J, contact dissipated %.4g J, top kinetic %.4g J of %.4g J\n",
+           sim.step, pmax, asym, closest, order / dx, 100 * drift, ep_max,
+           sph_dissipated_energy(top) + sph_dissipated_energy(bot), dissipated, ek_top, e0 / 2);
+    check_close("mirror partners found for every particle", unmatched, 0, 0);
+    check_close("|total momentum| / plate momentum", pmax, 0, 1e-12);
+    check_close("mirror asymmetry (dx)", asym, 0, 1e-6);
+    check_close("no interpenetration: closest pair > 0.7 dx", closest > 0.7, 1, 0);
+    check_close("no interpenetration: top plate above the bottom one", order > 0, 1, 0);
+    check_close("energy balance: largest drift / initial energy", drift, 0, 0.02);
+    check_close("plastic strain from the impact: largest ep > 0.01", ep_max > 0.01, 1, 0);
+    check_close("contact dissipated energy > 0 (e = 0.95)", dissipated > 0, 1, 0);
+    check_close("plates slowed: top kinetic energy / initial < 0.8", ek_top / (e0 / 2) < 0.8, 1, 0);
+    free(map);
+    sph_sim_free(&sim);
+    return check_result();
+}
