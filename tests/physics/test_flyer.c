@@ -14,20 +14,9 @@
 #undef main
 
 #include "check.h"
+#include "contact_checks.h"
 
 enum { D = 2, NS = 11 }; /* state: Cp (9), ep, wp */
-
-static double total_energy(const sph_sim *s)
-{
-    double e = 0, stored, dissipated;
-    for (int k = 0; k < s->nbodies; k++) {
-        double es, ek;
-        sph_body_energies(&s->bodies[k], &es, &ek);
-        e += es + ek + sph_dissipated_energy(&s->bodies[k]) + s->bodies[k].visc_dissipated;
-    }
-    sph_contact_energies(s, &stored, &dissipated);
-    return e + stored + dissipated;
-}
 
 /* The partner of every bottom particle in the top plate: reference position mirrored. */
 static int *mirror_map(const sph_body *top, const sph_body *bot, double zm)
@@ -51,39 +40,28 @@ int main(void)
         return 1;
     sph_body *top = &sim.bodies[0], *bot = &sim.bodies[1];
     const double dx = top->dx, p_plate = top->n * top->mass * v0;
-    const double e0 = total_energy(&sim);
+    const double e0 = budget_energy(&sim);
     int *map = mirror_map(top, bot, zm), unmatched = 0;
     for (int i = 0; i < bot->n; i++)
         unmatched += map[i] < 0;
     double pmax = 0, closest = INFINITY, order = INFINITY, drift = 0, asym = 0;
     while (sim.t < MODEL.t_end - 1e-15) {
         sph_sim_step(&sim, fmin(sph_sim_stable_dt(&sim), MODEL.t_end - sim.t));
-        double p[D] = {0, 0}, ztop = INFINITY, zbot = -INFINITY;
-        for (int b = 0; b < 2; b++)
-            for (int i = 0; i < sim.bodies[b].n; i++)
-                for (int k = 0; k < D; k++)
-                    p[k] += sim.bodies[b].mass * sim.bodies[b].v[i * D + k];
-        pmax = fmax(pmax, hypot(p[0], p[1]) / p_plate);
+        double ztop = INFINITY, zbot = -INFINITY;
+        pmax = fmax(pmax, total_momentum(&sim) / p_plate);
         for (int i = 0; i < top->n; i++)
-            ztop = fmin(ztop, top->X[i * D + 1] + top->u[i * D + 1]);
+            ztop = fmin(ztop, pos(top, i, 1));
         for (int i = 0; i < bot->n; i++)
-            zbot = fmax(zbot, bot->X[i * D + 1] + bot->u[i * D + 1]);
+            zbot = fmax(zbot, pos(bot, i, 1));
         order = fmin(order, ztop - zbot);
-        for (int i = 0; i < bot->n; i++) {
-            const double xb = bot->X[i * D] + bot->u[i * D], zb = bot->X[i * D + 1] + bot->u[i * D + 1];
+        for (int i = 0; i < bot->n; i++)
             if (map[i] >= 0) {
                 const int j = map[i];
-                const double xt = top->X[j * D] + top->u[j * D], zt = top->X[j * D + 1] + top->u[j * D + 1];
-                asym = fmax(asym, hypot(xt - xb, zt - (2 * zm - zb)) / dx);
+                asym = fmax(asym, hypot(pos(top, j, 0) - pos(bot, i, 0),
+                                        pos(top, j, 1) - (2 * zm - pos(bot, i, 1))) / dx);
             }
-            if (zb < zbot - 2 * dx)
-                continue; /* only the bottom plate's top rows can touch */
-            for (int j = 0; j < top->n; j++) {
-                const double xt = top->X[j * D] + top->u[j * D], zt = top->X[j * D + 1] + top->u[j * D + 1];
-                closest = fmin(closest, hypot(xt - xb, zt - zb) / dx);
-            }
-        }
-        drift = fmax(drift, fabs(total_energy(&sim) - e0) / e0);
+        closest = fmin(closest, closest_approach(top, bot) / dx);
+        drift = fmax(drift, fabs(budget_energy(&sim) - e0) / e0);
     }
     double ep_max = 0, stored, dissipated;
     for (int b = 0; b < 2; b++)
