@@ -171,7 +171,8 @@ typedef struct {
 /* expect period tip.uz = 0.2553 within 3%
  * expect amplitude tip.uz = 23.2e-3 within 5%
  * expect energy within 2%
- * reference tip.uz = expr(t)                                     */
+ * reference tip.uz = expr(t) [within 5%]
+ * reference tip.uz = file "tip.csv" [within 5%]                  */
 typedef enum { EXPECT_PERIOD, EXPECT_AMPLITUDE, EXPECT_ENERGY, EXPECT_REFERENCE } ExpectKind;
 
 typedef struct {
@@ -182,6 +183,8 @@ typedef struct {
     SrcLoc target_loc;
     Expr *value;       /* expected value, or reference expression of t */
     Expr *tolerance;   /* percent; NULL for a bare reference */
+    char *file;        /* reference from a CSV file of (t, value) rows (value NULL) */
+    SrcLoc file_loc;
 } ExpectDecl;
 
 /* ---------------------------------------------------------------- top level */

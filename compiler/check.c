@@ -6,6 +6,7 @@
 
 #include "check.h"
 #include "diag.h"
+#include "source.h"
 #include "eval.h"
 
 /* ------------------------------------------------------------------ let, fn, material */
@@ -230,7 +231,14 @@ static int check_expect(Model *m, const Item *it)
             return -1;
         }
     }
-    if (d->kind == EXPECT_REFERENCE) {
+    if (d->kind == EXPECT_REFERENCE && d->file) {
+        char *path = source_beside(d->loc.file, d->file);
+        if (reference_csv_read(path, d->file_loc, &x->ref_t, &x->ref_v, &x->ref_n)) {
+            free(path);
+            return -1;
+        }
+        x->ref_file = path;
+    } else if (d->kind == EXPECT_REFERENCE) {
         static char *const t_only[] = {"t"};
         ExprScope s = {m, (char **)t_only, 1, 0, 0, "a reference solution (a function of t)"};
         if (check_scalar_expr(&s, d->value, 0))

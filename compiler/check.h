@@ -28,6 +28,9 @@ int check_region(const Model *m, const ShapeExpr *s, Region *r);
 int check_fracture_item(const Model *m, const BodyItem *it, FractureModel *f);
 int check_fracture_body(const BodyModel *b, const BodyDecl *d);
 
+/* A reference solution's (t, value) rows from a CSV file (reference_csv.c); errors at loc. */
+int reference_csv_read(const char *path, SrcLoc loc, double **t, double **v, int *n);
+
 /* Elastic constants (elastic.c): from the named arguments of a material use. */
 typedef struct {
     int has_E, has_nu, has_lambda, has_mu, has_K;

@@ -9,6 +9,7 @@
 
 #include "check.h"
 #include "diag.h"
+#include "source.h"
 #include "mesh.h"
 
 /* ------------------------------------------------------------------ shapes */
@@ -112,20 +113,6 @@ static int check_box(const Model *m, const NamedCall *c, ShapePrim *p)
     return 0;
 }
 
-/* The file name of a surface, relative to the file that names it (as written when that one
- * lies in the current folder). */
-static char *beside(const char *source, const char *name)
-{
-    const char *slash = source ? strrchr(source, '/') : NULL;
-    if (name[0] == '/' || !slash)
-        return strdup(name);
-    size_t n = (size_t)(slash - source) + 1;
-    char *path = malloc(n + strlen(name) + 1);
-    memcpy(path, source, n);
-    strcpy(path + n, name);
-    return path;
-}
-
 /* surface(file "name"): a closed surface from a VTK or STL file (runtime/mesh.h), read and
  * checked now and read again by the program, which gets its absolute path. */
 static int check_surface(const NamedCall *c, ShapePrim *p)
@@ -139,7 +126,7 @@ static int check_surface(const NamedCall *c, ShapePrim *p)
         diag_error(c->loc, "surface() needs 'file', the name of a VTK or STL file");
         return -1;
     }
-    char *path = beside(s->loc.file, s->text), err[1024], full[PATH_MAX];
+    char *path = source_beside(s->loc.file, s->text), err[1024], full[PATH_MAX];
     sph_mesh mesh;
     if (sph_mesh_load(path, &mesh, err, sizeof err)) {
         diag_error(s->loc, "%s", err);

@@ -535,12 +535,32 @@ static void bodies_desc(Emitter *E)
     fputs("};\n\n", out);
 }
 
+/* A reference read from a CSV file: its rows, linearly interpolated (NaN outside them). */
+static void reference_table(Emitter *E, const ExpectModel *x, int i)
+{
+    FILE *out = E->out;
+    fprintf(out, "/* %s:%d: %s\n * %d rows of %s */\n", source_basename(x->loc.file), x->loc.line,
+            line_of(x->loc), x->ref_n, source_basename(x->ref_file));
+    for (int col = 0; col < 2; col++) {
+        const double *v = col ? x->ref_v : x->ref_t;
+        fprintf(out, "static const double reference%d_%c[%d] = {", i, col ? 'v' : 't', x->ref_n);
+        for (int k = 0; k < x->ref_n; k++)
+            fprintf(out, "%s%.17g", k % 4 ? ", " : k ? ",\n    " : "\n    ", v[k]);
+        fputs("\n};\n", out);
+    }
+    fprintf(out, "static double reference%d(double t)\n{\n"
+                 "    return sph_table_interp(reference%d_t, reference%d_v, %d, t);\n}\n\n",
+            i, i, i, x->ref_n);
+}
+
 static void expects(Emitter *E)
 {
     const Model *m = E->m;
     FILE *out = E->out;
     for (int i = 0; i < m->nexpects; i++)
-        if (m->expects[i].kind == EXPECT_REFERENCE) {
+        if (m->expects[i].kind == EXPECT_REFERENCE && m->expects[i].ref_t)
+            reference_table(E, &m->expects[i], i);
+        else if (m->expects[i].kind == EXPECT_REFERENCE) {
             static char *const t_only[] = {"t"};
             EmitScope s = {m, (char **)t_only, 1, ""};
             fprintf(out, "/* %s:%d: %s */\nstatic double reference%d(double t)\n{\n    return ",

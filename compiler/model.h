@@ -95,7 +95,10 @@ typedef struct {
     SrcLoc loc;
     int body, measure, quantity;   /* quantity 0..2 = ux uy uz, 3..5 = fx fy fz */
     double value, tolerance;       /* tolerance relative (0.03), < 0: report only */
-    Expr *reference;               /* EXPECT_REFERENCE: expression of t */
+    Expr *reference;               /* EXPECT_REFERENCE: expression of t, or NULL and ... */
+    double *ref_t, *ref_v;         /* ... a table of (t, value) rows from a CSV file */
+    int ref_n;
+    const char *ref_file;
 } ExpectModel;
 
 typedef enum { KERNEL_WENDLAND = 0, KERNEL_CUBIC = 1 } KernelKind;

@@ -157,6 +157,22 @@ static void push_expect(ParseState *ps, ExpectKind kind, SrcLoc loc, const Targe
     ast_push_item(ps->prog, it);
 }
 
+/* reference M.Q = file "F.csv": the word before the string must be `file`. */
+static void push_reference_file(ParseState *ps, SrcLoc loc, const Target *target, SrcLoc kw_loc,
+                                const char *kw, SrcLoc file_loc, char *file, Expr *tolerance)
+{
+    if (strcmp(kw, "file") != 0) {
+        diag_error(kw_loc, "expected 'file \"NAME.csv\"' or an expression of t after "
+                           "'reference ... =' (got '%s')", kw);
+        free(file);
+        return;
+    }
+    push_expect(ps, EXPECT_REFERENCE, loc, target, NULL, tolerance);
+    ExpectDecl *d = &ps->prog->items[ps->prog->n - 1].expect;
+    d->file = file;
+    d->file_loc = file_loc;
+}
+
 /* The word after "expect" (energy is a keyword and has its own rule). */
 static int expect_kind(SrcLoc loc, const char *word, ExpectKind *kind)
 {
@@ -271,7 +287,7 @@ static void report_unclosed(ParseState *ps, const YYLTYPE *at, int at_eof, const
 %nterm <Target> target
 %nterm <int> rbrace
 %nterm <ExprList> exprs args_opt
-%nterm <Expr *> expr or_e and_e cmp_e add_e mul_e unary_e pow_e primary vec
+%nterm <Expr *> reference_tol expr or_e and_e cmp_e add_e mul_e unary_e pow_e primary vec
 
 /* A block may end without its '}' (rbrace: %empty) only where the lookahead
  * cannot continue the block: ';', material, let and error continue it. */
@@ -310,6 +326,16 @@ item
                                               push_expect(ps, k, LOC(@1), &$3, $5, $7); }
     | EXPECT ENERGY WITHIN expr '%'     { push_expect(ps, EXPECT_ENERGY, LOC(@1), NULL, NULL, $4); }
     | REFERENCE target '=' expr         { push_expect(ps, EXPECT_REFERENCE, LOC(@1), &$2, $4, NULL); }
+    | REFERENCE target '=' expr WITHIN expr '%'
+                                        { push_expect(ps, EXPECT_REFERENCE, LOC(@1), &$2, $4, $6); }
+    | REFERENCE target '=' IDENT STRING reference_tol
+                                        { push_reference_file(ps, LOC(@1), &$2, LOC(@4), $4,
+                                                              LOC(@5), $5, $6); }
+    ;
+
+reference_tol
+    : %empty                            { $$ = NULL; }
+    | WITHIN expr '%'                   { $$ = $2; }
     ;
 
 rbrace

@@ -1,5 +1,6 @@
 /* source.c — reading model source lines back, for comments in generated code. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "source.h"
@@ -32,4 +33,16 @@ const char *source_line_trimmed(const char *file, int line)
             q[1] = '_'; /* never close the surrounding C comment */
     memmove(buf, p, strlen(p) + 1);
     return buf;
+}
+
+char *source_beside(const char *source, const char *name)
+{
+    const char *slash = source ? strrchr(source, '/') : NULL;
+    if (name[0] == '/' || !slash)
+        return strdup(name);
+    size_t n = (size_t)(slash - source) + 1;
+    char *path = malloc(n + strlen(name) + 1);
+    memcpy(path, source, n);
+    strcpy(path + n, name);
+    return path;
 }

@@ -7,5 +7,8 @@
 const char *source_line_trimmed(const char *file, int line);
 /* The file name without its folders. */
 const char *source_basename(const char *path);
+/* A file named in `source`, relative to it (as written when `source` lies in the current
+ * folder or name is absolute); malloc'ed. */
+char *source_beside(const char *source, const char *name);
 
 #endif

@@ -52,17 +52,38 @@ static double energy_drift(const sph_series *e)
     return e0 > 0 ? worst / e0 : NAN;
 }
 
+double sph_table_interp(const double *t, const double *v, int n, double x)
+{
+    if (!(x >= t[0] && x <= t[n - 1]))
+        return NAN;
+    int lo = 0, hi = n - 1;
+    while (hi - lo > 1) {
+        const int mid = (lo + hi) / 2;
+        *(t[mid] <= x ? &lo : &hi) = mid;
+    }
+    const double w = (x - t[lo]) / (t[hi] - t[lo]);
+    return (1 - w) * v[lo] + w * v[hi];
+}
+
+/* Max and relative L2 error over the output times where the reference has a value (a
+ * table covers only its own time range); NaN when it has none. */
 static void reference_error(const sph_series *s, int q, double (*ref)(double), double *max_abs,
                             double *rel_l2)
 {
     double num = 0, den = 0;
+    int used = 0;
     *max_abs = 0;
     for (int i = 0; i < s->n; i++) {
         double r = ref(s->t[i]), d = column(s, i, q) - r;
+        if (!isfinite(r))
+            continue;
         *max_abs = fmax(*max_abs, fabs(d));
         num += d * d, den += r * r;
+        used++;
     }
-    *rel_l2 = den > 0 ? sqrt(num / den) : sqrt(num);
+    if (!used)
+        *max_abs = NAN;
+    *rel_l2 = !used ? NAN : den > 0 ? sqrt(num / den) : sqrt(num);
 }
 
 static const char *const KIND[] = {"period", "amplitude", "energy", "reference"};

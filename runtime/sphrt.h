@@ -305,6 +305,9 @@ void sph_body_energies(const sph_body *b, double *strain, double *kinetic);
 /* Fracture energy of a body: sum V Gc ((1 - s)^2 / (4 eps0) + eps0 |grad s|^2); 0 without
  * fracture. */
 double sph_fracture_energy(const sph_body *b);
+/* A table of n rows (t strictly increasing) at x, linearly interpolated; NaN outside
+ * [t[0], t[n-1]] (reference solutions read from CSV files). */
+double sph_table_interp(const double *t, const double *v, int n, double x);
 /* Energy a body has dissipated in its material law (plastic work): sum V w; 0 without. */
 double sph_dissipated_energy(const sph_body *b);
 
