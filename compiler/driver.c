@@ -147,19 +147,61 @@ static int write_source(const Model *m, const Paths *paths, const char *file)
         diag_fatal_noloc("cannot write '%s': %s", file, strerror(errno));
         return -1;
     }
-    int r = emit_c_program(m, paths->templates, f);
+    const int cuda = strstr(file, ".cu") && file[strlen(file) - 1] == 'u';
+    int r = cuda ? emit_cuda_program(m, paths->templates, f) : emit_c_program(m, paths->templates, f);
     if (fclose(f) != 0)
         r = -1;
     return r;
 }
 
-int build_program(const Model *m, const Options *o, const Paths *paths)
+/* nvcc: $CUDA_HOME/bin/nvcc, else the first on PATH; NULL when there is none. */
+static const char *find_nvcc(char *buf, size_t size)
 {
-    if (!strcmp(o->target, "cuda")) {
-        diag_fatal_noloc("the cuda target is not available in this version of sphc; use "
-                         "--target cpu");
+    const char *home = getenv("CUDA_HOME");
+    if (home && *home) {
+        snprintf(buf, size, "%s/bin/nvcc", home);
+        if (access(buf, X_OK) == 0)
+            return buf;
+    }
+    const char *path = getenv("PATH");
+    while (path && *path) {
+        const char *end = strchr(path, ':');
+        size_t n = end ? (size_t)(end - path) : strlen(path);
+        snprintf(buf, size, "%.*s/nvcc", (int)n, path);
+        if (n && access(buf, X_OK) == 0)
+            return buf;
+        path = end ? end + 1 : NULL;
+    }
+    return NULL;
+}
+
+/* The CUDA target: nvcc builds model.cu with runtime/sph_cuda.h and links the host runtime. */
+static int compile_cuda(const Model *m, const Options *o, const char *src, const char *lib,
+                        const char *inc, const char *exe)
+{
+    char nvcc[4096], arch[256];
+    if (!find_nvcc(nvcc, sizeof nvcc)) {
+        diag_fatal_noloc("--target cuda needs nvcc, which is neither in $CUDA_HOME/bin nor on "
+                         "PATH (install the CUDA toolkit, or use --target cpu)");
         return -1;
     }
+    const char *a = o->cuda_arch;
+    if (!a) {
+        a = access("/dev/nvidiactl", F_OK) == 0 ? "native" : "sm_90";
+        if (strcmp(a, "native"))
+            fprintf(stderr, "sphc: note: no GPU found on this machine; building %s for sm_90 "
+                            "(--cuda-arch to choose)\n", m->name);
+    }
+    snprintf(arch, sizeof arch, "-arch=%s", a);
+    char *argv[] = {nvcc, "-std=c++20", "--extended-lambda", "-O3", arch,
+                    "-Xcompiler", "-fopenmp,-Wall,-Wextra", (char *)inc, (char *)src, (char *)lib,
+                    "-lgomp", "-lm", "-o", (char *)exe, NULL};
+    return run_command(argv);
+}
+
+int build_program(const Model *m, const Options *o, const Paths *paths)
+{
+    const int cuda = !strcmp(o->target, "cuda");
     char dir[4096];
     if (o->emit_dir) {
         snprintf(dir, sizeof dir, "%s", o->emit_dir);
@@ -172,7 +214,7 @@ int build_program(const Model *m, const Options *o, const Paths *paths)
         }
     }
     char src[4200], lib[4200], inc[4200];
-    snprintf(src, sizeof src, "%s/%s.c", dir, m->name);
+    snprintf(src, sizeof src, "%s/%s.%s", dir, m->name, cuda ? "cu" : "c");
     snprintf(lib, sizeof lib, "%s/libsphrt%s.a", paths->lib, m->single ? "_single" : "");
     snprintf(inc, sizeof inc, "-I%s", paths->include);
     if (write_source(m, paths, src))
@@ -181,6 +223,17 @@ int build_program(const Model *m, const Options *o, const Paths *paths)
         return 0;
     const char *cc = getenv("CC");
     const char *exe = o->output ? o->output : m->name;
+    if (cuda) {
+        int rc = compile_cuda(m, o, src, lib, inc, exe);
+        if (!o->emit_dir) {
+            remove(src);
+            rmdir(dir);
+        }
+        if (rc != 0)
+            diag_fatal_noloc("nvcc failed on the generated code (exit %d); rerun with --emit-c "
+                             "DIR to inspect it", rc);
+        return rc != 0 ? -1 : 0;
+    }
     /* -ffp-contract=fast: let a*b+c become one fused multiply-add (ISO C mode turns that
      * off by default); -fno-math-errno: math functions need not set errno, so they inline. */
     char *argv[] = {(char *)(cc && *cc ? cc : "cc"), "-std=c11", "-O3", "-march=native",

@@ -10,6 +10,7 @@ typedef struct {
     const char *input;
     const char *output;    /* -o */
     const char *target;    /* cpu | cuda */
+    const char *cuda_arch; /* --cuda-arch: nvcc's -arch (NULL: native with a GPU, else sm_90) */
     const char *emit_dir;  /* --emit-c */
     const char *dump;      /* ast | model | plan */
     int check_only;

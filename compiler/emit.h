@@ -22,6 +22,9 @@ void emit_value_function(FILE *out, const Model *m, const char *fname, const Exp
 /* Write the whole generated program for the CPU target.  templates_dir holds
  * body_forces.c etc.  Returns 0 or -1 (reported). */
 int emit_c_program(const Model *m, const char *templates_dir, FILE *out);
+/* The same model for the CUDA target: model.cu, built by nvcc with runtime/sph_cuda.h.
+ * Returns 0, or -1 after reporting a feature the target does not support yet. */
+int emit_cuda_program(const Model *m, const char *templates_dir, FILE *out);
 
 /* Print the per-body kernel plan (sphc --dump=plan). */
 void plan_dump(const Model *m, FILE *out);

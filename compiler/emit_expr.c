@@ -174,7 +174,7 @@ static void statements(FILE *out, const EmitScope *s, const Expr *e, int depth)
 void emit_value_function(FILE *out, const Model *m, const char *fname, const Expr *e)
 {
     EmitScope s = {m, NULL, 0, ""};
-    fprintf(out, "static inline int %s(const sph_pt *p, double *out)\n{\n", fname);
+    fprintf(out, "SPH_FN int %s(const sph_pt *p, double *out)\n{\n", fname);
     if (!expr_uses_variables(m, e))
         fputs("    (void)p;\n", out);
     statements(out, &s, e, 1);

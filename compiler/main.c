@@ -23,13 +23,16 @@
 
 static void usage(FILE *f)
 {
-    fputs("usage: sphc [-o NAME] [--target cpu|cuda] [--emit-c DIR] [--dump=ast|model|plan]\n"
+    fputs("usage: sphc [-o NAME] [--target cpu|cuda] [--cuda-arch A] [--emit-c DIR]\n"
+          "            [--dump=ast|model|plan]\n"
           "            [--check] [--to-sph] [--xml-elastic2d=3d|sdsph]\n"
           "            [--xml-fill=volume|gencase] FILE\n"
           "Compiles a model (FILE.sph, or a SoliDualSPHysics case FILE.xml) into an\n"
           "executable (named after FILE unless -o is given).\n"
           "  -o NAME          name of the executable\n"
-          "  --target T       cpu (OpenMP, default) or cuda\n"
+          "  --target T       cpu (OpenMP, default) or cuda (nvcc from PATH or $CUDA_HOME)\n"
+          "  --cuda-arch A    nvcc -arch for the cuda target (default: native when a GPU is\n"
+          "                   present, else sm_90)\n"
           "  --emit-c DIR     keep the generated C source in DIR\n"
           "  --dump=STAGE     print the syntax tree, checked model or kernel plan and stop\n"
           "  --emit-only      with --emit-c: write the C source without compiling it\n"
@@ -111,6 +114,10 @@ static int parse_args(int argc, char **argv, Options *o)
             o->target = argv[++i];
         } else if (!strncmp(a, "--target=", 9)) {
             o->target = a + 9;
+        } else if (!strcmp(a, "--cuda-arch") && i + 1 < argc) {
+            o->cuda_arch = argv[++i];
+        } else if (!strncmp(a, "--cuda-arch=", 12)) {
+            o->cuda_arch = a + 12;
         } else if (!strcmp(a, "--emit-c") && i + 1 < argc) {
             o->emit_dir = argv[++i];
         } else if (!strncmp(a, "--emit-c=", 9)) {

@@ -279,8 +279,16 @@ static int write_summary(run_state *r, double wall, long particles, long pairs, 
 
 /* ------------------------------------------------------------------ the loop */
 
+/* A device target brings the bodies' host arrays up to date before the runtime reads them. */
+static void sync_host(run_state *r)
+{
+    if (r->m->sync_host)
+        r->m->sync_host(&r->sim);
+}
+
 static int check_now(run_state *r, sph_monitor *mon)
 {
+    sync_host(r); /* also for the frame written right after */
     if (!sph_monitor_check(mon, &r->sim, r->unstable, sizeof r->unstable))
         return 0;
     return 1;
@@ -323,6 +331,7 @@ static int time_loop(run_state *r)
     while (s->t < r->t_end - eps) {
         double dt = sph_sim_stable_dt(s);
         if (!(dt >= floor_dt)) {
+            sync_host(r);
             dt_collapse_report(r, dt, floor_dt);
             break;
         }
@@ -376,6 +385,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
     long particles = 0, pairs = 0;
     if (setup(&r, &particles, &pairs) || open_outputs(&r))
         return 4;
+    sync_host(&r);
     if (write_frame(&r))
         return 4;
     int state = time_loop(&r);
@@ -383,6 +393,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
         return 4;
     int failed = 0;
     double wall = sph_wall_time() - wall0;
+    sync_host(&r);
     if (write_summary(&r, wall, particles, pairs, &failed))
         return 4;
     sph_csv_close(&r.energies);

@@ -30,6 +30,16 @@
 extern "C" {
 #endif
 
+/* Per-particle functions run on the host and, in the CUDA target, on the device: SPH_FN marks
+ * the generated ones (material laws, boundary-condition values, user functions), SPH_HD the
+ * helpers below. */
+#ifdef __CUDACC__
+#define SPH_HD __host__ __device__
+#else
+#define SPH_HD
+#endif
+#define SPH_FN SPH_HD static inline
+
 /* ------------------------------------------------------------------ geometry */
 
 typedef enum { SPH_BOX, SPH_CYLINDER, SPH_SPHERE, SPH_MESH } sph_shape_kind;
@@ -209,6 +219,10 @@ typedef struct {
     void (*step)(sph_sim *s, double dt);
     /* Cauchy stress (xx yy zz xy yz zx) of every particle into body->sigma. */
     void (*stress_output)(sph_sim *s);
+    /* Device targets (CUDA): copy the state the device holds back into the bodies' host
+     * arrays before the runtime reads them (outputs, energies, the stability monitor);
+     * NULL on the CPU, where the host arrays are the state. */
+    void (*sync_host)(sph_sim *s);
 } sph_model;
 
 /* ------------------------------------------------------------------ state */
@@ -255,6 +269,10 @@ struct sph_body {
     int *stripe;          /* nstripes + 1 particle indices */
     int nstripes;
     sph_real *A;          /* n*dim*dim: sum_j (u_j - u_i) (x) w_ij, the pair part of eq. 53 */
+    /* Full lists (both directions) for device targets, whose threads each sum their own
+     * particle's pairs: fb_k is the offset table entry k of the pair as the half list holds
+     * it, or ~k for the reversed pair (w_ji = -w_ij).  NULL on the CPU. */
+    int *fb_start, *fb, *fb_k;
 
     double *state;        /* n*nstate state of the material law (NULL without state) */
 
@@ -326,26 +344,26 @@ void sph_contact_energies(const sph_sim *s, double *stored, double *dissipated);
 void sph_contact_free(sph_sim *s);
 
 /* Component k (0..dim-1) of a compact vector -> 3D axis (0 = x, 1 = y, 2 = z). */
-static inline int sph_axis(int dim, int k) { return dim == 2 ? 2 * k : k; }
+SPH_HD static inline int sph_axis(int dim, int k) { return dim == 2 ? 2 * k : k; }
 
 /* ------------------------------------------------------------------ per-particle helpers
  * Shared by generated code and the runtime (3×3 row-major). */
 
 /* Cofactor (i, j) of F: the (i, j) entry of J F^-T. */
-static inline double sph_cofactor(const double F[9], int i, int j)
+SPH_HD static inline double sph_cofactor(const double F[9], int i, int j)
 {
     const int r0 = (i + 1) % 3, r1 = (i + 2) % 3, c0 = (j + 1) % 3, c1 = (j + 2) % 3;
     return F[3 * r0 + c0] * F[3 * r1 + c1] - F[3 * r0 + c1] * F[3 * r1 + c0];
 }
 
-static inline double sph_det3(const double F[9])
+SPH_HD static inline double sph_det3(const double F[9])
 {
     return F[0] * sph_cofactor(F, 0, 0) + F[1] * sph_cofactor(F, 0, 1) +
            F[2] * sph_cofactor(F, 0, 2);
 }
 
 /* C = A B */
-static inline void sph_mat3_mul(const double A[9], const double B[9], double C[9])
+SPH_HD static inline void sph_mat3_mul(const double A[9], const double B[9], double C[9])
 {
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
@@ -353,7 +371,7 @@ static inline void sph_mat3_mul(const double A[9], const double B[9], double C[9
 }
 
 /* C = A B^T */
-static inline void sph_mat3_mul_bt(const double A[9], const double B[9], double C[9])
+SPH_HD static inline void sph_mat3_mul_bt(const double A[9], const double B[9], double C[9])
 {
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
@@ -366,7 +384,7 @@ typedef struct {
     double x0, y0, z0, x, y, z, ux, uy, uz, t, dt, dx;
 } sph_pt;
 
-static inline void sph_point(const sph_body *b, int i, int dim, double t, double dt, sph_pt *p)
+SPH_HD static inline void sph_point(const sph_body *b, int i, int dim, double t, double dt, sph_pt *p)
 {
     double X[3] = {0, b->y_plane, 0}, U[3] = {0, 0, 0};
     for (int k = 0; k < dim; k++) {

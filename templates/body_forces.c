@@ -48,29 +48,12 @@ static void @B@_gradient_pass(sph_body *b)
     }
 }
 
-/* Pass 2, per particle: F = I + A L^T (eq. 53 with the corrected gradient), the material law
- * (S, psi), P = F S (eq. 2), and what the momentum pass needs of each particle: Q = P L and,
- * for artificial viscosity, Cv = cof(F) L = J F^-T L.
-//@if FRACTURE
- * With fracture: F = I where s <= s_l (eq. 63), the stress degraded by s (eq. 18), the
- * history H = max(H, psi+) (eq. 8) and the phase-field acceleration of eq. 61.
-//@endif
- */
+/* Pass 2, per particle: F, the law, P L and cof(F) L (@B@_particle_stress). */
 static void @B@_stress_pass(sph_body *b)
 {
     enum { D = @DIM@ };
     const int n = b->n;
     sph_real *restrict Ac = b->A;
-    const double *restrict Lc = b->L;
-    double *restrict Fs = b->F, *restrict psi = b->psi;
-    sph_real *restrict Q = b->Q;
-//@if VISCOSITY
-    sph_real *restrict Cv = b->Cv;
-//@endif
-//@if FRACTURE
-    const double *restrict sf = b->s;
-    double *restrict lap = b->lap, *restrict H = b->H, *restrict sdd = b->sdd;
-//@endif
     @B@_gradient_pass(b);
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; i++) {
@@ -79,80 +62,7 @@ static void @B@_stress_pass(sph_body *b)
             A[k] = Ac[(size_t)i * D * D + k];
             Ac[(size_t)i * D * D + k] = 0; /* ready for the next step's gradient pass */
         }
-        const double *L = Lc + (size_t)i * D * D;
-        double F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-        for (int r = 0; r < D; r++)
-            for (int c = 0; c < D; c++) {
-                double s = 0;
-                for (int k = 0; k < D; k++)
-                    s += A[r * D + k] * L[c * D + k];
-                F[sph_axis(D, r) * 3 + sph_axis(D, c)] += s;
-            }
-        double S[9], e;
-//@if FRACTURE
-        if (sf[i] <= @SLIMIT@) /* eq. 63: a broken particle carries no deformation */
-            for (int k = 0; k < 9; k++)
-                F[k] = k % 4 == 0;
-        double ep;
-        @B@_material(F, sf[i], S, &e, &ep);
-        H[i] = fmax(H[i], ep);
-        /* eq. 61 without its damping term: s'' + gamma s' = c^2/(2 eps0) (2 eps0 lap s +
-         * (1 - s)/(2 eps0) - 2 s H/Gc), c = c0; gamma s' is integrated by the update */
-        sdd[i] = @PF_A@ * (2 * @EPS0@ * lap[i] + (1 - sf[i]) * (0.5 / @EPS0@) -
-                           2 * sf[i] * H[i] * (1.0 / @GC@));
-        lap[i] = 0; /* ready for the next step's gradient pass */
-//@endif
-//@if STATE
-        /* the law's state (plasticity) advances once per step, here */
-        double *st = b->state + (size_t)i * @NSTATE@, st_new[@NSTATE@];
-        @B@_material(F, st, st_new, S, &e);
-        for (int k = 0; k < @NSTATE@; k++)
-            st[k] = st_new[k];
-//@endif
-//@if PLAIN_LAW
-        @B@_material(F, S, &e);
-//@endif
-        psi[i] = e;
-        for (int r = 0; r < D; r++) /* the out-of-plane entries of a 2D F never change */
-            for (int c = 0; c < D; c++)
-                Fs[(size_t)i * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] =
-                    F[sph_axis(D, r) * 3 + sph_axis(D, c)];
-        /* P = F S (eq. 2), in-plane block, then Q = P L */
-        double P[D * D];
-        for (int r = 0; r < D; r++)
-            for (int c = 0; c < D; c++) {
-                double s = 0;
-                for (int k = 0; k < 3; k++)
-                    s += F[sph_axis(D, r) * 3 + k] * S[k * 3 + sph_axis(D, c)];
-                P[r * D + c] = s;
-            }
-        for (int r = 0; r < D; r++)
-            for (int c = 0; c < D; c++) {
-                double s = 0;
-                for (int k = 0; k < D; k++)
-                    s += P[r * D + k] * L[k * D + c];
-                Q[(size_t)i * D * D + r * D + c] = (sph_real)s;
-            }
-//@if VISCOSITY
-        /* cof(F) = J F^-T: the Piola transform of the viscous pressure (eq. 57) */
-//@if FRACTURE
-        /* degraded like the elastic stress, so that a crack does not carry viscous stress
-         * either (its faces would otherwise be held back as they separate) */
-        const double vdeg = sf[i] * sf[i];
-//@endif
-        for (int r = 0; r < D; r++)
-            for (int c = 0; c < D; c++) {
-                double s = 0;
-                for (int k = 0; k < D; k++)
-                    s += sph_cofactor(F, sph_axis(D, r), sph_axis(D, k)) * L[k * D + c];
-//@if FRACTURE
-                Cv[(size_t)i * D * D + r * D + c] = (sph_real)(s * vdeg);
-//@endif
-//@if NO_FRACTURE
-                Cv[(size_t)i * D * D + r * D + c] = (sph_real)s;
-//@endif
-            }
-//@endif
+        @B@_particle_stress(b, i, A);
     }
 }
 

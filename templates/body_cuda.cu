@@ -1,0 +1,170 @@
+/* ---- body @B@: internal forces on the device (CUDA target) --------------------------------
+ * The passes of templates/body_forces.c with one thread per particle: b is the body's device
+ * view (runtime/sph_cuda.h), whose full pair lists let every thread sum its own particle's
+ * pairs, so no two threads write the same particle.  The pair terms are those of the CPU
+ * passes, computed from both sides (w_ji = -w_ij). */
+
+/* Pass 1-2, per particle: A_i = sum_j V_j (u_j - u_i) (x) grad W_ij over the particle's
+ * full list, then F, the law, P L and cof(F) L (@B@_particle_stress, body_particle.c). */
+static void @B@_stress_pass(sph_body *b)
+{
+    enum { D = @DIM@ };
+    SPH_FOR(i, b->n, {
+        const sph_real *w0 = b->wtab;
+        const double *u = b->u;
+        double A[D * D] = {0};
+        for (int p = b->fb_start[i]; p < b->fb_start[i + 1]; p++) {
+            const int j = b->fb[p], k = b->fb_k[p];
+            const double sg = k < 0 ? -1.0 : 1.0; /* ~k: the reversed pair */
+            const sph_real *w = w0 + (size_t)(k < 0 ? ~k : k) * D;
+            for (int r = 0; r < D; r++)
+                for (int c = 0; c < D; c++)
+                    A[r * D + c] += (u[j * D + r] - u[i * D + r]) * sg * w[c];
+        }
+        @B@_particle_stress(b, i, A);
+    });
+}
+
+/* Pass 3, per particle: rho0 dv_i/dt = sum_j V_j (P_i L_i + P_j L_j) grad W_ij (eq. 55) plus
+ * artificial viscosity (eq. 57-60) and gravity. */
+static void @B@_momentum_pass(sph_body *b)
+{
+    enum { D = @DIM@ };
+//@if VISCOSITY
+    SPH_FOR(i, 1, { b->visc_rate = 0; });
+//@endif
+    SPH_FOR(i, b->n, {
+        const sph_real inv_rho = (sph_real)(1.0 / b->rho0);
+        const sph_real *Qi = b->Q + (size_t)i * D * D;
+//@if VISCOSITY
+        const sph_real *Ci = b->Cv + (size_t)i * D * D;
+        sph_real pv = 0;
+//@endif
+        sph_real fi[D] = {0};
+        for (int p = b->fb_start[i]; p < b->fb_start[i + 1]; p++) {
+            const int j = b->fb[p], k = b->fb_k[p];
+            const sph_real sg = k < 0 ? (sph_real)-1 : (sph_real)1;
+            const sph_real *wk = b->wtab + (size_t)(k < 0 ? ~k : k) * D;
+            sph_real w[D];
+            for (int c = 0; c < D; c++)
+                w[c] = sg * wk[c];
+            const sph_real *Qj = b->Q + (size_t)j * D * D;
+            sph_real f[D];
+            for (int r = 0; r < D; r++) {
+                sph_real s2 = 0;
+                for (int c = 0; c < D; c++)
+                    s2 += (Qi[r * D + c] + Qj[r * D + c]) * w[c];
+                f[r] = s2 * inv_rho;
+            }
+//@if VISCOSITY
+            sph_real vw = 0, dv[D];
+            for (int c = 0; c < D; c++) {
+                dv[c] = (sph_real)(b->v[i * D + c] - b->v[j * D + c]);
+                vw += dv[c] * w[c];
+            }
+            const sph_real G = b->gtab[k < 0 ? ~k : k] * vw;
+            sph_real pi = (sph_real)(-@BETA1@ * @C0@) * G;
+//@if BETA2
+            const sph_real Gc = G < 0 ? G : 0;
+            pi += (sph_real)@BETA2@ * Gc * Gc;
+//@endif
+            const sph_real *Cj = b->Cv + (size_t)j * D * D, hpi = (sph_real)0.5 * pi;
+            for (int r = 0; r < D; r++) {
+                sph_real fv = 0;
+                for (int c = 0; c < D; c++)
+                    fv += (Ci[r * D + c] + Cj[r * D + c]) * w[c];
+                f[r] -= hpi * fv;
+                pv -= hpi * fv * dv[r];
+            }
+//@endif
+            for (int r = 0; r < D; r++)
+                fi[r] += f[r];
+        }
+        const double g[3] = {@G0@, @G1@, @G2@};
+        for (int r = 0; r < D; r++)
+            b->a[i * D + r] = g[r] + fi[r];
+//@if VISCOSITY
+        atomicAdd(&b->visc_rate, -0.5 * b->mass * (double)pv); /* each pair seen twice */
+//@endif
+    });
+}
+
+static void @B@_forces(sph_body *b)
+{
+    @B@_stress_pass(b);
+    @B@_momentum_pass(b);
+}
+
+/* Cauchy stress sigma = F S F^T / J for output, on the host from the host copy of F. */
+static void @B@_stress_output(sph_body *b)
+{
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < b->n; i++) {
+        const double *F = b->F + (size_t)i * 9;
+        double S[9], e, FS[9], sig[9];
+        @B@_material(F, S, &e);
+        sph_mat3_mul(F, S, FS);
+        sph_mat3_mul_bt(FS, F, sig);
+        const double J = sph_det3(F);
+        static const int idx[6] = {0, 4, 8, 1, 5, 2};
+        for (int k = 0; k < 6; k++)
+            b->sigma[(size_t)i * 6 + k] = sig[idx[k]] / J;
+    }
+}
+
+/* ---- body @B@: time integration on the device ----------------------------------------- */
+SPH_FN double @B@_free_acc(const sph_body *b, int i, int k)
+{
+//@if VELOCITY_BCS
+    if (b->fix[i] >> k & 1)
+        return 0;
+//@endif
+    return b->a[i * @DIM@ + k];
+}
+
+//@if SYMPLECTIC
+/* Symplectic predictor (Alg. 2, step 1), as templates/body_update.c. */
+static void @B@_predict(sph_body *b, double dt)
+{
+    enum { D = @DIM@ };
+    SPH_FOR(i, b->n, {
+        for (int k = 0; k < D; k++) {
+            b->work[i * D + k] = b->v[i * D + k];
+            b->u[i * D + k] += 0.5 * dt * b->v[i * D + k];
+            b->v[i * D + k] += 0.5 * dt * @B@_free_acc(b, i, k);
+        }
+    });
+}
+//@endif
+
+/* The update that ends a step (Alg. 1 step 4 or the corrector of Alg. 2), with the max
+ * |v|^2 and |a|^2 of eq. 65-66 over free components, reduced on the device. */
+static void @B@_update(sph_body *b, double dt)
+{
+    enum { D = @DIM@ };
+    SPH_FOR(i, 1, {
+        b->vmax2 = 0;
+        b->amax2 = 0;
+    });
+    SPH_FOR(i, b->n, {
+//@if VERLET
+        const double *vn = b->v, du = dt;
+//@endif
+//@if SYMPLECTIC
+        const double *vn = b->work, du = 0.5 * dt;
+//@endif
+        double v2 = 0, a2 = 0;
+        for (int k = 0; k < D; k++) {
+            const double ak = @B@_free_acc(b, i, k);
+            b->v[i * D + k] = vn[i * D + k] + dt * ak;
+            b->u[i * D + k] += du * b->v[i * D + k];
+            v2 += b->v[i * D + k] * b->v[i * D + k];
+            a2 += ak * ak;
+        }
+        sph_atomic_max_pos(&b->vmax2, v2);
+        sph_atomic_max_pos(&b->amax2, a2);
+    });
+//@if VISCOSITY
+    SPH_FOR(i, 1, { b->visc_dissipated += b->visc_rate * dt; });
+//@endif
+}

@@ -1,0 +1,88 @@
+/* ---- body @B@: one particle's stress ---------------------------------------------------
+ * From A_i = sum_j V_j (u_j - u_i) (x) grad W_ij: F = I + A L^T (eq. 53 with the corrected
+ * gradient), the material law (S, psi), P = F S (eq. 2), and what the momentum pass needs of
+ * each particle: Q = P L and, for artificial viscosity, Cv = cof(F) L = J F^-T L.  Shared by
+ * the CPU passes (body_forces.c) and the CUDA ones (body_cuda.cu).
+//@if FRACTURE
+ * With fracture: F = I where s <= s_l (eq. 63), the stress degraded by s (eq. 18), the
+ * history H = max(H, psi+) (eq. 8) and the phase-field acceleration of eq. 61.
+//@endif
+ */
+SPH_FN void @B@_particle_stress(sph_body *b, int i, const double *A)
+{
+    enum { D = @DIM@ };
+    const double *L = b->L + (size_t)i * D * D;
+    double F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    for (int r = 0; r < D; r++)
+        for (int c = 0; c < D; c++) {
+            double s = 0;
+            for (int k = 0; k < D; k++)
+                s += A[r * D + k] * L[c * D + k];
+            F[sph_axis(D, r) * 3 + sph_axis(D, c)] += s;
+        }
+    double S[9], e;
+//@if FRACTURE
+    if (b->s[i] <= @SLIMIT@) /* eq. 63: a broken particle carries no deformation */
+        for (int k = 0; k < 9; k++)
+            F[k] = k % 4 == 0;
+    double ep;
+    @B@_material(F, b->s[i], S, &e, &ep);
+    b->H[i] = fmax(b->H[i], ep);
+    /* eq. 61 without its damping term: s'' + gamma s' = c^2/(2 eps0) (2 eps0 lap s +
+     * (1 - s)/(2 eps0) - 2 s H/Gc), c = c0; gamma s' is integrated by the update */
+    b->sdd[i] = @PF_A@ * (2 * @EPS0@ * b->lap[i] + (1 - b->s[i]) * (0.5 / @EPS0@) -
+                       2 * b->s[i] * b->H[i] * (1.0 / @GC@));
+    b->lap[i] = 0; /* ready for the next step's gradient pass */
+//@endif
+//@if STATE
+    /* the law's state (plasticity) advances once per step, here */
+    double *st = b->state + (size_t)i * @NSTATE@, st_new[@NSTATE@];
+    @B@_material(F, st, st_new, S, &e);
+    for (int k = 0; k < @NSTATE@; k++)
+        st[k] = st_new[k];
+//@endif
+//@if PLAIN_LAW
+    @B@_material(F, S, &e);
+//@endif
+    b->psi[i] = e;
+    for (int r = 0; r < D; r++) /* the out-of-plane entries of a 2D F never change */
+        for (int c = 0; c < D; c++)
+            b->F[(size_t)i * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] =
+                F[sph_axis(D, r) * 3 + sph_axis(D, c)];
+    /* P = F S (eq. 2), in-plane block, then Q = P L */
+    double P[D * D];
+    for (int r = 0; r < D; r++)
+        for (int c = 0; c < D; c++) {
+            double s = 0;
+            for (int k = 0; k < 3; k++)
+                s += F[sph_axis(D, r) * 3 + k] * S[k * 3 + sph_axis(D, c)];
+            P[r * D + c] = s;
+        }
+    for (int r = 0; r < D; r++)
+        for (int c = 0; c < D; c++) {
+            double s = 0;
+            for (int k = 0; k < D; k++)
+                s += P[r * D + k] * L[k * D + c];
+            b->Q[(size_t)i * D * D + r * D + c] = (sph_real)s;
+        }
+//@if VISCOSITY
+    /* cof(F) = J F^-T: the Piola transform of the viscous pressure (eq. 57) */
+//@if FRACTURE
+    /* degraded like the elastic stress, so that a crack does not carry viscous stress
+     * either (its faces would otherwise be held back as they separate) */
+    const double vdeg = b->s[i] * b->s[i];
+//@endif
+    for (int r = 0; r < D; r++)
+        for (int c = 0; c < D; c++) {
+            double s = 0;
+            for (int k = 0; k < D; k++)
+                s += sph_cofactor(F, sph_axis(D, r), sph_axis(D, k)) * L[k * D + c];
+//@if FRACTURE
+            b->Cv[(size_t)i * D * D + r * D + c] = (sph_real)(s * vdeg);
+//@endif
+//@if NO_FRACTURE
+            b->Cv[(size_t)i * D * D + r * D + c] = (sph_real)s;
+//@endif
+        }
+//@endif
+}
