@@ -4,19 +4,46 @@
  *
  *  - SPH_FOR(i, n, { body }): the loop over particles of the generated passes, a device
  *    lambda run by one thread per particle (the CPU target writes the same body in an
- *    OpenMP loop).
+ *    OpenMP loop); SPH_ONCE({ body }) the same on one thread.
  *  - The device view of a body: a copy of the host sph_body in managed memory whose arrays
  *    live on the device, so the generated code reads `b->u[...]` on either side.  The set-up
  *    (particles, pairs, kernel gradients, selections) stays on the host and is copied once;
  *    full pair lists (fb_*) replace the half lists, so that every thread sums the pairs of its
  *    own particle without atomics.
- *  - sph_cuda_to_host: the state back into the host body, when the runtime reads it. */
+ *  - sph_cuda_to_host: the state back into the host body, when the runtime reads it.
+ *  - With SPH_CUDA_EMULATE the host compiler builds model.cu as C++ with the passes run
+ *    serially on host memory: how the tests check the target's code without a GPU. */
 #ifndef SPH_CUDA_H
 #define SPH_CUDA_H
 
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+
+#ifdef SPH_CUDA_EMULATE
+/* Host emulation, for checking the CUDA target's passes without a GPU: the generated model.cu
+ * compiled as C++ by the host compiler, SPH_FOR a serial loop, device memory host memory. */
+#define __global__
+#define __device__
+#define __host__
+typedef int cudaError_t;
+enum { cudaSuccess = 0, cudaMemcpyHostToDevice = 1, cudaMemcpyDeviceToHost = 2 };
+static inline const char *cudaGetErrorString(cudaError_t) { return "no error"; }
+static inline cudaError_t cudaMalloc(void *p, size_t n)
+{
+    *(void **)p = malloc(n ? n : 1);
+    return cudaSuccess;
+}
+#define cudaMallocManaged cudaMalloc
+static inline cudaError_t cudaMemcpy(void *d, const void *s, size_t n, int)
+{
+    memcpy(d, s, n);
+    return cudaSuccess;
+}
+static inline cudaError_t cudaDeviceSynchronize() { return cudaSuccess; }
+static inline cudaError_t cudaGetLastError() { return cudaSuccess; }
+static inline void atomicAdd(double *a, double v) { *a += v; }
+#endif
 
 #include "sphrt.h"
 
@@ -29,6 +56,7 @@
         }                                                                                      \
     } while (0)
 
+#ifndef SPH_CUDA_EMULATE
 template <class F> __global__ void sph_for_kernel(int n, F f)
 {
     for (int i = blockIdx.x * blockDim.x + threadIdx.x; i < n; i += blockDim.x * gridDim.x)
@@ -41,13 +69,24 @@ template <class F> static void sph_for(int n, F f)
         sph_for_kernel<<<(n + 255) / 256, 256>>>(n, f);
 }
 
-#define SPH_FOR(i, n, ...) sph_for((n), [=] __device__(int i) __VA_ARGS__)
-
 /* *a = max(*a, v) for v >= 0: non-negative doubles order like their bit patterns. */
 __device__ static inline void sph_atomic_max_pos(double *a, double v)
 {
     atomicMax((unsigned long long *)a, (unsigned long long)__double_as_longlong(v));
 }
+#else
+template <class F> static void sph_for(int n, F f)
+{
+    for (int i = 0; i < n; i++)
+        f(i);
+}
+
+static inline void sph_atomic_max_pos(double *a, double v) { *a = v > *a ? v : *a; }
+#endif
+
+#define SPH_FOR(i, n, ...) sph_for((n), [=] __device__(int i) __VA_ARGS__)
+/* One thread: the body's scalars (reductions reset, sums advanced) in stream order. */
+#define SPH_ONCE(...) sph_for(1, [=] __device__(int) __VA_ARGS__)
 
 /* A device copy of `bytes` bytes at h (NULL for NULL). */
 static void *sph_dev_copy(const void *h, size_t bytes)
@@ -142,7 +181,7 @@ static void sph_cuda_to_host(sph_body *h, const sph_body *d)
     SPH_CUDA_CHECK(cudaMemcpy(h->F, d->F, n * 9 * sizeof(double), cudaMemcpyDeviceToHost));
     SPH_CUDA_CHECK(cudaMemcpy(h->psi, d->psi, n * sizeof(double), cudaMemcpyDeviceToHost));
     SPH_CUDA_CHECK(cudaMemcpy(h->fix, d->fix, n, cudaMemcpyDeviceToHost));
-    h->vmax2 = d->vmax2, h->amax2 = d->amax2;
+    /* (vmax2 and amax2 come back with every step; the host's initial ones stand until then) */
     h->visc_rate = d->visc_rate, h->visc_dissipated = d->visc_dissipated;
 }
 

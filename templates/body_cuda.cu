@@ -31,7 +31,7 @@ static void @B@_momentum_pass(sph_body *b)
 {
     enum { D = @DIM@ };
 //@if VISCOSITY
-    SPH_FOR(i, 1, { b->visc_rate = 0; });
+    SPH_ONCE({ b->visc_rate = 0; });
 //@endif
     SPH_FOR(i, b->n, {
         const sph_real inv_rho = (sph_real)(1.0 / b->rho0);
@@ -142,7 +142,7 @@ static void @B@_predict(sph_body *b, double dt)
 static void @B@_update(sph_body *b, double dt)
 {
     enum { D = @DIM@ };
-    SPH_FOR(i, 1, {
+    SPH_ONCE({
         b->vmax2 = 0;
         b->amax2 = 0;
     });
@@ -165,6 +165,6 @@ static void @B@_update(sph_body *b, double dt)
         sph_atomic_max_pos(&b->amax2, a2);
     });
 //@if VISCOSITY
-    SPH_FOR(i, 1, { b->visc_dissipated += b->visc_rate * dt; });
+    SPH_ONCE({ b->visc_dissipated += b->visc_rate * dt; });
 //@endif
 }

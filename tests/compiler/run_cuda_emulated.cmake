@@ -1,0 +1,67 @@
+# The CUDA target's passes run without a GPU (SPH_CUDA_EMULATE, runtime/sph_cuda.h):
+#   -DSPHC= -DCXX= -DMODEL= -DINCLUDE= -DLIB= -DWORKDIR= -DEND=
+# The model is built for both targets: the CPU program, and model.cu compiled by the host
+# C++ compiler with the device passes run serially on host memory (full pair lists, device
+# views, reductions, sync to the host).  Both run to END; every value of energies.csv and of
+# the measurement files must agree to 1e-7 relative (the two targets sum the pairs in a
+# different order, and a plane's force is a sum that cancels to a few digits; a wrong
+# pass differs by far more: a stale initial time step alone made 1e-4).
+get_filename_component(stem ${MODEL} NAME_WE)
+file(REMOVE_RECURSE ${WORKDIR})
+file(MAKE_DIRECTORY ${WORKDIR})
+execute_process(COMMAND ${SPHC} -o ${WORKDIR}/cpu ${MODEL} RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "sphc (cpu) failed:\n${err}")
+endif()
+execute_process(COMMAND ${SPHC} --target cuda --emit-c ${WORKDIR} --emit-only -o ${stem} ${MODEL}
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "sphc --target cuda failed:\n${err}")
+endif()
+execute_process(COMMAND ${CXX} -std=c++20 -O2 -DSPH_CUDA_EMULATE -fopenmp -Wall -Wextra -Werror
+                        -I${INCLUDE} -x c++ ${WORKDIR}/${stem}.cu -x none ${LIB} -lm
+                        -o ${WORKDIR}/emulated
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the emulated CUDA build failed:\n${out}\n${err}")
+endif()
+foreach(prog cpu emulated)
+  execute_process(COMMAND ${WORKDIR}/${prog} --quiet --threads 1 --end ${END}
+                          --out ${WORKDIR}/${prog}_out
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 AND NOT rc EQUAL 1) # 1: an expectation of the model failed (short run)
+    message(FATAL_ERROR "${prog} failed (exit ${rc}):\n${out}\n${err}")
+  endif()
+endforeach()
+file(GLOB csvs RELATIVE ${WORKDIR}/cpu_out ${WORKDIR}/cpu_out/*.csv)
+set(compared 0)
+set(worst 0)
+foreach(csv ${csvs})
+  file(STRINGS ${WORKDIR}/cpu_out/${csv} a)
+  file(STRINGS ${WORKDIR}/emulated_out/${csv} b)
+  list(LENGTH a na)
+  list(LENGTH b nb)
+  if(NOT na EQUAL nb)
+    message(FATAL_ERROR "${csv}: ${na} rows on the CPU, ${nb} emulated")
+  endif()
+  math(EXPR last "${na} - 1")
+  foreach(r RANGE 1 ${last})
+    list(GET a ${r} ra)
+    list(GET b ${r} rb)
+    string(REPLACE "," ";" ra "${ra}")
+    string(REPLACE "," ";" rb "${rb}")
+    foreach(x y IN ZIP_LISTS ra rb)
+      if(NOT x STREQUAL y) # then |x - y| <= 1e-7 max(|x|, |y|), checked by awk
+        execute_process(COMMAND awk "BEGIN { x = ${x}; y = ${y}; d = x - y; if (d < 0) d = -d;
+                                    m = x < 0 ? -x : x; n = y < 0 ? -y : y; if (n > m) m = n;
+                                    print (d <= 1e-7 * m + 1e-300) ? \"ok\" : \"bad\" }"
+                        OUTPUT_VARIABLE verdict OUTPUT_STRIP_TRAILING_WHITESPACE)
+        if(NOT verdict STREQUAL "ok")
+          message(FATAL_ERROR "${csv} row ${r}: CPU ${x}, emulated CUDA ${y}")
+        endif()
+      endif()
+      math(EXPR compared "${compared} + 1")
+    endforeach()
+  endforeach()
+endforeach()
+message(STATUS "${stem}: ${compared} values of ${csvs} agree (CPU and emulated CUDA)")
