@@ -33,7 +33,7 @@ void emit_fracture_material(FILE *out, const BodyModel *b, const BodyPlan *p)
 
 /* The lower bound of the phase field: after each update s = max(s, bound) wherever the
  * expression gives a value (skip: no bound there). */
-void emit_fracture_restrict(FILE *out, const Model *m, const BodyModel *b)
+void emit_fracture_restrict(FILE *out, const Model *m, const BodyModel *b, int cuda)
 {
     const FractureModel *f = &b->fracture;
     if (!f->restrict_expr)
@@ -45,15 +45,16 @@ void emit_fracture_restrict(FILE *out, const Model *m, const BodyModel *b)
     emit_value_function(out, m, fname, f->restrict_expr);
     fprintf(out, "\n/* The restriction of body %s's phase field at time t (after its update). */\n"
                  "static void %s_restrict(sph_body *b, double t, double dt)\n{\n"
-                 "    enum { D = %d };\n"
-                 "#pragma omp parallel for schedule(static)\n"
-                 "    for (int i = 0; i < b->n; i++) {\n"
+                 "    enum { D = %d };\n%s"
                  "        sph_pt p;\n        sph_point(b, i, D, t, dt, &p);\n"
                  "        double smin;\n"
                  "        if (%s(&p, &smin) && b->s[i] < smin)\n"
                  "            b->s[i] = smin;\n"
-                 "    }\n}\n\n",
-            b->name, b->name, m->dim, fname);
+                 "    }%s\n}\n\n",
+            b->name, b->name, m->dim,
+            cuda ? "    SPH_FOR(i, b->n, {\n"
+                 : "#pragma omp parallel for schedule(static)\n    for (int i = 0; i < b->n; i++) {\n",
+            fname, cuda ? ");" : "");
 }
 
 /* static const sph_quad B_notches[]; static const sph_fracture_desc B_fracture */

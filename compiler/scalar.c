@@ -303,6 +303,21 @@ void sg_ref(const SGraph *g, int id, FILE *out)
     }
 }
 
+/* A function's argument: constants written as doubles (2.0, not 2), so that C++ (the CUDA
+ * target) picks the double overload of fmax, pow, ... on the device too. */
+static void arg_ref(const SGraph *g, int id, FILE *out)
+{
+    const SNode *s = &g->nodes[id];
+    if (s->op != SN_CONST || s->v != floor(s->v) || fabs(s->v) >= 1e15) {
+        sg_ref(g, id, out);
+        return;
+    }
+    if (s->v < 0)
+        fprintf(out, "(%.17g.0)", s->v);
+    else
+        fprintf(out, "%.17g.0", s->v);
+}
+
 static const char *infix(SnOp op)
 {
     static const char *const ops[] = {
@@ -329,7 +344,7 @@ static void emit_node(const SGraph *g, int id, FILE *out)
     case SN_POW: fputs("pow(", out); break;
     case SN_MIN: fputs("fmin(", out); break;
     case SN_MAX: fputs("fmax(", out); break;
-    case SN_CALL: fprintf(out, "%s(", s->fn); sg_ref(g, s->a, out); fputs(")", out); return;
+    case SN_CALL: fprintf(out, "%s(", s->fn); arg_ref(g, s->a, out); fputs(")", out); return;
     case SN_SELECT:
         sg_ref(g, s->a, out);
         fputs(" ? ", out);
@@ -339,9 +354,9 @@ static void emit_node(const SGraph *g, int id, FILE *out)
         return;
     default: return;
     }
-    sg_ref(g, s->a, out);
+    arg_ref(g, s->a, out);
     fputs(", ", out);
-    sg_ref(g, s->b, out);
+    arg_ref(g, s->b, out);
     fputs(")", out);
 }
 
@@ -361,20 +376,29 @@ static void mark(const SGraph *g, int id, char *live)
     mark(g, s->c, live);
 }
 
-/* double tN[nout]; fn(a0, a1, a2, tN);  or  fn((const double[n]){a0, ...}, tN); */
+/* double tN[nout]; fn(a0, a1, a2, tN);  or, with more than four arguments (a tensor),
+ * const double aN[n] = {a0, ...}; double tN[nout]; fn(aN, tN);  (valid C and C++) */
 static void emit_ext(const SGraph *g, int id, FILE *out, const char *indent)
 {
     const SNode *s = &g->nodes[id];
     int packed = s->nargs > 4;
-    fprintf(out, "%sdouble t%d[%d];\n%s%s(", indent, id, s->b, indent, s->fn);
     if (packed)
-        fprintf(out, "(const double[%d]){", s->nargs);
-    for (int k = 0; k < s->nargs; k++) {
+        fprintf(out, "%sconst double a%d[%d] = {", indent, id, s->nargs);
+    for (int k = 0; packed && k < s->nargs; k++) {
         if (k)
             fputs(", ", out);
         sg_ref(g, s->args[k], out);
     }
-    fprintf(out, "%s, t%d);\n", packed ? "}" : "", id);
+    fprintf(out, "%s%sdouble t%d[%d];\n%s%s(", packed ? "};\n" : "", indent, id, s->b, indent,
+            s->fn);
+    if (packed)
+        fprintf(out, "a%d", id);
+    for (int k = 0; !packed && k < s->nargs; k++) {
+        if (k)
+            fputs(", ", out);
+        sg_ref(g, s->args[k], out);
+    }
+    fprintf(out, ", t%d);\n", id);
 }
 
 void sg_emit(const SGraph *g, const int *roots, int nroots, FILE *out, const char *indent)

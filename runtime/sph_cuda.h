@@ -141,6 +141,14 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->A = (sph_real *)sph_dev_copy(h->A, n * d * d * sizeof(sph_real));
     b->psi = (double *)sph_dev_copy(h->psi, n * sizeof(double));
     b->fix = (uint8_t *)sph_dev_copy(h->fix, n);
+    b->state = (double *)sph_dev_copy(h->state, n * (size_t)h->desc->nstate * sizeof(double));
+    b->s = (double *)sph_dev_copy(h->s, n * sizeof(double)); /* fracture (NULL without) */
+    b->sd = (double *)sph_dev_copy(h->sd, n * sizeof(double));
+    b->sdd = (double *)sph_dev_copy(h->sdd, n * sizeof(double));
+    b->H = (double *)sph_dev_copy(h->H, n * sizeof(double));
+    b->lap = (double *)sph_dev_copy(h->lap, n * sizeof(double));
+    b->sd_n = (double *)sph_dev_copy(h->sd_n, n * sizeof(double));
+    b->ltab = (sph_real *)sph_dev_copy(h->ltab, nt * sizeof(sph_real));
     b->wtab = (sph_real *)sph_dev_copy(h->wtab, nt * d * sizeof(sph_real));
     b->gtab = (sph_real *)sph_dev_copy(h->gtab, nt * sizeof(sph_real));
     b->htab = (sph_real *)sph_dev_copy(h->htab, nt * sizeof(sph_real));
@@ -181,6 +189,13 @@ static void sph_cuda_to_host(sph_body *h, const sph_body *d)
     SPH_CUDA_CHECK(cudaMemcpy(h->F, d->F, n * 9 * sizeof(double), cudaMemcpyDeviceToHost));
     SPH_CUDA_CHECK(cudaMemcpy(h->psi, d->psi, n * sizeof(double), cudaMemcpyDeviceToHost));
     SPH_CUDA_CHECK(cudaMemcpy(h->fix, d->fix, n, cudaMemcpyDeviceToHost));
+    if (h->s) { /* fracture: the phase field and its history for outputs and energies */
+        SPH_CUDA_CHECK(cudaMemcpy(h->s, d->s, n * sizeof(double), cudaMemcpyDeviceToHost));
+        SPH_CUDA_CHECK(cudaMemcpy(h->H, d->H, n * sizeof(double), cudaMemcpyDeviceToHost));
+    }
+    if (h->state) /* plasticity: the VTU files and the plastic work read it */
+        SPH_CUDA_CHECK(cudaMemcpy(h->state, d->state, n * (size_t)h->desc->nstate * sizeof(double),
+                                  cudaMemcpyDeviceToHost));
     /* (vmax2 and amax2 come back with every step; the host's initial ones stand until then) */
     h->visc_rate = d->visc_rate, h->visc_dissipated = d->visc_dissipated;
 }

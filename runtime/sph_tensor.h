@@ -30,17 +30,19 @@
 
 #include <math.h>
 
+#include "sphrt.h" /* SPH_HD: these run on the device too (CUDA target) */
+
 /* Off-diagonal entries at or below this (relative to the largest entry) count as zero. */
 #define SPH_EIG_TOL 1e-18
 /* Upper bound on the Jacobi sweeps (never reached in practice: quadratic convergence). */
 #define SPH_EIG_MAX_SWEEPS 32
 
-static inline double sph_max(double a, double b) { return a > b ? a : b; }
-static inline double sph_min(double a, double b) { return a < b ? a : b; }
-static inline double sph_absmax(double a, double b) { return sph_max(fabs(a), fabs(b)); }
+SPH_HD static inline double sph_max(double a, double b) { return a > b ? a : b; }
+SPH_HD static inline double sph_min(double a, double b) { return a < b ? a : b; }
+SPH_HD static inline double sph_absmax(double a, double b) { return sph_max(fabs(a), fabs(b)); }
 
 /* (a + b) / 2, exactly a when a == b (also for subnormals) and free of overflow. */
-static inline double sph_sym_avg(double a, double b) { return a == b ? a : 0.5 * a + 0.5 * b; }
+SPH_HD static inline double sph_sym_avg(double a, double b) { return a == b ? a : 0.5 * a + 0.5 * b; }
 
 /* One Jacobi rotation in the (p, q) plane, p < q, that makes the (p, q) entry zero. The
  * matrix is held as its diagonal d and its off-diagonal entries o, o[r] being the entry
@@ -49,7 +51,7 @@ static inline double sph_sym_avg(double a, double b) { return a == b ? a : 0.5 *
  * |φ| <= π/4: t = tan φ = 2 a_pq sign(h) / w, w = |h| + g, g = sqrt(h² + 4 a_pq²), and
  * cos φ, sin φ = (w, 2 a_pq sign(h)) / sqrt(w² + 4 a_pq²). The caller scales the matrix to
  * a norm of order 1, so no square over- or underflows (|a_pq| > SPH_EIG_TOL here). */
-static inline void sph_jacobi_rotate(double d[3], double o[3], double V[9], int p, int q)
+SPH_HD static inline void sph_jacobi_rotate(double d[3], double o[3], double V[9], int p, int q)
 {
     int r = 3 - p - q;
     double a = o[r];
@@ -75,7 +77,7 @@ static inline void sph_jacobi_rotate(double d[3], double o[3], double V[9], int 
 }
 
 /* Cyclic Jacobi: eigenvalues lam (unsorted) and eigenvectors in the columns of Q. */
-static inline void sph_sym_eig3_unsorted(const double A[9], double lam[3], double Q[9])
+SPH_HD static inline void sph_sym_eig3_unsorted(const double A[9], double lam[3], double Q[9])
 {
     for (int k = 0; k < 9; k++)
         Q[k] = (k % 4 == 0); /* identity */
@@ -103,7 +105,7 @@ static inline void sph_sym_eig3_unsorted(const double A[9], double lam[3], doubl
 }
 
 /* Swaps eigenpairs i and j (eigenvalue and column of Q). */
-static inline void sph_eig_swap(double lam[3], double Q[9], int i, int j)
+SPH_HD static inline void sph_eig_swap(double lam[3], double Q[9], int i, int j)
 {
     double t = lam[i];
     lam[i] = lam[j];
@@ -119,7 +121,7 @@ static inline void sph_eig_swap(double lam[3], double Q[9], int i, int j)
  * eigenvectors in the columns of Q, Q orthonormal (a rotation or a reflection). Finite
  * input gives finite output (as long as the eigenvalues themselves are representable);
  * the zero matrix and c·I give lam = c exactly and Q = I. */
-static inline void sph_sym_eig3(const double A[9], double lam[3], double Q[9])
+SPH_HD static inline void sph_sym_eig3(const double A[9], double lam[3], double Q[9])
 {
     sph_sym_eig3_unsorted(A, lam, Q);
     if (lam[0] < lam[1])
@@ -133,7 +135,7 @@ static inline void sph_sym_eig3(const double A[9], double lam[3], double Q[9])
 /* Positive part Ap = Σ max(lam_k, 0) q_k q_kᵀ of a symmetric 3×3 tensor (the negative part
  * is A − Ap). Exactly the (symmetrised) A when no eigenvalue is negative, exactly 0 when
  * none is positive. */
-static inline void sph_sym_pos3(const double A[9], double Ap[9])
+SPH_HD static inline void sph_sym_pos3(const double A[9], double Ap[9])
 {
     double lam[3], Q[9];
     sph_sym_eig3_unsorted(A, lam, Q); /* the order does not matter here */
@@ -163,7 +165,7 @@ static inline void sph_sym_pos3(const double A[9], double Ap[9])
 
 /* Positive part of the symmetric 2×2 tensor {{axx, axz}, {axz, azz}} (x–z plane, plane
  * strain), closed form; out = {pxx, pxz, pzz}. The negative part is A − out. */
-static inline void sph_sym_pos2(double axx, double axz, double azz, double out[3])
+SPH_HD static inline void sph_sym_pos2(double axx, double axz, double azz, double out[3])
 {
     double m = 0.5 * axx + 0.5 * azz, dh = 0.5 * axx - 0.5 * azz, r2 = dh * dh + axz * axz;
     /* r = hypot(dh, axz); sqrt is several times faster, hypot only where r2 could have

@@ -13,6 +13,9 @@ static void @B@_stress_pass(sph_body *b)
         const sph_real *w0 = b->wtab;
         const double *u = b->u;
         double A[D * D] = {0};
+//@if FRACTURE
+        double lap = 0; /* the Laplacian of the phase field (eq. 62) over the same pairs */
+//@endif
         for (int p = b->fb_start[i]; p < b->fb_start[i + 1]; p++) {
             const int j = b->fb[p], k = b->fb_k[p];
             const double sg = k < 0 ? -1.0 : 1.0; /* ~k: the reversed pair */
@@ -20,7 +23,13 @@ static void @B@_stress_pass(sph_body *b)
             for (int r = 0; r < D; r++)
                 for (int c = 0; c < D; c++)
                     A[r * D + c] += (u[j * D + r] - u[i * D + r]) * sg * w[c];
+//@if FRACTURE
+            lap += b->ltab[k < 0 ? ~k : k] * (b->s[i] - b->s[j]);
+//@endif
         }
+//@if FRACTURE
+        b->lap[i] = lap;
+//@endif
         @B@_particle_stress(b, i, A);
     });
 }
@@ -102,7 +111,17 @@ static void @B@_stress_output(sph_body *b)
     for (int i = 0; i < b->n; i++) {
         const double *F = b->F + (size_t)i * 9;
         double S[9], e, FS[9], sig[9];
+//@if FRACTURE
+        double ep;
+        @B@_material(F, b->s[i], S, &e, &ep);
+//@endif
+//@if STATE
+        double st_new[@NSTATE@]; /* the state as the last step left it: not advanced here */
+        @B@_material(F, b->state + (size_t)i * @NSTATE@, st_new, S, &e);
+//@endif
+//@if PLAIN_LAW
         @B@_material(F, S, &e);
+//@endif
         sph_mat3_mul(F, S, FS);
         sph_mat3_mul_bt(FS, F, sig);
         const double J = sph_det3(F);
@@ -133,6 +152,11 @@ static void @B@_predict(sph_body *b, double dt)
             b->u[i * D + k] += 0.5 * dt * b->v[i * D + k];
             b->v[i * D + k] += 0.5 * dt * @B@_free_acc(b, i, k);
         }
+//@if FRACTURE
+        b->sd_n[i] = b->sd[i]; /* the phase field the same way */
+        @B@_phase_move(&b->s[i], &b->sd[i], 0.5 * dt);
+        b->sd[i] = @B@_phase_rate(b->sd[i], b->sdd[i], b->H[i], 0.5 * dt);
+//@endif
     });
 }
 //@endif
@@ -154,6 +178,16 @@ static void @B@_update(sph_body *b, double dt)
         const double *vn = b->work, du = 0.5 * dt;
 //@endif
         double v2 = 0, a2 = 0;
+//@if FRACTURE
+//@if VERLET
+        const double sdn = b->sd[i];
+//@endif
+//@if SYMPLECTIC
+        const double sdn = b->sd_n[i];
+//@endif
+        b->sd[i] = @B@_phase_rate(sdn, b->sdd[i], b->H[i], dt);
+        @B@_phase_move(&b->s[i], &b->sd[i], du);
+//@endif
         for (int k = 0; k < D; k++) {
             const double ak = @B@_free_acc(b, i, k);
             b->v[i * D + k] = vn[i * D + k] + dt * ak;

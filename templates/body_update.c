@@ -10,29 +10,6 @@ static inline double @B@_free_acc(const sph_body *b, int i, int k)
     return b->a[i * @DIM@ + k];
 }
 
-//@if FRACTURE
-/* The phase field's rate over a step of length h from s'_0 with the undamped s'' of the
- * stress pass: s'_1 = s'_0 + h (s'' - gamma s'_1), the damping of eq. 61 taken at the end
- * of the step, gamma = 2 sqrt(4 eps0 H/Gc + 1) c / (2 eps0) (M of eq. 9).  Explicitly it would
- * need h gamma < 2, and gamma grows without bound with the history H of broken material;
- * this form is stable for any h and equals eq. 61 to O(h gamma). */
-static inline double @B@_phase_rate(double sd0, double sdd, double H, double h)
-{
-    const double gamma = sqrt(4 * @EPS0@ * H * (1.0 / @GC@) + 1) * (@C0@ / @EPS0@);
-    return (sd0 + h * sdd) / (1 + h * gamma);
-}
-
-/* A step of the phase field s += h s', kept in [0, 1] (broken to intact); at a bound its
- * rate stops. */
-static inline void @B@_phase_move(double *s, double *sd, double h)
-{
-    const double x = *s + h * *sd;
-    *s = x < 0 ? 0 : x > 1 ? 1 : x;
-    if (x != *s)
-        *sd = 0;
-}
-
-//@endif
 //@if SYMPLECTIC
 /* Symplectic predictor (Alg. 2, step 1): v_{n+1/2} = v_n + dt/2 a_{n-1/2},
  * u_{n+1/2} = u_n + dt/2 v_n; v_n is kept in work for the corrector. */
