@@ -86,6 +86,9 @@ static void @B@_momentum_pass(sph_body *b)
                 pv -= hpi * fv * dv[r];
             }
 //@endif
+//@if HOURGLASS
+            @B@_hourglass(b, i, j, k < 0 ? ~k : k, f);
+//@endif
             for (int r = 0; r < D; r++)
                 fi[r] += f[r];
         }

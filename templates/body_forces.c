@@ -81,10 +81,6 @@ static void @B@_momentum_pass(sph_body *b)
     const double *restrict v = b->v;
     const sph_real *restrict Cv = b->Cv, *restrict gtab = b->gtab;
 //@endif
-//@if HOURGLASS
-    const double *restrict X = b->X, *restrict u = b->u, *restrict Fs = b->F;
-    const sph_real *restrict htab = b->htab;
-//@endif
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < b->n; i++)
         for (int r = 0; r < D; r++)
@@ -148,26 +144,7 @@ static void @B@_momentum_pass(sph_body *b)
                     }
 //@endif
 //@if HOURGLASS
-                    /* Hourglass control (Ganzenmueller 2015): the pair's separation predicted
-                     * by F_i and by F_j, minus the actual one, projected on the current
-                     * direction, is pushed back by a penalty alpha E V_i V_j W / (2 r0^2). */
-                    double Xij[D], xij[D], r2 = 0;
-                    for (int c = 0; c < D; c++) {
-                        Xij[c] = X[j * D + c] - X[i * D + c];
-                        xij[c] = Xij[c] + u[j * D + c] - u[i * D + c];
-                        r2 += xij[c] * xij[c];
-                    }
-                    double delta = 0;
-                    for (int r = 0; r < D; r++) {
-                        double pred = 0;
-                        for (int c = 0; c < D; c++)
-                            pred += (Fs[(size_t)i * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] +
-                                     Fs[(size_t)j * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)]) * Xij[c];
-                        delta += (pred - 2 * xij[r]) * xij[r];
-                    }
-                    const double hg = @HG@ * htab[k] * delta / r2; /* delta/r times 1/r */
-                    for (int r = 0; r < D; r++)
-                        f[r] -= (sph_real)(hg * xij[r]);
+                    @B@_hourglass(b, i, j, k, f);
 //@endif
                     for (int r = 0; r < D; r++) {
                         fi[r] += f[r];

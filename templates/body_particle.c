@@ -110,3 +110,31 @@ SPH_FN void @B@_particle_stress(sph_body *b, int i, const double *A)
         }
 //@endif
 }
+
+//@if HOURGLASS
+/* Hourglass control (Ganzenmueller 2015) of the pair (i, j) with offset table entry k: the
+ * pair's separation predicted by F_i and by F_j, minus the actual one, projected on the
+ * current direction, is pushed back by a penalty alpha E V_i V_j W / (2 r0^2); subtracted
+ * from the pair force f on i (the same from j's side, with the signs of the reversed pair). */
+SPH_FN void @B@_hourglass(const sph_body *b, int i, int j, int k, sph_real *f)
+{
+    enum { D = @DIM@ };
+    double Xij[D], xij[D], r2 = 0;
+    for (int c = 0; c < D; c++) {
+        Xij[c] = b->X[j * D + c] - b->X[i * D + c];
+        xij[c] = Xij[c] + b->u[j * D + c] - b->u[i * D + c];
+        r2 += xij[c] * xij[c];
+    }
+    double delta = 0;
+    for (int r = 0; r < D; r++) {
+        double pred = 0;
+        for (int c = 0; c < D; c++)
+            pred += (b->F[(size_t)i * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] +
+                     b->F[(size_t)j * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)]) * Xij[c];
+        delta += (pred - 2 * xij[r]) * xij[r];
+    }
+    const double hg = @HG@ * b->htab[k] * delta / r2; /* delta/r times 1/r */
+    for (int r = 0; r < D; r++)
+        f[r] -= (sph_real)(hg * xij[r]);
+}
+//@endif
