@@ -255,6 +255,59 @@ static int drawcylinder(XmlCtx *x, const xmlNode *n, int mk)
     return 0;
 }
 
+/* <drawsphere radius="r"><point .../></drawsphere>: the sph sphere; in a 2D case the disc
+ * the sphere cuts from the plane y = pointmin.y. */
+static int drawsphere(XmlCtx *x, const xmlNode *n, int mk)
+{
+    static const char *const attrs[] = {"radius", NULL};
+    static const char *const kids[] = {"point", NULL};
+    SrcLoc loc = xml_loc(x, n);
+    XmlDraw d = {XD_SPHERE, mk, {0}, {0}, {{0}}, 0, NULL, x->freedraw, loc};
+    int bad = xml_check_attrs(x, n, attrs) != 0;
+    bad |= xml_check_children(x, n, kids) != 0;
+    bad |= xml_number(x, n, "radius", 1, &d.r) != 1;
+    int npoints = 0;
+    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
+        if (xml_is(c, "point") && npoints++ == 0)
+            bad |= xml_point(x, c, d.p[0]) != 0;
+    if (bad)
+        return -1;
+    if (npoints != 1) {
+        diag_error(loc, "<drawsphere> needs one <point> (its centre), got %d", npoints);
+        return -1;
+    }
+    if (!(d.r > 0)) {
+        diag_error(loc, "<drawsphere> attribute 'radius': must be positive (got %g)", d.r);
+        return -1;
+    }
+    if (mk < 0) {
+        diag_error(loc, "<drawsphere> comes before any <setmkbound mk=\"...\"/>: it has no mk");
+        return -1;
+    }
+    if (x->dim == 2) { /* the disc in the plane of the case */
+        const double off = x->pmin[1] - d.p[0][1];
+        if (fabs(off) >= d.r) {
+            diag_error(loc, "<drawsphere> does not reach the plane y = %g of this 2D case "
+                            "(pointmin.y == pointmax.y): it holds no particles", x->pmin[1]);
+            return -1;
+        }
+        d.r = sqrt(d.r * d.r - off * off);
+        d.p[0][1] = x->pmin[1];
+    }
+    for (int a = 0; a < 3; a++) {
+        if (x->dim == 2 && a == 1)
+            continue;
+        if (node_span(x, a, d.p[0][a] - d.r, d.p[0][a] + d.r, &d.lo[a], &d.hi[a])) {
+            diag_error(loc, "<drawsphere> lies outside the domain of <definition> along %c: it "
+                            "holds no particles", "xyz"[a]);
+            return -1;
+        }
+    }
+    x->draws = xml_grow(x->draws, x->ndraws + 1, sizeof *x->draws);
+    x->draws[x->ndraws++] = d;
+    return 0;
+}
+
 /* <setfrdrawmode auto="true|false"/>: GenCase's free drawing mode. */
 static int setfrdrawmode(XmlCtx *x, const xmlNode *n)
 {
@@ -320,7 +373,8 @@ static int drawfile(XmlCtx *x, const xmlNode *n, int mk)
 static int unsupported_drawing(const XmlCtx *x, const xmlNode *n)
 {
     diag_error(xml_loc(x, n), "<%s>: this drawing command is not supported by the importer yet "
-                              "(<drawbox>, <drawcylinder>, <drawfilevtk> and <drawfilestl> are)",
+                              "(<drawbox>, <drawcylinder>, <drawsphere>, <drawfilevtk> and "
+                              "<drawfilestl> are)",
                xml_name(n));
     return -1;
 }
@@ -346,6 +400,8 @@ static int command(XmlCtx *x, const xmlNode *n, int *mk)
         return drawbox(x, n, *mk);
     if (xml_is(n, "drawcylinder"))
         return drawcylinder(x, n, *mk);
+    if (xml_is(n, "drawsphere"))
+        return drawsphere(x, n, *mk);
     if (xml_is(n, "drawfilevtk") || xml_is(n, "drawfilestl"))
         return drawfile(x, n, *mk);
     if (xml_is(n, "setfrdrawmode"))

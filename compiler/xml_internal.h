@@ -22,13 +22,15 @@
 
 /* One drawing of the mainlist.  lo..hi: the GenCase lattice nodes a <drawbox> covers, per
  * axis, or those of the bounding box of another drawing (inclusive; in 2D y is 0..0). */
-typedef enum { XD_BOX, XD_CYLINDER, XD_SURFACE } XmlDrawKind;
+typedef enum { XD_BOX, XD_CYLINDER, XD_SURFACE, XD_SPHERE } XmlDrawKind;
 
 typedef struct {
     XmlDrawKind kind;
     int mk;
     long lo[3], hi[3];        /* a surface: the whole domain (its file is read later) */
-    double p[2][3], r;        /* <drawcylinder>: the ends of its axis and its radius */
+    double p[2][3], r;        /* <drawcylinder>: the ends of its axis and its radius;
+                                 <drawsphere>: its centre (p[0]) and radius (in a 2D case
+                                 the disc it cuts from the plane of the case) */
     const char *file;         /* <drawfilevtk>, <drawfilestl>: the file, as written */
     int freedraw;             /* drawn in GenCase's free drawing mode (<setfrdrawmode>) */
     SrcLoc loc;

@@ -2,7 +2,8 @@
  * geometry of a `near`.
  *
  * A <drawbox> is the sph box around the nodes it covers, [first node - dp/2, last node +
- * dp/2] (xml_geometry.c), a <drawcylinder> the sph cylinder as drawn, a <drawfilevtk> or
+ * dp/2] (xml_geometry.c), a <drawcylinder> or <drawsphere> the sph cylinder or sphere as
+ * drawn (a 2D case's sphere: the disc in its plane), a <drawfilevtk> or
  * <drawfilestl> the sph surface of its file.  A later drawing with another mk takes its
  * nodes over from the earlier ones, so the shape of an mk is its drawings in drawing order
  * less the later drawings of other mks that overlap them.
@@ -65,6 +66,14 @@ static ShapeExpr *cylinder_shape(const double a[3], const double b[3], double r,
     return ast_shape_prim(call);
 }
 
+static ShapeExpr *sphere_shape(const XmlDraw *d)
+{
+    NamedCall call = {ast_strdup("sphere"), d->loc, {0}};
+    ast_push_setting(&call.args, ast_setting(d->loc, "center", vec3(d->loc, d->p[0])));
+    ast_push_setting(&call.args, ast_setting(d->loc, "radius", ast_num(d->loc, d->r)));
+    return ast_shape_prim(call);
+}
+
 static ShapeExpr *surface_shape(const XmlDraw *d)
 {
     NamedCall call = {ast_strdup("surface"), d->loc, {0}};
@@ -78,6 +87,8 @@ static ShapeExpr *draw_shape(const XmlCtx *x, const XmlDraw *d)
         return cylinder_shape(d->p[0], d->p[1], d->r, d->loc);
     if (d->kind == XD_SURFACE)
         return surface_shape(d);
+    if (d->kind == XD_SPHERE)
+        return sphere_shape(d);
     return box_shape(x, d);
 }
 
