@@ -1,4 +1,5 @@
-/* emit_c.c — the generated program for the CPU (OpenMP) target.
+/* emit_c.c — the generated program for the CPU (OpenMP) target, and the pieces the CUDA
+ * target shares with it (emit_internal.h, emit_cuda.c).
  *
  * Layout of model.c: constants and user functions; per body its material law, body
  * forces, boundary conditions and update (filled from templates/); the scene's step;
@@ -13,21 +14,15 @@
 #include "plan.h"
 #include "source.h"
 #include "template.h"
+#include "emit_internal.h"
 
-typedef struct {
-    const Model *m;
-    const BodyPlan *plans;
-    const char *templates;
-    FILE *out;
-    int cuda;           /* the CUDA target (model.cu): device passes, SPH_FOR loops */
-} Emitter;
 
-static const char *line_of(SrcLoc loc)
+static const char *emit_line_of(SrcLoc loc)
 {
     return source_line_trimmed(loc.file, loc.line);
 }
 
-static void header(Emitter *E)
+void emit_header(Emitter *E)
 {
     const Model *m = E->m;
     int fracture = 0;
@@ -95,7 +90,7 @@ static int const_used(const Model *m, const char *name)
     return 0;
 }
 
-static void constants_and_functions(Emitter *E)
+void emit_consts_fns(Emitter *E)
 {
     const Model *m = E->m;
     for (int i = 0; i < m->nconsts; i++)
@@ -105,7 +100,7 @@ static void constants_and_functions(Emitter *E)
     for (int i = 0; i < m->nfns; i++) {
         const FnDef *f = &m->fns[i];
         fprintf(E->out, "\n/* %s:%d: %s */\nSPH_FN double f_%s(", source_basename(f->loc.file),
-                f->loc.line, line_of(f->loc), f->name);
+                f->loc.line, emit_line_of(f->loc), f->name);
         for (int k = 0; k < f->nparams; k++)
             fprintf(E->out, "%sdouble a_%s", k ? ", " : "", f->params[k]);
         if (!f->nparams)
@@ -119,7 +114,7 @@ static void constants_and_functions(Emitter *E)
         fputs("\n", E->out);
 }
 
-static void material(Emitter *E, const BodyModel *b, const BodyPlan *p)
+void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
 {
     FILE *out = E->out;
     fprintf(out, "/* ==== body %s ==== */\n\n/* Material law '%s' (%s:%d), constants folded:",
@@ -159,7 +154,7 @@ static void material(Emitter *E, const BodyModel *b, const BodyPlan *p)
     fputs("}\n\n", out);
 }
 
-static void fill_template(Emitter *E, const char *file, const BodyModel *b, const BodyPlan *p)
+void emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyPlan *p)
 {
     TplEnv env = {0};
     tpl_set(&env, "B", "%s", b->name);
@@ -219,7 +214,7 @@ static int compact(int dim, int axis)
     return dim == 2 ? axis / 2 : axis;
 }
 
-static void bc_value_functions(Emitter *E, const BodyModel *b)
+void emit_bc_values(Emitter *E, const BodyModel *b)
 {
     for (int k = 0; k < b->nbcs; k++) {
         const BcModel *bc = &b->bcs[k];
@@ -228,7 +223,7 @@ static void bc_value_functions(Emitter *E, const BodyModel *b)
         char fname[160];
         snprintf(fname, sizeof fname, "%s_bc%d", b->name, k);
         fprintf(E->out, "/* %s:%d: %s */\n", source_basename(bc->loc.file), bc->loc.line,
-                line_of(bc->loc));
+                emit_line_of(bc->loc));
         emit_value_function(E->out, E->m, fname, bc->value);
         fputs("\n", E->out);
     }
@@ -290,7 +285,7 @@ static int window_open(Emitter *E, const BcModel *bc, int k, int at_middle)
 }
 
 /* One pass over the whole body for the BCs without `near`, then one loop per `near` list. */
-static void bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
+void emit_bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
 {
     FILE *out = E->out;
     int vel = kind == BC_VELOCITY;
@@ -361,7 +356,7 @@ static void bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
 /* ------------------------------------------------------------------ the scene */
 
 /* A body's part of the step up to its internal forces (Alg. 1-2)... */
-static void step_forces(Emitter *E, int i)
+void emit_step_forces(Emitter *E, int i)
 {
     const char *n = E->m->bodies[i].name;
     const BodyPlan *p = &E->plans[i];
@@ -373,7 +368,7 @@ static void step_forces(Emitter *E, int i)
 }
 
 /* ... and from its force boundary conditions to the end. */
-static void step_update(Emitter *E, int i)
+void emit_step_update(Emitter *E, int i)
 {
     const char *n = E->m->bodies[i].name;
     const BodyPlan *p = &E->plans[i];
@@ -401,71 +396,25 @@ static void scene_step(Emitter *E)
     if (!model_has_contact(m))
         for (int i = 0; i < m->nbodies; i++) {
             fprintf(out, "    {\n        sph_body *b = &s->bodies[%d];\n", i);
-            step_forces(E, i);
-            step_update(E, i);
+            emit_step_forces(E, i);
+            emit_step_update(E, i);
             fputs("    }\n", out);
         }
     else { /* contact needs every body's positions at the same time level */
         for (int i = 0; i < m->nbodies; i++) {
             fprintf(out, "    {\n        sph_body *b = &s->bodies[%d];\n", i);
-            step_forces(E, i);
+            emit_step_forces(E, i);
             fputs("    }\n", out);
         }
         fputs("    sph_contact_forces(s, dt); /* between the bodies: adds to their a */\n", out);
         for (int i = 0; i < m->nbodies; i++) {
             fprintf(out, "    {\n        sph_body *b = &s->bodies[%d];\n", i);
-            step_update(E, i);
+            emit_step_update(E, i);
             fputs("    }\n", out);
         }
     }
     fputs("    (void)t;\n}\n\n", out);
     fputs("/* Cauchy stress of every particle, for output. */\n"
-          "static void model_stress_output(sph_sim *s)\n{\n", out);
-    for (int i = 0; i < m->nbodies; i++)
-        fprintf(out, "    %s_stress_output(&s->bodies[%d]);\n", m->bodies[i].name, i);
-    fputs("}\n\n", out);
-}
-
-/* The scene's step for the CUDA target: every body's passes on its device view. */
-static void scene_step_cuda(Emitter *E)
-{
-    const Model *m = E->m;
-    FILE *out = E->out;
-    fprintf(out, "/* The bodies' device views (runtime/sph_cuda.h), made at the first device pass. */\n"
-                 "static sph_body *DEV[%d];\n\n"
-                 "static void model_upload(sph_sim *s)\n{\n    if (DEV[0])\n        return;\n"
-                 "    for (int i = 0; i < %d; i++)\n        DEV[i] = sph_cuda_body(&s->bodies[i]);\n}\n\n",
-            m->nbodies, m->nbodies);
-    fputs("/* Velocity boundary conditions at time t, on the device (the initial conditions: the\n"
-          " * host copy follows for the runtime's first look). */\n"
-          "static void model_velocity_bcs(sph_sim *s, double t)\n{\n    model_upload(s);\n", out);
-    for (int i = 0; i < m->nbodies; i++)
-        if (E->plans[i].velocity_bcs)
-            fprintf(out, "    %s_velocity_bcs(DEV[%d], t, s->dt);\n", m->bodies[i].name, i);
-    for (int i = 0; i < m->nbodies; i++)
-        fprintf(out, "    sph_cuda_to_host(&s->bodies[%d], DEV[%d]);\n", i, i);
-    fputs("    (void)t;\n}\n\n", out);
-    fprintf(out, "/* One time step of every body on the device: %s.  The host waits at its end for\n"
-                 " * the reductions the next time step needs (eq. 64-66). */\n"
-                 "static void model_step(sph_sim *s, double dt)\n{\n    const double t = s->t;\n",
-            m->integrator == INTEGRATOR_SYMPLECTIC ? "symplectic predictor-corrector (Alg. 2)"
-                                                    : "Verlet (Alg. 1)");
-    for (int i = 0; i < m->nbodies; i++) {
-        fprintf(out, "    {\n        sph_body *b = DEV[%d];\n", i);
-        step_forces(E, i);
-        step_update(E, i);
-        fputs("    }\n", out);
-    }
-    fputs("    SPH_CUDA_CHECK(cudaGetLastError());\n    SPH_CUDA_CHECK(cudaDeviceSynchronize());\n", out);
-    for (int i = 0; i < m->nbodies; i++)
-        fprintf(out, "    s->bodies[%d].vmax2 = DEV[%d]->vmax2;\n"
-                     "    s->bodies[%d].amax2 = DEV[%d]->amax2;\n", i, i, i, i);
-    fputs("    (void)t;\n}\n\n", out);
-    fputs("/* The device state into the host bodies, for the runtime to read. */\n"
-          "static void model_sync_host(sph_sim *s)\n{\n", out);
-    for (int i = 0; i < m->nbodies; i++)
-        fprintf(out, "    sph_cuda_to_host(&s->bodies[%d], DEV[%d]);\n", i, i);
-    fputs("}\n\n/* Cauchy stress of every particle, for output (from the host copy). */\n"
           "static void model_stress_output(sph_sim *s)\n{\n", out);
     for (int i = 0; i < m->nbodies; i++)
         fprintf(out, "    %s_stress_output(&s->bodies[%d]);\n", m->bodies[i].name, i);
@@ -610,7 +559,7 @@ static void reference_table(Emitter *E, const ExpectModel *x, int i)
 {
     FILE *out = E->out;
     fprintf(out, "/* %s:%d: %s\n * %d rows of %s */\n", source_basename(x->loc.file), x->loc.line,
-            line_of(x->loc), x->ref_n, source_basename(x->ref_file));
+            emit_line_of(x->loc), x->ref_n, source_basename(x->ref_file));
     for (int col = 0; col < 2; col++) {
         const double *v = col ? x->ref_v : x->ref_t;
         fprintf(out, "static const double reference%d_%c[%d] = {", i, col ? 'v' : 't', x->ref_n);
@@ -635,7 +584,7 @@ static void expects(Emitter *E)
             EmitScope s = {m, (char **)t_only, 1, ""};
             fprintf(out, "/* %s:%d: %s */\nstatic double reference%d(double t)\n{\n    return ",
                     source_basename(m->expects[i].loc.file), m->expects[i].loc.line,
-                    line_of(m->expects[i].loc), i);
+                    emit_line_of(m->expects[i].loc), i);
             emit_expr(out, &s, m->expects[i].reference);
             fputs(";\n}\n\n", out);
         }
@@ -650,7 +599,7 @@ static void expects(Emitter *E)
         if (x->kind == EXPECT_REFERENCE)
             snprintf(ref, sizeof ref, "reference%d", i);
         fprintf(out, "    {%s, \"", kinds[x->kind]);
-        for (const char *c = line_of(x->loc); *c; c++)
+        for (const char *c = emit_line_of(x->loc); *c; c++)
             fprintf(out, *c == '"' || *c == '\\' ? "\\%c" : "%c", *c);
         fprintf(out, "\", %d, %d, %d, %.17g, %.17g, %s},\n", x->body, x->measure, x->quantity,
                 x->value, x->tolerance, ref);
@@ -658,7 +607,7 @@ static void expects(Emitter *E)
     fputs("};\n\n", out);
 }
 
-static void model_desc(Emitter *E)
+void emit_model_desc(Emitter *E)
 {
     const Model *m = E->m;
     FILE *out = E->out;
@@ -698,65 +647,26 @@ int emit_c_program(const Model *m, const char *templates_dir, FILE *out)
         return -1;
     }
     Emitter E = {m, plans, templates_dir, out, 0};
-    header(&E);
-    constants_and_functions(&E);
+    emit_header(&E);
+    emit_consts_fns(&E);
     for (int i = 0; i < m->nbodies; i++) {
         const BodyModel *b = &m->bodies[i];
-        material(&E, b, &plans[i]);
+        emit_material(&E, b, &plans[i]);
         gravity(&E, b, &plans[i]);
-        fill_template(&E, "body_particle.c", b, &plans[i]);
-        fill_template(&E, "body_forces.c", b, &plans[i]);
-        bc_value_functions(&E, b);
+        emit_template(&E, "body_particle.c", b, &plans[i]);
+        emit_template(&E, "body_forces.c", b, &plans[i]);
+        emit_bc_values(&E, b);
         if (plans[i].velocity_bcs)
-            bc_pass(&E, b, BC_VELOCITY);
+            emit_bc_pass(&E, b, BC_VELOCITY);
         if (plans[i].force_bcs)
-            bc_pass(&E, b, BC_FORCE);
-        fill_template(&E, "body_update.c", b, &plans[i]);
+            emit_bc_pass(&E, b, BC_FORCE);
+        emit_template(&E, "body_update.c", b, &plans[i]);
         emit_fracture_restrict(out, E.m, b, 0);
     }
     scene_step(&E);
-    model_desc(&E);
+    emit_model_desc(&E);
     for (int i = 0; i < m->nbodies; i++)
         sg_free(&plans[i].law);
     free(plans);
     return 0;
-}
-
-/* What the CUDA target does not run yet: contact (its search and pair forces are host code). */
-static int cuda_unsupported(const Model *m)
-{
-    if (!model_has_contact(m))
-        return 0;
-    diag_error(m->bodies[1].loc, "contact between bodies is not supported by the cuda target yet "
-                                 "(use --target cpu, or `contact 0`)");
-    return -1;
-}
-
-int emit_cuda_program(const Model *m, const char *templates_dir, FILE *out)
-{
-    BodyPlan *plans = calloc((size_t)m->nbodies, sizeof *plans);
-    int rc = lower_model(m, plans) || cuda_unsupported(m) ? -1 : 0;
-    if (!rc) {
-        Emitter E = {m, plans, templates_dir, out, 1};
-        header(&E);
-        constants_and_functions(&E);
-        for (int i = 0; i < m->nbodies; i++) {
-            const BodyModel *b = &m->bodies[i];
-            material(&E, b, &plans[i]);
-            fill_template(&E, "body_particle.c", b, &plans[i]);
-            fill_template(&E, "body_cuda.cu", b, &plans[i]);
-            bc_value_functions(&E, b);
-            if (plans[i].velocity_bcs)
-                bc_pass(&E, b, BC_VELOCITY);
-            if (plans[i].force_bcs)
-                bc_pass(&E, b, BC_FORCE);
-            emit_fracture_restrict(out, m, b, 1);
-        }
-        scene_step_cuda(&E);
-        model_desc(&E);
-    }
-    for (int i = 0; i < m->nbodies; i++)
-        sg_free(&plans[i].law);
-    free(plans);
-    return rc;
 }

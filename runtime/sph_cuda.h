@@ -138,7 +138,6 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->L = (double *)sph_dev_copy(h->L, n * d * d * sizeof(double));
     b->Q = (sph_real *)sph_dev_copy(h->Q, n * d * d * sizeof(sph_real));
     b->Cv = (sph_real *)sph_dev_copy(h->Cv, n * d * d * sizeof(sph_real));
-    b->A = (sph_real *)sph_dev_copy(h->A, n * d * d * sizeof(sph_real));
     b->psi = (double *)sph_dev_copy(h->psi, n * sizeof(double));
     b->fix = (uint8_t *)sph_dev_copy(h->fix, n);
     b->state = (double *)sph_dev_copy(h->state, n * (size_t)h->desc->nstate * sizeof(double));
@@ -171,6 +170,7 @@ static sph_body *sph_cuda_body(const sph_body *h)
     }
     /* host-only or not yet on the device: never read there */
     b->hb_start = b->hb = b->hb_k = b->stripe = NULL;
+    b->A = NULL; /* the device sums A per particle, in registers */
     b->nb_start = b->nb = b->nb_k = NULL;
     b->sigma = NULL, b->ms_list = NULL, b->ms_count = NULL;
     SPH_CUDA_CHECK(cudaDeviceSynchronize());

@@ -1,0 +1,98 @@
+/* emit_cuda.c — the generated program for the CUDA target (model.cu, docs/architecture.md).
+ *
+ * The same constants, laws, boundary-condition passes and scene description as the CPU
+ * target (emit_c.c, emit_internal.h); the body passes come from templates/body_cuda.cu and
+ * the per-particle code both targets share from templates/body_particle.c.  The scene's step
+ * runs every body's passes on its device view (runtime/sph_cuda.h). */
+#include <stdlib.h>
+
+#include "diag.h"
+#include "emit.h"
+#include "emit_fracture.h"
+#include "emit_internal.h"
+
+/* The scene's step for the CUDA target: every body's passes on its device view. */
+static void scene_step_cuda(Emitter *E)
+{
+    const Model *m = E->m;
+    FILE *out = E->out;
+    fprintf(out, "/* The bodies' device views (runtime/sph_cuda.h), made at the first device pass. */\n"
+                 "static sph_body *DEV[%d];\n\n"
+                 "static void model_upload(sph_sim *s)\n{\n    if (DEV[0])\n        return;\n"
+                 "    for (int i = 0; i < %d; i++)\n        DEV[i] = sph_cuda_body(&s->bodies[i]);\n}\n\n",
+            m->nbodies, m->nbodies);
+    fputs("/* Velocity boundary conditions at time t, on the device (the initial conditions: the\n"
+          " * host copy follows for the runtime's first look). */\n"
+          "static void model_velocity_bcs(sph_sim *s, double t)\n{\n    model_upload(s);\n", out);
+    for (int i = 0; i < m->nbodies; i++)
+        if (E->plans[i].velocity_bcs)
+            fprintf(out, "    %s_velocity_bcs(DEV[%d], t, s->dt);\n", m->bodies[i].name, i);
+    for (int i = 0; i < m->nbodies; i++)
+        fprintf(out, "    sph_cuda_to_host(&s->bodies[%d], DEV[%d]);\n", i, i);
+    fputs("    (void)t;\n}\n\n", out);
+    fprintf(out, "/* One time step of every body on the device: %s.  The host waits at its end for\n"
+                 " * the reductions the next time step needs (eq. 64-66). */\n"
+                 "static void model_step(sph_sim *s, double dt)\n{\n    const double t = s->t;\n",
+            m->integrator == INTEGRATOR_SYMPLECTIC ? "symplectic predictor-corrector (Alg. 2)"
+                                                    : "Verlet (Alg. 1)");
+    for (int i = 0; i < m->nbodies; i++) {
+        fprintf(out, "    {\n        sph_body *b = DEV[%d];\n", i);
+        emit_step_forces(E, i);
+        emit_step_update(E, i);
+        fputs("    }\n", out);
+    }
+    fputs("    SPH_CUDA_CHECK(cudaGetLastError());\n    SPH_CUDA_CHECK(cudaDeviceSynchronize());\n", out);
+    for (int i = 0; i < m->nbodies; i++)
+        fprintf(out, "    s->bodies[%d].vmax2 = DEV[%d]->vmax2;\n"
+                     "    s->bodies[%d].amax2 = DEV[%d]->amax2;\n", i, i, i, i);
+    fputs("    (void)t;\n}\n\n", out);
+    fputs("/* The device state into the host bodies, for the runtime to read. */\n"
+          "static void model_sync_host(sph_sim *s)\n{\n", out);
+    for (int i = 0; i < m->nbodies; i++)
+        fprintf(out, "    sph_cuda_to_host(&s->bodies[%d], DEV[%d]);\n", i, i);
+    fputs("}\n\n/* Cauchy stress of every particle, for output (from the host copy). */\n"
+          "static void model_stress_output(sph_sim *s)\n{\n", out);
+    for (int i = 0; i < m->nbodies; i++)
+        fprintf(out, "    %s_stress_output(&s->bodies[%d]);\n", m->bodies[i].name, i);
+    fputs("}\n\n", out);
+}
+
+
+/* What the CUDA target does not run yet: contact (its search and pair forces are host code). */
+static int cuda_unsupported(const Model *m)
+{
+    if (!model_has_contact(m))
+        return 0;
+    diag_error(m->bodies[1].loc, "contact between bodies is not supported by the cuda target yet "
+                                 "(use --target cpu, or `contact 0`)");
+    return -1;
+}
+
+int emit_cuda_program(const Model *m, const char *templates_dir, FILE *out)
+{
+    BodyPlan *plans = calloc((size_t)m->nbodies, sizeof *plans);
+    int rc = lower_model(m, plans) || cuda_unsupported(m) ? -1 : 0;
+    if (!rc) {
+        Emitter E = {m, plans, templates_dir, out, 1};
+        emit_header(&E);
+        emit_consts_fns(&E);
+        for (int i = 0; i < m->nbodies; i++) {
+            const BodyModel *b = &m->bodies[i];
+            emit_material(&E, b, &plans[i]);
+            emit_template(&E, "body_particle.c", b, &plans[i]);
+            emit_template(&E, "body_cuda.cu", b, &plans[i]);
+            emit_bc_values(&E, b);
+            if (plans[i].velocity_bcs)
+                emit_bc_pass(&E, b, BC_VELOCITY);
+            if (plans[i].force_bcs)
+                emit_bc_pass(&E, b, BC_FORCE);
+            emit_fracture_restrict(out, m, b, 1);
+        }
+        scene_step_cuda(&E);
+        emit_model_desc(&E);
+    }
+    for (int i = 0; i < m->nbodies; i++)
+        sg_free(&plans[i].law);
+    free(plans);
+    return rc;
+}
