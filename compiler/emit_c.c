@@ -661,6 +661,7 @@ int emit_c_program(const Model *m, const char *templates_dir, FILE *out)
         if (plans[i].force_bcs)
             emit_bc_pass(&E, b, BC_FORCE);
         emit_template(&E, "body_update.c", b, &plans[i]);
+        emit_template(&E, "body_output.c", b, &plans[i]);
         emit_fracture_restrict(out, E.m, b, 0);
     }
     scene_step(&E);

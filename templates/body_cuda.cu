@@ -107,33 +107,6 @@ static void @B@_forces(sph_body *b)
     @B@_momentum_pass(b);
 }
 
-/* Cauchy stress sigma = F S F^T / J for output, on the host from the host copy of F. */
-static void @B@_stress_output(sph_body *b)
-{
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < b->n; i++) {
-        const double *F = b->F + (size_t)i * 9;
-        double S[9], e, FS[9], sig[9];
-//@if FRACTURE
-        double ep;
-        @B@_material(F, b->s[i], S, &e, &ep);
-//@endif
-//@if STATE
-        double st_new[@NSTATE@]; /* the state as the last step left it: not advanced here */
-        @B@_material(F, b->state + (size_t)i * @NSTATE@, st_new, S, &e);
-//@endif
-//@if PLAIN_LAW
-        @B@_material(F, S, &e);
-//@endif
-        sph_mat3_mul(F, S, FS);
-        sph_mat3_mul_bt(FS, F, sig);
-        const double J = sph_det3(F);
-        static const int idx[6] = {0, 4, 8, 1, 5, 2};
-        for (int k = 0; k < 6; k++)
-            b->sigma[(size_t)i * 6 + k] = sig[idx[k]] / J;
-    }
-}
-
 /* ---- body @B@: time integration on the device ----------------------------------------- */
 SPH_FN double @B@_free_acc(const sph_body *b, int i, int k)
 {
