@@ -5,12 +5,17 @@
  *  - SPH_FOR(i, n, { body }): the loop over particles of the generated passes, a device
  *    lambda run by one thread per particle (the CPU target writes the same body in an
  *    OpenMP loop); SPH_ONCE({ body }) the same on one thread.
- *  - The device view of a body: a copy of the host sph_body in managed memory whose arrays
- *    live on the device, so the generated code reads `b->u[...]` on either side.  The set-up
- *    (particles, pairs, kernel gradients, selections) stays on the host and is copied once;
- *    full pair lists (fb_*) replace the half lists, so that every thread sums the pairs of its
- *    own particle without atomics.
- *  - sph_cuda_to_host: the state back into the host body, when the runtime reads it.
+ *  - SPH_FOR_MAX2(i, n, out, { ...; return sph_max2{x, y}; }): the same loop that also
+ *    reduces out[0] = max x and out[1] = max y (x, y >= 0) per block, then once per block
+ *    with an atomic: the |v|^2 and |a|^2 bounds of the time step (eq. 65-66).
+ *  - The device view of a body: a copy of the host sph_body in managed memory, marked read
+ *    mostly so that host and device each keep a copy of its page, whose arrays live in device
+ *    memory; the generated code reads `b->u[...]` on either side and the device writes only
+ *    arrays (its sums go to b->red).  The set-up (particles, pairs, kernel gradients,
+ *    selections) stays on the host and is copied once; full pair lists (fb_*) replace the half
+ *    lists, so that every thread sums the pairs of its own particle without atomics.
+ *  - sph_cuda_reductions: the step's sums back into the host body, the one wait of a step;
+ *    sph_cuda_to_host: the state too, when the runtime reads it.
  *  - With SPH_CUDA_EMULATE the host compiler builds model.cu as C++ with the passes run
  *    serially on host memory: how the tests check the target's code without a GPU. */
 #ifndef SPH_CUDA_H
@@ -18,6 +23,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <algorithm>
 #include <cstring>
 
 #ifdef SPH_CUDA_EMULATE
@@ -40,11 +46,18 @@ static inline cudaError_t cudaMemcpy(void *d, const void *s, size_t n, int)
     memcpy(d, s, n);
     return cudaSuccess;
 }
+static inline cudaError_t cudaMemset(void *d, int v, size_t n)
+{
+    memset(d, v, n);
+    return cudaSuccess;
+}
 static inline cudaError_t cudaDeviceSynchronize() { return cudaSuccess; }
 static inline cudaError_t cudaGetLastError() { return cudaSuccess; }
 static inline void atomicAdd(double *a, double v) { *a += v; }
 #endif
 
+/* Q and Cv entry by entry on the device (sphrt.h): particle i's entry e at e*n + i. */
+#define SPH_AT(i, e, m, n) ((size_t)(e) * (size_t)(n) + (size_t)(i))
 #include "sphrt.h"
 
 #define SPH_CUDA_CHECK(call)                                                                   \
@@ -55,6 +68,14 @@ static inline void atomicAdd(double *a, double v) { *a += v; }
             exit(5);                                                                           \
         }                                                                                      \
     } while (0)
+
+/* The device's sums of a body, b->red[SPH_RED_*]. */
+enum { SPH_RED_VMAX2, SPH_RED_AMAX2, SPH_RED_VISC_RATE, SPH_RED_VISC_DISSIPATED, SPH_NRED };
+
+/* What an SPH_FOR_MAX2 body returns: two non-negative values to take the maxima of. */
+struct sph_max2 {
+    double x, y;
+};
 
 #ifndef SPH_CUDA_EMULATE
 template <class F> __global__ void sph_for_kernel(int n, F f)
@@ -74,6 +95,47 @@ __device__ static inline void sph_atomic_max_pos(double *a, double v)
 {
     atomicMax((unsigned long long *)a, (unsigned long long)__double_as_longlong(v));
 }
+
+/* The maxima of a warp's values, in every lane. */
+__device__ static inline sph_max2 sph_warp_max2(sph_max2 m)
+{
+    for (int o = 16; o > 0; o >>= 1) {
+        m.x = fmax(m.x, __shfl_xor_sync(0xffffffffu, m.x, o));
+        m.y = fmax(m.y, __shfl_xor_sync(0xffffffffu, m.y, o));
+    }
+    return m;
+}
+
+/* Every thread runs the loop (so whole warps reach the shuffles), then warp and block
+ * maxima, then one atomic per block. */
+template <class F> __global__ void sph_for_max2_kernel(int n, double *out, F f)
+{
+    sph_max2 m = {0, 0};
+    for (int i = blockIdx.x * blockDim.x + threadIdx.x; i < n; i += blockDim.x * gridDim.x) {
+        const sph_max2 r = f(i);
+        m.x = fmax(m.x, r.x), m.y = fmax(m.y, r.y);
+    }
+    __shared__ sph_max2 warp[32];
+    const int lane = threadIdx.x & 31, w = threadIdx.x >> 5;
+    m = sph_warp_max2(m);
+    if (lane == 0)
+        warp[w] = m;
+    __syncthreads();
+    if (w)
+        return;
+    const sph_max2 zero = {0, 0};
+    m = sph_warp_max2(lane < (int)(blockDim.x >> 5) ? warp[lane] : zero);
+    if (lane == 0) {
+        sph_atomic_max_pos(&out[0], m.x);
+        sph_atomic_max_pos(&out[1], m.y);
+    }
+}
+
+template <class F> static void sph_for_max2(int n, double *out, F f)
+{
+    if (n > 0)
+        sph_for_max2_kernel<<<(n + 255) / 256, 256>>>(n, out, f);
+}
 #else
 template <class F> static void sph_for(int n, F f)
 {
@@ -81,10 +143,19 @@ template <class F> static void sph_for(int n, F f)
         f(i);
 }
 
-static inline void sph_atomic_max_pos(double *a, double v) { *a = v > *a ? v : *a; }
+template <class F> static void sph_for_max2(int n, double *out, F f)
+{
+    for (int i = 0; i < n; i++) {
+        const sph_max2 r = f(i);
+        out[0] = r.x > out[0] ? r.x : out[0];
+        out[1] = r.y > out[1] ? r.y : out[1];
+    }
+}
 #endif
 
 #define SPH_FOR(i, n, ...) sph_for((n), [=] __device__(int i) __VA_ARGS__)
+#define SPH_FOR_MAX2(i, n, out, ...) \
+    sph_for_max2((n), (out), [=] __device__(int i) -> sph_max2 __VA_ARGS__)
 /* One thread: the body's scalars (reductions reset, sums advanced) in stream order. */
 #define SPH_ONCE(...) sph_for(1, [=] __device__(int) __VA_ARGS__)
 
@@ -99,27 +170,66 @@ static void *sph_dev_copy(const void *h, size_t bytes)
     return d;
 }
 
-/* Full pair lists from the half lists (j > i): i gets (j, k), j gets (i, ~k). */
-static void sph_full_lists(const sph_body *h, int **start, int **nb, int **k)
+/* Managed memory that host and device only read from now on: each keeps its own copy. */
+static void sph_read_mostly(const void *p, size_t bytes)
 {
-    const int n = h->n;
-    *start = (int *)calloc((size_t)n + 1, sizeof(int));
-    for (int i = 0; i < n; i++)
+#ifndef SPH_CUDA_EMULATE
+#if CUDART_VERSION >= 13000
+    cudaMemLocation where = {};
+    where.type = cudaMemLocationTypeDevice; /* (ignored for this advice) */
+    SPH_CUDA_CHECK(cudaGetDevice(&where.id));
+    SPH_CUDA_CHECK(cudaMemAdvise(p, bytes, cudaMemAdviseSetReadMostly, where));
+#else
+    int dev;
+    SPH_CUDA_CHECK(cudaGetDevice(&dev));
+    SPH_CUDA_CHECK(cudaMemAdvise(p, bytes, cudaMemAdviseSetReadMostly, dev));
+#endif
+#else
+    (void)p, (void)bytes;
+#endif
+}
+
+/* Full pair lists from the half lists (j > i): i gets (j, k), j gets (i, ~k); each particle's
+ * pairs sorted by offset, then laid out slot by slot (sphrt.h, fb_*).  A pair is packed as
+ * key << 32 | j, key = 2k or 2~k + 1 (every offset its own key), so that sorting the packed
+ * words sorts by offset. */
+static void sph_full_lists(const sph_body *h, int **count, int **nb, int **k, int *slots)
+{
+    const size_t n = (size_t)h->n;
+    size_t *start = (size_t *)calloc(n + 1, sizeof(size_t));
+    for (size_t i = 0; i < n; i++)
         for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++)
-            (*start)[i + 1]++, (*start)[h->hb[p] + 1]++;
-    for (int i = 0; i < n; i++)
-        (*start)[i + 1] += (*start)[i];
-    *nb = (int *)malloc(((size_t)(*start)[n] + 1) * sizeof(int));
-    *k = (int *)malloc(((size_t)(*start)[n] + 1) * sizeof(int));
-    int *fill = (int *)malloc(((size_t)n + 1) * sizeof(int));
-    memcpy(fill, *start, (size_t)n * sizeof(int));
-    for (int i = 0; i < n; i++)
+            start[i + 1]++, start[h->hb[p] + 1]++;
+    *count = (int *)malloc((n + 1) * sizeof(int));
+    int maxc = 0;
+    for (size_t i = 0; i < n; i++) {
+        (*count)[i] = (int)start[i + 1];
+        maxc = (int)start[i + 1] > maxc ? (int)start[i + 1] : maxc;
+        start[i + 1] += start[i];
+    }
+    uint64_t *packed = (uint64_t *)malloc((start[n] + 1) * sizeof(uint64_t));
+    size_t *fill = (size_t *)malloc((n + 1) * sizeof(size_t));
+    memcpy(fill, start, n * sizeof(size_t));
+    for (size_t i = 0; i < n; i++)
         for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++) {
-            const int j = h->hb[p];
-            (*nb)[fill[i]] = j, (*k)[fill[i]++] = h->hb_k[p];
-            (*nb)[fill[j]] = i, (*k)[fill[j]++] = ~h->hb_k[p];
+            const uint64_t j = (uint64_t)h->hb[p], key = 2 * (uint64_t)h->hb_k[p];
+            packed[fill[i]++] = key << 32 | j;
+            packed[fill[j]++] = (key + 1) << 32 | i;
         }
     free(fill);
+    *slots = maxc;
+    *nb = (int *)calloc((size_t)maxc * n + 1, sizeof(int));
+    *k = (int *)calloc((size_t)maxc * n + 1, sizeof(int));
+#pragma omp parallel for schedule(dynamic, 1024)
+    for (size_t i = 0; i < n; i++) {
+        std::sort(packed + start[i], packed + start[i + 1]);
+        for (size_t a = 0; a < start[i + 1] - start[i]; a++) {
+            const uint64_t w = packed[start[i] + a], key = w >> 32;
+            (*nb)[a * n + i] = (int)(w & 0xffffffffu);
+            (*k)[a * n + i] = key & 1 ? ~(int)(key >> 1) : (int)(key >> 1);
+        }
+    }
+    free(start), free(packed);
 }
 
 /* The device view of host body h (see the top of this file). */
@@ -151,12 +261,14 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->wtab = (sph_real *)sph_dev_copy(h->wtab, nt * d * sizeof(sph_real));
     b->gtab = (sph_real *)sph_dev_copy(h->gtab, nt * sizeof(sph_real));
     b->htab = (sph_real *)sph_dev_copy(h->htab, nt * sizeof(sph_real));
-    int *start, *nb, *k;
-    sph_full_lists(h, &start, &nb, &k);
-    b->fb_start = (int *)sph_dev_copy(start, (n + 1) * sizeof(int));
-    b->fb = (int *)sph_dev_copy(nb, (size_t)start[n] * sizeof(int));
-    b->fb_k = (int *)sph_dev_copy(k, (size_t)start[n] * sizeof(int));
-    free(start), free(nb), free(k);
+    int *count, *nb, *k, slots;
+    sph_full_lists(h, &count, &nb, &k, &slots);
+    b->fb_count = (int *)sph_dev_copy(count, n * sizeof(int));
+    b->fb = (int *)sph_dev_copy(nb, (size_t)slots * n * sizeof(int));
+    b->fb_k = (int *)sph_dev_copy(k, (size_t)slots * n * sizeof(int));
+    free(count), free(nb), free(k);
+    const double red[SPH_NRED] = {h->vmax2, h->amax2, h->visc_rate, h->visc_dissipated};
+    b->red = (double *)sph_dev_copy(red, sizeof red);
     const int nbcs = h->desc->nbcs;
     if (nbcs) { /* the particles of each `near` BC: a managed table of device lists */
         SPH_CUDA_CHECK(cudaMallocManaged(&b->bc_list, nbcs * sizeof(int *)));
@@ -173,8 +285,29 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->A = NULL; /* the device sums A per particle, in registers */
     b->nb_start = b->nb = b->nb_k = NULL;
     b->sigma = NULL, b->ms_list = NULL, b->ms_count = NULL;
+    /* Neither side writes these pages again: both keep a copy, and reads never fault. */
+    sph_read_mostly(b, sizeof *b);
+    if (nbcs) {
+        sph_read_mostly(b->bc_list, nbcs * sizeof(int *));
+        sph_read_mostly(b->bc_count, nbcs * sizeof(int));
+    }
     SPH_CUDA_CHECK(cudaDeviceSynchronize());
     return b;
+}
+
+/* n doubles of device memory to zero, in stream order. */
+static void sph_cuda_zero(double *d, int n)
+{
+    SPH_CUDA_CHECK(cudaMemset(d, 0, (size_t)n * sizeof(double)));
+}
+
+/* The sums of device view d's last step into host body h: the one wait of a step. */
+static void sph_cuda_reductions(sph_body *h, const sph_body *d)
+{
+    double red[SPH_NRED];
+    SPH_CUDA_CHECK(cudaMemcpy(red, d->red, sizeof red, cudaMemcpyDeviceToHost));
+    h->vmax2 = red[SPH_RED_VMAX2], h->amax2 = red[SPH_RED_AMAX2];
+    h->visc_rate = red[SPH_RED_VISC_RATE], h->visc_dissipated = red[SPH_RED_VISC_DISSIPATED];
 }
 
 /* The state of device view d back into host body h: what outputs, energies, measurements
@@ -196,8 +329,11 @@ static void sph_cuda_to_host(sph_body *h, const sph_body *d)
     if (h->state) /* plasticity: the VTU files and the plastic work read it */
         SPH_CUDA_CHECK(cudaMemcpy(h->state, d->state, n * (size_t)h->desc->nstate * sizeof(double),
                                   cudaMemcpyDeviceToHost));
-    /* (vmax2 and amax2 come back with every step; the host's initial ones stand until then) */
-    h->visc_rate = d->visc_rate, h->visc_dissipated = d->visc_dissipated;
+    /* the viscous sums; vmax2 and amax2 come back with every step, and the host's initial
+     * ones stand until then */
+    double red[SPH_NRED];
+    SPH_CUDA_CHECK(cudaMemcpy(red, d->red, sizeof red, cudaMemcpyDeviceToHost));
+    h->visc_rate = red[SPH_RED_VISC_RATE], h->visc_dissipated = red[SPH_RED_VISC_DISSIPATED];
 }
 
 #endif

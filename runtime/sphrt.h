@@ -232,6 +232,14 @@ typedef struct {
  * with `precision single` link (their generated code defines SPH_SINGLE).  Positions,
  * displacements, velocities, accelerations, F, the material law and the time integration
  * are double in both. */
+/* Entry e of particle i's m entries in a per-particle array of n particles: particle by
+ * particle (as above) on the CPU; entry by entry, a structure of arrays, in the CUDA target
+ * (sph_cuda.h defines it first), so that a warp's threads read consecutive words.  Used for
+ * the pair passes' working arrays Q and Cv, which only generated code reads. */
+#ifndef SPH_AT
+#define SPH_AT(i, e, m, n) ((size_t)(i) * (m) + (e))
+#endif
+
 #ifdef SPH_SINGLE
 typedef float sph_real;
 #else
@@ -247,8 +255,8 @@ struct sph_body {
     double *u, *v, *a;  /* n*dim displacement, velocity, acceleration */
     double *F;          /* n*9 deformation gradient (3×3) */
     double *L;          /* n*dim*dim correction */
-    sph_real *Q;        /* n*dim*dim  P·L (first Piola–Kirchhoff times correction) */
-    sph_real *Cv;       /* n*dim*dim  cof(F)·L for artificial viscosity */
+    sph_real *Q;        /* n*dim*dim  P·L (first Piola–Kirchhoff times correction), SPH_AT */
+    sph_real *Cv;       /* n*dim*dim  cof(F)·L for artificial viscosity, SPH_AT */
     double *psi;        /* n strain energy density */
     double *sigma;      /* n*6 Cauchy stress, filled at output */
     double *work;       /* n*dim scratch for integrators (symplectic: v at n) */
@@ -270,9 +278,15 @@ struct sph_body {
     int nstripes;
     sph_real *A;          /* n*dim*dim: sum_j (u_j - u_i) (x) w_ij, the pair part of eq. 53 */
     /* Full lists (both directions) for device targets, whose threads each sum their own
-     * particle's pairs: fb_k is the offset table entry k of the pair as the half list holds
-     * it, or ~k for the reversed pair (w_ji = -w_ij).  NULL on the CPU. */
-    int *fb_start, *fb, *fb_k;
+     * particle's pairs, stored slot by slot: pair s of particle i (s < fb_count[i]) is
+     * fb[s*n + i], so the threads of a warp read consecutive words.  fb_k is the offset table
+     * entry k of the pair as the half list holds it, or ~k for the reversed pair
+     * (w_ji = -w_ij); each particle's pairs are sorted by that entry, so that on a lattice
+     * slot s is the same offset for every interior particle.  NULL on the CPU. */
+    int *fb_count, *fb, *fb_k;
+    /* Device targets: the reductions below as the device sums them (SPH_RED_* of
+     * sph_cuda.h), read back once per step.  NULL on the CPU. */
+    double *red;
 
     double *state;        /* n*nstate state of the material law (NULL without state) */
 

@@ -2,7 +2,8 @@
  * The passes of templates/body_forces.c with one thread per particle: b is the body's device
  * view (runtime/sph_cuda.h), whose full pair lists let every thread sum its own particle's
  * pairs, so no two threads write the same particle.  The pair terms are those of the CPU
- * passes, computed from both sides (w_ji = -w_ij). */
+ * passes, computed from both sides (w_ji = -w_ij).  Pair s of particle i is entry s*n + i of
+ * the lists: a warp reads its particles' pairs as consecutive words. */
 
 /* Pass 1-2, per particle: A_i = sum_j V_j (u_j - u_i) (x) grad W_ij over the particle's
  * full list, then F, the law, P L and cof(F) L (@B@_particle_stress, body_particle.c). */
@@ -16,7 +17,8 @@ static void @B@_stress_pass(sph_body *b)
 //@if FRACTURE
         double lap = 0; /* the Laplacian of the phase field (eq. 62) over the same pairs */
 //@endif
-        for (int p = b->fb_start[i]; p < b->fb_start[i + 1]; p++) {
+        const size_t n = (size_t)b->n, end = i + n * (size_t)b->fb_count[i];
+        for (size_t p = i; p < end; p += n) {
             const int j = b->fb[p], k = b->fb_k[p];
             const double sg = k < 0 ? -1.0 : 1.0; /* ~k: the reversed pair */
             const sph_real *w = w0 + (size_t)(k < 0 ? ~k : k) * D;
@@ -40,29 +42,33 @@ static void @B@_momentum_pass(sph_body *b)
 {
     enum { D = @DIM@ };
 //@if VISCOSITY
-    SPH_ONCE({ b->visc_rate = 0; });
+    sph_cuda_zero(b->red + SPH_RED_VISC_RATE, 1);
 //@endif
     SPH_FOR(i, b->n, {
         const sph_real inv_rho = (sph_real)(1.0 / b->rho0);
-        const sph_real *Qi = b->Q + (size_t)i * D * D;
+        const size_t n = (size_t)b->n, end = i + n * (size_t)b->fb_count[i];
+        sph_real Qi[D * D]; /* Q and Cv entry by entry (SPH_AT) */
+        for (int e = 0; e < D * D; e++)
+            Qi[e] = b->Q[SPH_AT(i, e, D * D, n)];
 //@if VISCOSITY
-        const sph_real *Ci = b->Cv + (size_t)i * D * D;
+        sph_real Ci[D * D];
+        for (int e = 0; e < D * D; e++)
+            Ci[e] = b->Cv[SPH_AT(i, e, D * D, n)];
         sph_real pv = 0;
 //@endif
         sph_real fi[D] = {0};
-        for (int p = b->fb_start[i]; p < b->fb_start[i + 1]; p++) {
+        for (size_t p = i; p < end; p += n) {
             const int j = b->fb[p], k = b->fb_k[p];
             const sph_real sg = k < 0 ? (sph_real)-1 : (sph_real)1;
             const sph_real *wk = b->wtab + (size_t)(k < 0 ? ~k : k) * D;
             sph_real w[D];
             for (int c = 0; c < D; c++)
                 w[c] = sg * wk[c];
-            const sph_real *Qj = b->Q + (size_t)j * D * D;
             sph_real f[D];
             for (int r = 0; r < D; r++) {
                 sph_real s2 = 0;
                 for (int c = 0; c < D; c++)
-                    s2 += (Qi[r * D + c] + Qj[r * D + c]) * w[c];
+                    s2 += (Qi[r * D + c] + b->Q[SPH_AT(j, r * D + c, D * D, n)]) * w[c];
                 f[r] = s2 * inv_rho;
             }
 //@if VISCOSITY
@@ -77,11 +83,11 @@ static void @B@_momentum_pass(sph_body *b)
             const sph_real Gc = G < 0 ? G : 0;
             pi += (sph_real)@BETA2@ * Gc * Gc;
 //@endif
-            const sph_real *Cj = b->Cv + (size_t)j * D * D, hpi = (sph_real)0.5 * pi;
+            const sph_real hpi = (sph_real)0.5 * pi;
             for (int r = 0; r < D; r++) {
                 sph_real fv = 0;
                 for (int c = 0; c < D; c++)
-                    fv += (Ci[r * D + c] + Cj[r * D + c]) * w[c];
+                    fv += (Ci[r * D + c] + b->Cv[SPH_AT(j, r * D + c, D * D, n)]) * w[c];
                 f[r] -= hpi * fv;
                 pv -= hpi * fv * dv[r];
             }
@@ -96,7 +102,7 @@ static void @B@_momentum_pass(sph_body *b)
         for (int r = 0; r < D; r++)
             b->a[i * D + r] = g[r] + fi[r];
 //@if VISCOSITY
-        atomicAdd(&b->visc_rate, -0.5 * b->mass * (double)pv); /* each pair seen twice */
+        atomicAdd(&b->red[SPH_RED_VISC_RATE], -0.5 * b->mass * (double)pv); /* each pair twice */
 //@endif
     });
 }
@@ -142,11 +148,8 @@ static void @B@_predict(sph_body *b, double dt)
 static void @B@_update(sph_body *b, double dt)
 {
     enum { D = @DIM@ };
-    SPH_ONCE({
-        b->vmax2 = 0;
-        b->amax2 = 0;
-    });
-    SPH_FOR(i, b->n, {
+    sph_cuda_zero(b->red + SPH_RED_VMAX2, 2);
+    SPH_FOR_MAX2(i, b->n, b->red + SPH_RED_VMAX2, {
 //@if VERLET
         const double *vn = b->v, du = dt;
 //@endif
@@ -171,10 +174,9 @@ static void @B@_update(sph_body *b, double dt)
             v2 += b->v[i * D + k] * b->v[i * D + k];
             a2 += ak * ak;
         }
-        sph_atomic_max_pos(&b->vmax2, v2);
-        sph_atomic_max_pos(&b->amax2, a2);
+        return sph_max2{v2, a2};
     });
 //@if VISCOSITY
-    SPH_ONCE({ b->visc_dissipated += b->visc_rate * dt; });
+    SPH_ONCE({ b->red[SPH_RED_VISC_DISSIPATED] += b->red[SPH_RED_VISC_RATE] * dt; });
 //@endif
 }

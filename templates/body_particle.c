@@ -87,7 +87,7 @@ SPH_FN void @B@_particle_stress(sph_body *b, int i, const double *A)
             double s = 0;
             for (int k = 0; k < D; k++)
                 s += P[r * D + k] * L[k * D + c];
-            b->Q[(size_t)i * D * D + r * D + c] = (sph_real)s;
+            b->Q[SPH_AT(i, r * D + c, D * D, b->n)] = (sph_real)s;
         }
 //@if VISCOSITY
     /* cof(F) = J F^-T: the Piola transform of the viscous pressure (eq. 57) */
@@ -102,10 +102,10 @@ SPH_FN void @B@_particle_stress(sph_body *b, int i, const double *A)
             for (int k = 0; k < D; k++)
                 s += sph_cofactor(F, sph_axis(D, r), sph_axis(D, k)) * L[k * D + c];
 //@if FRACTURE
-            b->Cv[(size_t)i * D * D + r * D + c] = (sph_real)(s * vdeg);
+            b->Cv[SPH_AT(i, r * D + c, D * D, b->n)] = (sph_real)(s * vdeg);
 //@endif
 //@if NO_FRACTURE
-            b->Cv[(size_t)i * D * D + r * D + c] = (sph_real)s;
+            b->Cv[SPH_AT(i, r * D + c, D * D, b->n)] = (sph_real)s;
 //@endif
         }
 //@endif
