@@ -379,6 +379,32 @@ void emit_step_update(Emitter *E, int i)
         fprintf(E->out, "        %s_restrict(b, t + dt, dt);\n", n);
 }
 
+void emit_step_bodies(Emitter *E, const char *body, const char *contact)
+{
+    const Model *m = E->m;
+    FILE *out = E->out;
+    const int split = model_has_contact(m); /* contact needs every body at one time level */
+    for (int i = 0; i < m->nbodies; i++) {
+        fputs("    {\n        sph_body *b = ", out);
+        fprintf(out, body, i);
+        fputs(";\n", out);
+        emit_step_forces(E, i);
+        if (!split)
+            emit_step_update(E, i);
+        fputs("    }\n", out);
+    }
+    if (!split)
+        return;
+    fprintf(out, "    %s; /* between the bodies: adds to their a */\n", contact);
+    for (int i = 0; i < m->nbodies; i++) {
+        fputs("    {\n        sph_body *b = ", out);
+        fprintf(out, body, i);
+        fputs(";\n", out);
+        emit_step_update(E, i);
+        fputs("    }\n", out);
+    }
+}
+
 static void scene_step(Emitter *E)
 {
     const Model *m = E->m;
@@ -393,26 +419,7 @@ static void scene_step(Emitter *E)
     fprintf(out, "/* One time step of every body: %s. */\n"
                  "static void model_step(sph_sim *s, double dt)\n{\n    const double t = s->t;\n",
             sym ? "symplectic predictor-corrector (Alg. 2)" : "Verlet (Alg. 1)");
-    if (!model_has_contact(m))
-        for (int i = 0; i < m->nbodies; i++) {
-            fprintf(out, "    {\n        sph_body *b = &s->bodies[%d];\n", i);
-            emit_step_forces(E, i);
-            emit_step_update(E, i);
-            fputs("    }\n", out);
-        }
-    else { /* contact needs every body's positions at the same time level */
-        for (int i = 0; i < m->nbodies; i++) {
-            fprintf(out, "    {\n        sph_body *b = &s->bodies[%d];\n", i);
-            emit_step_forces(E, i);
-            fputs("    }\n", out);
-        }
-        fputs("    sph_contact_forces(s, dt); /* between the bodies: adds to their a */\n", out);
-        for (int i = 0; i < m->nbodies; i++) {
-            fprintf(out, "    {\n        sph_body *b = &s->bodies[%d];\n", i);
-            emit_step_update(E, i);
-            fputs("    }\n", out);
-        }
-    }
+    emit_step_bodies(E, "&s->bodies[%d]", "sph_contact_forces(s, dt)");
     fputs("    (void)t;\n}\n\n", out);
     fputs("/* Cauchy stress of every particle, for output. */\n"
           "static void model_stress_output(sph_sim *s)\n{\n", out);

@@ -16,11 +16,16 @@ static void scene_step_cuda(Emitter *E)
 {
     const Model *m = E->m;
     FILE *out = E->out;
-    fprintf(out, "/* The bodies' device views (runtime/sph_cuda.h), made at the first device pass. */\n"
-                 "static sph_body *DEV[%d];\n\n"
+    const int contact = model_has_contact(m);
+    fprintf(out, "/* The bodies' device views (runtime/sph_cuda.h)%s,\n"
+                 " * made at the first device pass. */\nstatic sph_body *DEV[%d];\n%s\n"
                  "static void model_upload(sph_sim *s)\n{\n    if (DEV[0])\n        return;\n"
-                 "    for (int i = 0; i < %d; i++)\n        DEV[i] = sph_cuda_body(&s->bodies[i]);\n}\n\n",
-            m->nbodies, m->nbodies);
+                 "    for (int i = 0; i < %d; i++)\n        DEV[i] = sph_cuda_body(&s->bodies[i]);\n",
+            contact ? " and the contact state (sph_cuda_contact.h)" : "", m->nbodies,
+            contact ? "static sph_cuda_contact CONTACT_DEV;\n" : "", m->nbodies);
+    if (contact)
+        fputs("    sph_cuda_contact_init(&CONTACT_DEV, s);\n", out);
+    fputs("}\n\n", out);
     fputs("/* Velocity boundary conditions at time t, on the device (the initial conditions: the\n"
           " * host copy follows for the runtime's first look). */\n"
           "static void model_velocity_bcs(sph_sim *s, double t)\n{\n    model_upload(s);\n", out);
@@ -35,15 +40,12 @@ static void scene_step_cuda(Emitter *E)
                  "static void model_step(sph_sim *s, double dt)\n{\n    const double t = s->t;\n",
             m->integrator == INTEGRATOR_SYMPLECTIC ? "symplectic predictor-corrector (Alg. 2)"
                                                     : "Verlet (Alg. 1)");
-    for (int i = 0; i < m->nbodies; i++) {
-        fprintf(out, "    {\n        sph_body *b = DEV[%d];\n", i);
-        emit_step_forces(E, i);
-        emit_step_update(E, i);
-        fputs("    }\n", out);
-    }
+    emit_step_bodies(E, "DEV[%d]", "sph_cuda_contact_forces(&CONTACT_DEV, DEV, dt)");
     fputs("    SPH_CUDA_CHECK(cudaGetLastError());\n", out);
     for (int i = 0; i < m->nbodies; i++)
         fprintf(out, "    sph_cuda_reductions(&s->bodies[%d], DEV[%d]);\n", i, i);
+    if (contact)
+        fputs("    sph_cuda_contact_to_host(&CONTACT_DEV, s);\n", out);
     fputs("    (void)t;\n}\n\n", out);
     fputs("/* The device state into the host bodies, for the runtime to read. */\n"
           "static void model_sync_host(sph_sim *s)\n{\n", out);
@@ -57,23 +59,15 @@ static void scene_step_cuda(Emitter *E)
 }
 
 
-/* What the CUDA target does not run yet: contact (its search and pair forces are host code). */
-static int cuda_unsupported(const Model *m)
-{
-    if (!model_has_contact(m))
-        return 0;
-    diag_error(m->bodies[1].loc, "contact between bodies is not supported by the cuda target yet "
-                                 "(use --target cpu, or `contact 0`)");
-    return -1;
-}
-
 int emit_cuda_program(const Model *m, const char *templates_dir, FILE *out)
 {
     BodyPlan *plans = calloc((size_t)m->nbodies, sizeof *plans);
-    int rc = lower_model(m, plans) || cuda_unsupported(m) ? -1 : 0;
+    int rc = lower_model(m, plans) ? -1 : 0;
     if (!rc) {
         Emitter E = {m, plans, templates_dir, out, 1};
         emit_header(&E);
+        if (model_has_contact(m))
+            fputs("#include \"sph_cuda_contact.h\" /* contact between the bodies */\n\n", out);
         emit_consts_fns(&E);
         for (int i = 0; i < m->nbodies; i++) {
             const BodyModel *b = &m->bodies[i];

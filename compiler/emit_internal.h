@@ -28,6 +28,9 @@ void emit_bc_pass(Emitter *E, const BodyModel *b, BcKind kind);
 /* Body i's part of the step up to its internal forces, and from its force BCs to the end. */
 void emit_step_forces(Emitter *E, int i);
 void emit_step_update(Emitter *E, int i);
+/* Every body's passes of one step, body i named by the printf format `body` ("%d": i); with
+ * contact, every body's forces, then the call `contact`, then every body's update. */
+void emit_step_bodies(Emitter *E, const char *body, const char *contact);
 /* The static scene description and main(). */
 void emit_model_desc(Emitter *E);
 

@@ -27,6 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "contact_law.h"
 #include "contact_search.h"
 #include "internal.h"
 
@@ -34,35 +35,24 @@
 #define M_PI 3.14159265358979323846
 #endif
 
-typedef struct {
-    double dc;     /* contact distance */
-    double k;      /* stiffness of F_e */
-    double zeta;   /* damping ratio */
-    double mu;     /* friction coefficient */
-    double mstar;  /* reduced mass of a particle pair */
-    double w2ref;  /* omega^2 at an overlap of 0.1 dc */
-} pair_law;
-
 struct sph_contact {
     int dim, n, nbodies;
     int *base;         /* nbodies + 1: first global index of each body */
     int *body;         /* n: body of each global particle */
     double *dc;        /* nbodies^2 contact distances (for the search) */
-    pair_law *law;     /* nbodies^2 */
+    sph_pair_law *law;     /* nbodies^2 */
     double *x;         /* n*dim current positions */
     sph_csearch search;
     double stored, dissipated, w2max;
 };
 
-static double hertz(int dim) { return dim == 3 ? 1.5 : 1.0; } /* F_e ~ delta^hertz */
-
-static pair_law make_law(const sph_model *m, const sph_body *A, const sph_body *B)
+static sph_pair_law make_law(const sph_model *m, const sph_body *A, const sph_body *B)
 {
     const sph_body_desc *a = A->desc, *b = B->desc;
     const double estar = 1.0 / ((1 - a->poisson * a->poisson) / a->young +
                                 (1 - b->poisson * b->poisson) / b->young);
     const double ra = 0.5 * A->dx, rb = 0.5 * B->dx, e = 0.5 * (a->restitution + b->restitution);
-    pair_law L;
+    sph_pair_law L;
     L.dc = ra + rb;
     L.k = m->contact->coef * (m->dim == 3 ? 4.0 / 3.0 * estar * sqrt(ra * rb / (ra + rb))
                                           : 0.25 * M_PI * estar);
@@ -118,46 +108,15 @@ static void gather(sph_contact *c, const sph_sim *s)
     }
 }
 
-/* Contact force on particle i (global gi) from j (global gj); returns the force in f and
- * adds half the pair's stored energy and dissipated power (each pair is seen twice). */
+/* Contact force on particle i (global gi) from j (global gj), contact_law.h. */
 static void pair_force(const sph_contact *c, const sph_sim *s, int gi, int gj, double dt,
                        double f[3], double *stored, double *power, double *w2)
 {
     const int D = c->dim, bi = c->body[gi], bj = c->body[gj];
-    const pair_law *L = &c->law[bi * c->nbodies + bj];
-    const double *xi = c->x + (size_t)gi * D, *xj = c->x + (size_t)gj * D;
     const double *vi = s->bodies[bi].v + (size_t)(gi - c->base[bi]) * D;
     const double *vj = s->bodies[bj].v + (size_t)(gj - c->base[bj]) * D;
-    double n[3] = {0, 0, 0}, dv[3] = {0, 0, 0}, r2 = 0;
-    f[0] = f[1] = f[2] = 0;
-    for (int k = 0; k < D; k++) {
-        n[k] = xi[k] - xj[k];
-        dv[k] = vi[k] - vj[k];
-        r2 += n[k] * n[k];
-    }
-    if (!(r2 < L->dc * L->dc) || r2 == 0)
-        return;
-    const double r = sqrt(r2), delta = L->dc - r;
-    double vn = 0;
-    for (int k = 0; k < D; k++) {
-        n[k] /= r;
-        vn += dv[k] * n[k];
-    }
-    const double root = D == 3 ? sqrt(delta) : 1.0;
-    const double fe = L->k * delta * root, kt = hertz(D) * L->k * root;
-    const double damp = 2 * L->zeta * sqrt(L->mstar * kt);
-    const double fn = fmax(0.0, fe - damp * vn);
-    double vt[3], vt2 = 0;
-    for (int k = 0; k < D; k++) {
-        vt[k] = dv[k] - vn * n[k];
-        vt2 += vt[k] * vt[k];
-    }
-    const double vtn = sqrt(vt2), ft = vtn > 0 ? fmin(L->mu * fn, L->mstar * vtn / dt) : 0;
-    for (int k = 0; k < D; k++)
-        f[k] = fn * n[k] - (vtn > 0 ? ft * vt[k] / vtn : 0);
-    *stored += 0.5 * L->k * delta * delta * root / (hertz(D) + 1);
-    *power += 0.5 * ((fe - fn) * vn + ft * vtn); /* work of damping and friction */
-    *w2 = fmax(*w2, kt / L->mstar);
+    sph_contact_pair(&c->law[bi * c->nbodies + bj], D, c->x + (size_t)gi * D,
+                     c->x + (size_t)gj * D, vi, vj, dt, f, stored, power, w2);
 }
 
 void sph_contact_forces(sph_sim *s, double dt)
@@ -187,6 +146,20 @@ void sph_contact_forces(sph_sim *s, double dt)
     c->stored = stored;
     c->dissipated += power * dt;
     c->w2max = w2;
+}
+
+const sph_pair_law *sph_contact_laws(sph_sim *s)
+{
+    sph_contact_init(s);
+    return s->contact->law;
+}
+
+void sph_contact_set(sph_sim *s, double stored, double dissipated, double w2max)
+{
+    sph_contact_init(s);
+    s->contact->stored = stored;
+    s->contact->dissipated = dissipated;
+    s->contact->w2max = w2max;
 }
 
 double sph_contact_dt(const sph_sim *s)

@@ -143,6 +143,8 @@ template <class F> static void sph_for(int n, F f)
         f(i);
 }
 
+static inline void sph_atomic_max_pos(double *a, double v) { *a = v > *a ? v : *a; }
+
 template <class F> static void sph_for_max2(int n, double *out, F f)
 {
     for (int i = 0; i < n; i++) {

@@ -1,0 +1,77 @@
+/* contact_law.h — the contact force of one particle pair (the law is described at the top of
+ * runtime/contact.c).  One source for both targets: runtime/contact.c calls it on the CPU and
+ * runtime/sph_cuda_contact.h on the device (SPH_HD: __host__ __device__ under nvcc). */
+#ifndef SPHRT_CONTACT_LAW_H
+#define SPHRT_CONTACT_LAW_H
+
+#include <math.h>
+
+#include "sphrt.h"
+
+/* The law of a pair of bodies. */
+typedef struct {
+    double dc;     /* contact distance */
+    double k;      /* stiffness of F_e */
+    double zeta;   /* damping ratio */
+    double mu;     /* friction coefficient */
+    double mstar;  /* reduced mass of a particle pair */
+    double w2ref;  /* omega^2 at an overlap of 0.1 dc */
+} sph_pair_law;
+
+/* F_e ~ delta^hertz: 3/2 in 3D (Hertz), 1 in 2D (linear). */
+SPH_HD static inline double sph_contact_hertz(int dim) { return dim == 3 ? 1.5 : 1.0; }
+
+/* The force f on particle i (position xi, velocity vi) from particle j of another body, in
+ * D dimensions; adds half the pair's stored energy to *stored and half its dissipated power
+ * to *power (each pair is seen from both sides), and raises *w2 to the pair's omega^2.  The
+ * same arithmetic from both sides makes the two forces exactly opposite. */
+SPH_HD static inline void sph_contact_pair(const sph_pair_law *L, int D, const double *xi,
+                                           const double *xj, const double *vi, const double *vj,
+                                           double dt, double f[3], double *stored, double *power,
+                                           double *w2)
+{
+    double n[3] = {0, 0, 0}, dv[3] = {0, 0, 0}, r2 = 0;
+    f[0] = f[1] = f[2] = 0;
+    for (int k = 0; k < D; k++) {
+        n[k] = xi[k] - xj[k];
+        dv[k] = vi[k] - vj[k];
+        r2 += n[k] * n[k];
+    }
+    if (!(r2 < L->dc * L->dc) || r2 == 0)
+        return;
+    const double r = sqrt(r2), delta = L->dc - r;
+    double vn = 0;
+    for (int k = 0; k < D; k++) {
+        n[k] /= r;
+        vn += dv[k] * n[k];
+    }
+    const double root = D == 3 ? sqrt(delta) : 1.0;
+    const double fe = L->k * delta * root, kt = sph_contact_hertz(D) * L->k * root;
+    const double damp = 2 * L->zeta * sqrt(L->mstar * kt);
+    const double fn = fmax(0.0, fe - damp * vn);
+    double vt[3], vt2 = 0;
+    for (int k = 0; k < D; k++) {
+        vt[k] = dv[k] - vn * n[k];
+        vt2 += vt[k] * vt[k];
+    }
+    const double vtn = sqrt(vt2), ft = vtn > 0 ? fmin(L->mu * fn, L->mstar * vtn / dt) : 0;
+    for (int k = 0; k < D; k++)
+        f[k] = fn * n[k] - (vtn > 0 ? ft * vt[k] / vtn : 0);
+    *stored += 0.5 * L->k * delta * delta * root / (sph_contact_hertz(D) + 1);
+    *power += 0.5 * ((fe - fn) * vn + ft * vtn); /* work of damping and friction */
+    *w2 = fmax(*w2, kt / L->mstar);
+}
+
+/* For device targets, which compute contact themselves (runtime/sph_cuda_contact.h): the
+ * pair laws of scene s, nbodies x nbodies (made on the first call), and the state the device
+ * computed, handed back for sph_contact_dt and sph_contact_energies. */
+#ifdef __cplusplus
+extern "C" {
+#endif
+const sph_pair_law *sph_contact_laws(sph_sim *s);
+void sph_contact_set(sph_sim *s, double stored, double dissipated, double w2max);
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,242 @@
+/* sph_cuda_contact.h — contact between bodies on the device, for the CUDA target (included
+ * by the model.cu of scenes with contact, after sph_cuda.h).
+ *
+ * The pair law is the CPU's (contact_law.h, one source).  The search differs: instead of
+ * the CPU's candidate lists kept between rebuilds (contact_search.c), every step sorts all
+ * particles by the bucket of their cell on the device and looks for partners in the 9
+ * (2D) or 27 (3D) cells around each particle, cells as wide as the largest contact
+ * distance; the sort is stable, so a bucket lists its particles by index and every sum has
+ * a fixed order.  A step is then
+ *   1. the current positions and velocities of all bodies into global arrays;
+ *   2. each particle's bucket, the stable sort, the buckets' ranges;
+ *   3. per particle, the sum of its contact forces over the particles of other bodies in
+ *      reach (its own acceleration only: no two threads write the same particle), with the
+ *      stored energy, dissipated power and largest omega^2 summed into c->sum;
+ *   4. the contact accelerations added to each body's a.
+ * sph_cuda_contact_to_host hands the sums to the host runtime (sph_contact_set), for the
+ * time step and the energies. */
+#ifndef SPH_CUDA_CONTACT_H
+#define SPH_CUDA_CONTACT_H
+
+#include <vector>
+
+#include "contact_law.h"
+#ifndef SPH_CUDA_EMULATE
+#include <cub/device/device_radix_sort.cuh>
+#else
+#include <algorithm>
+#endif
+
+/* The device's contact sums, c->sum[SPH_CSUM_*]. */
+enum { SPH_CSUM_STORED, SPH_CSUM_W2, SPH_CSUM_POWER, SPH_CSUM_DISSIPATED, SPH_NCSUM };
+
+typedef struct {
+    int n, dim, nbodies;
+    int *base;            /* host, nbodies + 1: first global index of each body */
+    int *body;            /* n: body of each global particle */
+    double *mass;         /* nbodies: particle mass of each body */
+    sph_pair_law *law;    /* nbodies^2 */
+    double *x, *v, *acc;  /* n*dim: positions, velocities, contact accelerations */
+    double cell;          /* cell side: the largest contact distance */
+    unsigned mask;        /* buckets - 1 (a power of two) */
+    int bits;             /* log2 buckets: the sort's key bits */
+    unsigned *key, *skey; /* n: bucket of each particle; sorted */
+    int *idx, *order;     /* n: 0..n-1; the particles sorted by bucket */
+    int *bstart, *bend;   /* buckets: range of each bucket in order */
+    void *tmp;            /* the sort's scratch */
+    size_t tmp_bytes;
+    double *sum;          /* SPH_NCSUM */
+} sph_cuda_contact;
+
+/* The cell of position x (D components; the third is 0 in 2D). */
+SPH_HD static inline void sph_contact_cell(const double *x, int D, double cell, long long c[3])
+{
+    c[1] = c[2] = 0;
+    for (int k = 0; k < D; k++)
+        c[k] = (long long)floor(x[k] / cell);
+}
+
+SPH_HD static inline unsigned sph_contact_bucket(const long long c[3], unsigned mask)
+{
+    unsigned long long h = (unsigned long long)c[0] * 73856093u ^
+                           (unsigned long long)c[1] * 19349663u ^
+                           (unsigned long long)c[2] * 83492791u;
+    return (unsigned)((h ^ (h >> 29)) & mask);
+}
+
+static void *sph_dev_alloc(size_t bytes)
+{
+    void *d;
+    SPH_CUDA_CHECK(cudaMalloc(&d, bytes ? bytes : 1));
+    return d;
+}
+
+/* The device contact state of scene s: its pair laws, buckets and sums. */
+static void sph_cuda_contact_init(sph_cuda_contact *c, sph_sim *s)
+{
+    const int nb = s->nbodies, D = s->m->dim;
+    c->dim = D, c->nbodies = nb;
+    c->base = (int *)calloc((size_t)nb + 1, sizeof(int));
+    for (int i = 0; i < nb; i++)
+        c->base[i + 1] = c->base[i] + s->bodies[i].n;
+    const int n = c->n = c->base[nb];
+    std::vector<int> body((size_t)n + 1);
+    std::vector<double> mass((size_t)nb);
+    for (int i = 0; i < nb; i++) {
+        mass[i] = s->bodies[i].mass;
+        for (int p = c->base[i]; p < c->base[i + 1]; p++)
+            body[p] = i;
+    }
+    const sph_pair_law *law = sph_contact_laws(s);
+    c->cell = 0;
+    for (int k = 0; k < nb * nb; k++)
+        c->cell = fmax(c->cell, law[k].dc);
+    c->body = (int *)sph_dev_copy(body.data(), (size_t)n * sizeof(int));
+    c->mass = (double *)sph_dev_copy(mass.data(), (size_t)nb * sizeof(double));
+    c->law = (sph_pair_law *)sph_dev_copy(law, (size_t)nb * nb * sizeof *law);
+    c->x = (double *)sph_dev_alloc((size_t)n * D * sizeof(double));
+    c->v = (double *)sph_dev_alloc((size_t)n * D * sizeof(double));
+    c->acc = (double *)sph_dev_alloc((size_t)n * D * sizeof(double));
+    size_t buckets = 1;
+    c->bits = 0;
+    while (buckets < 2 * (size_t)n)
+        buckets <<= 1, c->bits++;
+    c->mask = (unsigned)(buckets - 1);
+    c->key = (unsigned *)sph_dev_alloc((size_t)n * sizeof(unsigned));
+    c->skey = (unsigned *)sph_dev_alloc((size_t)n * sizeof(unsigned));
+    std::vector<int> idx((size_t)n + 1);
+    for (int g = 0; g < n; g++)
+        idx[g] = g;
+    c->idx = (int *)sph_dev_copy(idx.data(), (size_t)n * sizeof(int));
+    c->order = (int *)sph_dev_alloc((size_t)n * sizeof(int));
+    c->bstart = (int *)sph_dev_alloc(buckets * sizeof(int));
+    c->bend = (int *)sph_dev_alloc(buckets * sizeof(int));
+    c->tmp = NULL, c->tmp_bytes = 0;
+#ifndef SPH_CUDA_EMULATE
+    SPH_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(NULL, c->tmp_bytes, c->key, c->skey, c->idx,
+                                                   c->order, n, 0, c->bits));
+    c->tmp = sph_dev_alloc(c->tmp_bytes);
+#endif
+    double sum[SPH_NCSUM] = {0, 0, 0, 0};
+    c->sum = (double *)sph_dev_copy(sum, sizeof sum);
+}
+
+/* Step 2: the particles sorted by bucket, and each bucket's range. */
+static void sph_cuda_contact_sort(sph_cuda_contact *c)
+{
+    const int n = c->n, D = c->dim;
+    const double *x = c->x, cell = c->cell;
+    const unsigned mask = c->mask;
+    unsigned *key = c->key, *skey = c->skey;
+    int *order = c->order, *bstart = c->bstart, *bend = c->bend;
+    SPH_FOR(g, n, {
+        long long cg[3];
+        sph_contact_cell(x + (size_t)g * D, D, cell, cg);
+        key[g] = sph_contact_bucket(cg, mask);
+    });
+#ifndef SPH_CUDA_EMULATE
+    SPH_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(c->tmp, c->tmp_bytes, key, skey, c->idx, order,
+                                                   n, 0, c->bits));
+#else
+    for (int g = 0; g < n; g++)
+        order[g] = g;
+    std::stable_sort(order, order + n, [&](int a, int b) { return key[a] < key[b]; });
+    for (int g = 0; g < n; g++)
+        skey[g] = key[order[g]];
+#endif
+    SPH_CUDA_CHECK(cudaMemset(bstart, 0, ((size_t)mask + 1) * sizeof(int)));
+    SPH_CUDA_CHECK(cudaMemset(bend, 0, ((size_t)mask + 1) * sizeof(int)));
+    SPH_FOR(p, n, {
+        const unsigned k = skey[p];
+        if (p == 0 || skey[p - 1] != k)
+            bstart[k] = p;
+        if (p == n - 1 || skey[p + 1] != k)
+            bend[k] = p + 1;
+    });
+}
+
+/* Step 3: the contact acceleration of every particle (the pairs of contact_law.h). */
+static void sph_cuda_contact_pairs(sph_cuda_contact *c, double dt)
+{
+    const int D = c->dim, nb = c->nbodies;
+    const double *x = c->x, *v = c->v, *mass = c->mass, cell = c->cell;
+    const int *body = c->body, *order = c->order, *bstart = c->bstart, *bend = c->bend;
+    const sph_pair_law *law = c->law;
+    const unsigned mask = c->mask;
+    double *acc = c->acc, *sum = c->sum;
+    sph_cuda_zero(sum, SPH_CSUM_POWER + 1); /* stored, w2, power */
+    SPH_FOR(g, c->n, {
+        const int bg = body[g];
+        const double *xg = x + (size_t)g * D;
+        long long cg[3];
+        sph_contact_cell(xg, D, cell, cg);
+        double fi[3] = {0, 0, 0}, stored = 0, power = 0, w2 = 0;
+        const int span = D > 2; /* 2D: the third cell coordinate is always 0 */
+        for (int o0 = -1; o0 <= 1; o0++)
+            for (int o1 = -1; o1 <= 1; o1++)
+                for (int o2 = -span; o2 <= span; o2++) {
+                    const long long cj[3] = {cg[0] + o0, cg[1] + o1, cg[2] + o2};
+                    const unsigned bk = sph_contact_bucket(cj, mask);
+                    for (int p = bstart[bk]; p < bend[bk]; p++) {
+                        const int j = order[p];
+                        if (body[j] == bg)
+                            continue;
+                        long long ck[3];
+                        sph_contact_cell(x + (size_t)j * D, D, cell, ck);
+                        if (ck[0] != cj[0] || ck[1] != cj[1] || ck[2] != cj[2])
+                            continue; /* another cell in the same bucket */
+                        double f[3];
+                        sph_contact_pair(&law[bg * nb + body[j]], D, xg, x + (size_t)j * D,
+                                         v + (size_t)g * D, v + (size_t)j * D, dt, f, &stored,
+                                         &power, &w2);
+                        for (int k = 0; k < D; k++)
+                            fi[k] += f[k];
+                    }
+                }
+        for (int k = 0; k < D; k++)
+            acc[(size_t)g * D + k] = fi[k] / mass[bg];
+        if (w2 > 0) { /* in contact: the few particles that touch add to the sums */
+            atomicAdd(&sum[SPH_CSUM_STORED], stored);
+            atomicAdd(&sum[SPH_CSUM_POWER], power);
+            sph_atomic_max_pos(&sum[SPH_CSUM_W2], w2);
+        }
+    });
+    SPH_ONCE({ sum[SPH_CSUM_DISSIPATED] += sum[SPH_CSUM_POWER] * dt; });
+}
+
+/* Contact between the bodies (device views dev[]) for a step of dt: adds to their a. */
+static void sph_cuda_contact_forces(sph_cuda_contact *c, sph_body *const *dev, double dt)
+{
+    const int D = c->dim;
+    double *x = c->x, *v = c->v, *acc = c->acc;
+    for (int i = 0; i < c->nbodies; i++) { /* step 1 */
+        const sph_body *b = dev[i];
+        const size_t base = (size_t)c->base[i] * D;
+        SPH_FOR(p, b->n, {
+            for (int k = 0; k < D; k++) {
+                x[base + (size_t)p * D + k] = b->X[(size_t)p * D + k] + b->u[(size_t)p * D + k];
+                v[base + (size_t)p * D + k] = b->v[(size_t)p * D + k];
+            }
+        });
+    }
+    sph_cuda_contact_sort(c);
+    sph_cuda_contact_pairs(c, dt);
+    for (int i = 0; i < c->nbodies; i++) { /* step 4 */
+        const sph_body *b = dev[i];
+        const size_t base = (size_t)c->base[i] * D;
+        SPH_FOR(p, b->n, {
+            for (int k = 0; k < D; k++)
+                b->a[(size_t)p * D + k] += acc[base + (size_t)p * D + k];
+        });
+    }
+}
+
+/* The device's contact sums into the host runtime (time step, energies). */
+static void sph_cuda_contact_to_host(const sph_cuda_contact *c, sph_sim *s)
+{
+    double sum[SPH_NCSUM];
+    SPH_CUDA_CHECK(cudaMemcpy(sum, c->sum, sizeof sum, cudaMemcpyDeviceToHost));
+    sph_contact_set(s, sum[SPH_CSUM_STORED], sum[SPH_CSUM_DISSIPATED], sum[SPH_CSUM_W2]);
+}
+
+#endif
