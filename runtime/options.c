@@ -1,6 +1,6 @@
 /* options.c — the command line of a generated program.
  *
- *   --out DIR  --threads N  --end T  --every T  --quiet  --help | -h
+ *   --out DIR  --threads N  --end T  --every T  --frames T  --quiet  --help | -h
  *
  * Options with a value also accept the spelling --opt=value. */
 #include "output.h"
@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-typedef enum { OPT_OUT, OPT_THREADS, OPT_END, OPT_EVERY, OPT_QUIET, OPT_HELP } opt_id;
+typedef enum { OPT_OUT, OPT_THREADS, OPT_END, OPT_EVERY, OPT_FRAMES, OPT_QUIET, OPT_HELP } opt_id;
 
 typedef struct {
     const char *name;
@@ -21,7 +21,8 @@ typedef struct {
 
 static const opt_info OPTIONS[] = {
     {"--out", OPT_OUT, 1},     {"--threads", OPT_THREADS, 1}, {"--end", OPT_END, 1},
-    {"--every", OPT_EVERY, 1}, {"--quiet", OPT_QUIET, 0},     {"--help", OPT_HELP, 0},
+    {"--every", OPT_EVERY, 1}, {"--frames", OPT_FRAMES, 1},   {"--quiet", OPT_QUIET, 0},
+    {"--help", OPT_HELP, 0},
     {"-h", OPT_HELP, 0},
 };
 #define NOPTIONS (int)(sizeof OPTIONS / sizeof OPTIONS[0])
@@ -45,6 +46,8 @@ static void usage(FILE *f, const char *prog, const char *model)
             "  --threads N   number of OpenMP threads (default: OpenMP's choice)\n"
             "  --end T       end time in seconds (default: the model's)\n"
             "  --every T     output interval in seconds (default: the model's)\n"
+            "  --frames T    interval of the particle files (default: every output; the\n"
+            "                energies and measurements are written at every output)\n"
             "  --quiet       no progress line\n"
             "  -h, --help    show this help and exit\n",
             prog, model, model);
@@ -113,6 +116,7 @@ static int set_value(sph_options *o, opt_id id, const char *name, const char *va
     case OPT_THREADS: bad = parse_positive_int(value, &o->threads); break;
     case OPT_END:     bad = parse_positive_double(value, &o->t_end); break;
     case OPT_EVERY:   bad = parse_positive_double(value, &o->t_out); break;
+    case OPT_FRAMES:  bad = parse_positive_double(value, &o->t_frames); break;
     default: break;
     }
     if (!bad)
@@ -145,7 +149,8 @@ int sph_parse_options(sph_options *o, const char *model_name, int argc, char **a
 {
     const char *model = model_name && model_name[0] ? model_name : "sph";
     const char *prog = program_name(argc, argv, model);
-    *o = (sph_options){.out_dir = NULL, .threads = 0, .t_end = -1, .t_out = -1, .quiet = 0};
+    *o = (sph_options){.out_dir = NULL, .threads = 0, .t_end = -1, .t_out = -1, .t_frames = -1,
+                       .quiet = 0};
     for (int i = 1; i < argc; i++) {
         const char *value;
         const opt_info *opt = find_option(argv[i], &value);

@@ -72,6 +72,7 @@ typedef struct {
     int threads;          /* --threads N (0 = OpenMP default) */
     double t_end;         /* --end T   (< 0: model's) */
     double t_out;         /* --every T (< 0: model's) */
+    double t_frames;      /* --frames T: particle files every T (< 0: every output) */
     int quiet;            /* --quiet */
 } sph_options;
 /* Parses argv; prints usage and returns -1 on a bad option (the caller exits 2);

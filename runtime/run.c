@@ -16,6 +16,7 @@ typedef struct {
     const sph_model *m;
     sph_options opt;
     double t_end, t_out;
+    double t_frames, next_frame; /* particle files every t_frames (at output times) */
     sph_sim sim;
     sph_csv energies;
     sph_csv *measure_csv;
@@ -168,7 +169,8 @@ static int record(run_state *r)
     return bad;
 }
 
-static int write_frame(run_state *r)
+/* The particle files of every body at the current time: a frame of the .pvd series. */
+static int write_particles(run_state *r)
 {
     const sph_sim *s = &r->sim;
     r->m->stress_output(&r->sim);
@@ -188,6 +190,20 @@ static int write_frame(run_state *r)
         bad |= sph_write_pvd(path, (const char *const *)list, r->frame_times, r->nframes + 1);
     }
     r->nframes++;
+    return bad;
+}
+
+/* An output time: a row of energies and measurements, and a frame of particle files when
+ * one is due (every --frames interval, by default every output). */
+static int write_output(run_state *r)
+{
+    int bad = 0;
+    const double t = r->sim.t, eps = 1e-9 * r->t_out;
+    if (t >= r->next_frame - eps) {
+        bad = write_particles(r);
+        while (r->next_frame <= t + eps)
+            r->next_frame += r->t_frames;
+    }
     return bad | record(r);
 }
 
@@ -343,7 +359,7 @@ static int time_loop(run_state *r)
         if ((output || s->step % 20 == 0) && check_now(r, &mon))
             break;
         if (output) {
-            if (write_frame(r))
+            if (write_output(r))
                 return -1;
             next_out += r->t_out;
         }
@@ -381,12 +397,13 @@ int sph_main(const sph_model *m, int argc, char **argv)
         omp_set_num_threads(r.opt.threads);
     r.t_end = r.opt.t_end > 0 ? r.opt.t_end : m->t_end;
     r.t_out = r.opt.t_out > 0 ? r.opt.t_out : m->t_out;
+    r.t_frames = r.opt.t_frames > 0 ? r.opt.t_frames : r.t_out;
     double wall0 = sph_wall_time();
     long particles = 0, pairs = 0;
     if (setup(&r, &particles, &pairs) || open_outputs(&r))
         return 4;
     sync_host(&r);
-    if (write_frame(&r))
+    if (write_output(&r))
         return 4;
     int state = time_loop(&r);
     if (state < 0)

@@ -67,21 +67,23 @@ static void test_defaults(void)
     CHECK(parse(&o, args, out, err, sizeof out) == 0, "returns 0");
     CHECK(o.out_dir && strcmp(o.out_dir, "beam_out") == 0, "out_dir beam_out, got %s",
           o.out_dir ? o.out_dir : "(null)");
-    CHECK(o.threads == 0 && o.t_end == -1 && o.t_out == -1 && o.quiet == 0, "other defaults");
+    CHECK(o.threads == 0 && o.t_end == -1 && o.t_out == -1 && o.t_frames == -1 && o.quiet == 0,
+          "other defaults");
     CHECK(out[0] == '\0' && err[0] == '\0', "nothing printed");
 }
 
 static void test_separate_values(void)
 {
-    printf("--out DIR --threads N --end T --every T --quiet\n");
+    printf("--out DIR --threads N --end T --every T --frames T --quiet\n");
     sph_options o;
     const char *args[] = {"--out", "res/a", "--threads", "4", "--end", "0.5",
-                          "--every", "1e-3", "--quiet", NULL};
+                          "--every", "1e-3", "--frames", "0.1", "--quiet", NULL};
     CHECK(parse(&o, args, out, err, sizeof out) == 0, "returns 0 (stderr: %s)", err);
     CHECK(strcmp(o.out_dir, "res/a") == 0, "out_dir");
     CHECK(o.threads == 4, "threads 4");
     CHECK(o.t_end == 0.5, "t_end 0.5");
     CHECK(o.t_out == 1e-3, "t_out 1e-3");
+    CHECK(o.t_frames == 0.1, "t_frames 0.1");
     CHECK(o.quiet == 1, "quiet");
 }
 
@@ -122,6 +124,7 @@ static void test_errors(void)
         {"--threads", "abc"},  {"--threads", "4x"},    {"--threads=2.5"},
         {"--end", "-1"},       {"--end", "0"},         {"--end", "nan"},
         {"--end", "inf"},      {"--end", "1e400"},     {"--every="},
+        {"--frames", "0"},     {"--frames", "-1"},
         {"--out="},            {"--quiet=1"},          {"--help=1"},
         {"--outdir", "x"},     {"--end", "1s"},        {"-hx"},
     };
