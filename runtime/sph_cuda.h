@@ -161,6 +161,14 @@ template <class F> static void sph_for_max2(int n, double *out, F f)
 /* One thread: the body's scalars (reductions reset, sums advanced) in stream order. */
 #define SPH_ONCE(...) sph_for(1, [=] __device__(int) __VA_ARGS__)
 
+/* `bytes` bytes of device memory (uninitialised). */
+static inline void *sph_dev_alloc(size_t bytes)
+{
+    void *d;
+    SPH_CUDA_CHECK(cudaMalloc(&d, bytes ? bytes : 1));
+    return d;
+}
+
 /* A device copy of `bytes` bytes at h (NULL for NULL). */
 static void *sph_dev_copy(const void *h, size_t bytes)
 {

@@ -64,13 +64,6 @@ SPH_HD static inline unsigned sph_contact_bucket(const long long c[3], unsigned 
     return (unsigned)((h ^ (h >> 29)) & mask);
 }
 
-static void *sph_dev_alloc(size_t bytes)
-{
-    void *d;
-    SPH_CUDA_CHECK(cudaMalloc(&d, bytes ? bytes : 1));
-    return d;
-}
-
 /* The device contact state of scene s: its pair laws, buckets and sums. */
 static void sph_cuda_contact_init(sph_cuda_contact *c, sph_sim *s)
 {
