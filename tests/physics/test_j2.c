@@ -93,6 +93,7 @@ int main(void)
         size_t got = fread(text, 1, sizeof text - 1, f);
         text[got] = 0;
         fclose(f);
+        remove("test_j2_state.vtu");
     }
     check_close("VTU file has the state variable 'ep'", strstr(text, "Name=\"ep\"") != NULL, 1, 0);
     sph_sim_free(&sim);
