@@ -113,6 +113,34 @@ static int boxfill(const XmlCtx *x, const xmlNode *box)
     return -1;
 }
 
+/* The errors and the last step every drawing shares. */
+static int no_mk(const char *tag, SrcLoc loc)
+{
+    diag_error(loc, "<%s> comes before any <setmkbound mk=\"...\"/>: it has no mk", tag);
+    return -1;
+}
+
+static int off_plane(const XmlCtx *x, const char *tag, SrcLoc loc)
+{
+    diag_error(loc, "<%s> does not reach the plane y = %g of this 2D case (pointmin.y == "
+                    "pointmax.y): it holds no particles", tag, x->pmin[1]);
+    return -1;
+}
+
+static int outside(const char *tag, int a, SrcLoc loc)
+{
+    diag_error(loc, "<%s> lies outside the domain of <definition> along %c: it holds no "
+                    "particles", tag, "xyz"[a]);
+    return -1;
+}
+
+static int add_draw(XmlCtx *x, const XmlDraw *d)
+{
+    x->draws = xml_grow(x->draws, x->ndraws + 1, sizeof *x->draws);
+    x->draws[x->ndraws++] = *d;
+    return 0;
+}
+
 /* Nodes of one axis; 0 when some lie in the domain. */
 static int node_range(const XmlCtx *x, int a, double p, double s, long *lo, long *hi)
 {
@@ -148,10 +176,8 @@ static int drawbox(XmlCtx *x, const xmlNode *n, int mk)
     bad |= xml_point(x, size, s) != 0;
     if (bad)
         return -1;
-    if (mk < 0) {
-        diag_error(loc, "<drawbox> comes before any <setmkbound mk=\"...\"/>: it has no mk");
-        return -1;
-    }
+    if (mk < 0)
+        return no_mk("drawbox", loc);
     XmlDraw d = {XD_BOX, mk, {0}, {0}, {{0}}, 0, NULL, x->freedraw, loc};
     for (int a = 0; a < 3; a++) {
         if (s[a] < 0) {
@@ -160,17 +186,9 @@ static int drawbox(XmlCtx *x, const xmlNode *n, int mk)
         }
         if (node_range(x, a, p[a], s[a], &d.lo[a], &d.hi[a]) == 0)
             continue;
-        if (x->dim == 2 && a == 1)
-            diag_error(loc, "<drawbox> does not reach the plane y = %g of this 2D case "
-                            "(pointmin.y == pointmax.y): it holds no particles", x->pmin[1]);
-        else
-            diag_error(loc, "<drawbox> lies outside the domain of <definition> along %c: it "
-                            "holds no particles", "xyz"[a]);
-        return -1;
+        return x->dim == 2 && a == 1 ? off_plane(x, "drawbox", loc) : outside("drawbox", a, loc);
     }
-    x->draws = xml_grow(x->draws, x->ndraws + 1, sizeof *x->draws);
-    x->draws[x->ndraws++] = d;
-    return 0;
+    return add_draw(x, &d);
 }
 
 /* ------------------------------------------------------------------ the mainlist */
@@ -199,36 +217,45 @@ static int node_span(const XmlCtx *x, int a, double lo, double hi, long *klo, lo
     return *klo <= *khi ? 0 : -1;
 }
 
-static int drawcylinder(XmlCtx *x, const xmlNode *n, int mk)
+/* What <drawcylinder> and <drawsphere> share: the radius, `want` <point>s into d->p (more or
+ * fewer are an error that names `points`, what they should be), a positive radius, an mk. */
+static int read_round(XmlCtx *x, const xmlNode *n, int mk, const char *tag, int want,
+                      const char *points, XmlDraw *d)
 {
     static const char *const attrs[] = {"radius", NULL};
     static const char *const kids[] = {"point", NULL};
-    SrcLoc loc = xml_loc(x, n);
-    XmlDraw d = {XD_CYLINDER, mk, {0}, {0}, {{0}}, 0, NULL, x->freedraw, loc};
     int bad = xml_check_attrs(x, n, attrs) != 0;
     bad |= xml_check_children(x, n, kids) != 0;
-    bad |= xml_number(x, n, "radius", 1, &d.r) != 1;
+    bad |= xml_number(x, n, "radius", 1, &d->r) != 1;
     int npoints = 0;
     for (xmlNode *c = xml_first(n); c; c = xml_next(c))
-        if (xml_is(c, "point") && npoints < 2)
-            bad |= xml_point(x, c, d.p[npoints++]) != 0;
-        else if (xml_is(c, "point"))
-            npoints++;
+        if (xml_is(c, "point") && npoints++ < want)
+            bad |= xml_point(x, c, d->p[npoints - 1]) != 0;
     if (bad)
         return -1;
-    if (npoints != 2) {
-        diag_error(loc, "<drawcylinder> needs two <point>s (the ends of its axis), got %d",
-                   npoints);
+    if (npoints != want) {
+        diag_error(d->loc, "<%s> needs %s, got %d", tag, points, npoints);
         return -1;
     }
-    if (!(d.r > 0)) {
-        diag_error(loc, "<drawcylinder> attribute 'radius': must be positive (got %g)", d.r);
+    if (!(d->r > 0)) {
+        diag_error(d->loc, "<%s> attribute 'radius': must be positive (got %g)", tag, d->r);
         return -1;
     }
-    if (mk < 0) {
-        diag_error(loc, "<drawcylinder> comes before any <setmkbound mk=\"...\"/>: it has no mk");
+    return mk < 0 ? no_mk(tag, d->loc) : 0;
+}
+
+/* The nodes that [lo, hi] along axis a covers into d, or an error that the shape is outside
+ * the domain. */
+static int draw_span(XmlCtx *x, const char *tag, int a, double lo, double hi, XmlDraw *d)
+{
+    return node_span(x, a, lo, hi, &d->lo[a], &d->hi[a]) ? outside(tag, a, d->loc) : 0;
+}
+
+static int drawcylinder(XmlCtx *x, const xmlNode *n, int mk)
+{
+    XmlDraw d = {XD_CYLINDER, mk, {0}, {0}, {{0}}, 0, NULL, x->freedraw, xml_loc(x, n)};
+    if (read_round(x, n, mk, "drawcylinder", 2, "two <point>s (the ends of its axis)", &d))
         return -1;
-    }
     double len2 = 0;
     for (int a = 0; a < 3; a++)
         len2 += (d.p[1][a] - d.p[0][a]) * (d.p[1][a] - d.p[0][a]);
@@ -237,75 +264,35 @@ static int drawcylinder(XmlCtx *x, const xmlNode *n, int mk)
         double ext = d.r * sqrt(fmax(0.0, 1.0 - u2));
         double lo = fmin(d.p[0][a], d.p[1][a]) - ext, hi = fmax(d.p[0][a], d.p[1][a]) + ext;
         if (x->dim == 2 && a == 1) {
-            if (lo > x->pmin[1] + 1e-9 * x->dp || hi < x->pmin[1] - 1e-9 * x->dp) {
-                diag_error(loc, "<drawcylinder> does not reach the plane y = %g of this 2D case "
-                                "(pointmin.y == pointmax.y): it holds no particles", x->pmin[1]);
-                return -1;
-            }
+            if (lo > x->pmin[1] + 1e-9 * x->dp || hi < x->pmin[1] - 1e-9 * x->dp)
+                return off_plane(x, "drawcylinder", d.loc);
             continue;
         }
-        if (node_span(x, a, lo, hi, &d.lo[a], &d.hi[a])) {
-            diag_error(loc, "<drawcylinder> lies outside the domain of <definition> along %c: "
-                            "it holds no particles", "xyz"[a]);
+        if (draw_span(x, "drawcylinder", a, lo, hi, &d))
             return -1;
-        }
     }
-    x->draws = xml_grow(x->draws, x->ndraws + 1, sizeof *x->draws);
-    x->draws[x->ndraws++] = d;
-    return 0;
+    return add_draw(x, &d);
 }
 
 /* <drawsphere radius="r"><point .../></drawsphere>: the sph sphere; in a 2D case the disc
  * the sphere cuts from the plane y = pointmin.y. */
 static int drawsphere(XmlCtx *x, const xmlNode *n, int mk)
 {
-    static const char *const attrs[] = {"radius", NULL};
-    static const char *const kids[] = {"point", NULL};
-    SrcLoc loc = xml_loc(x, n);
-    XmlDraw d = {XD_SPHERE, mk, {0}, {0}, {{0}}, 0, NULL, x->freedraw, loc};
-    int bad = xml_check_attrs(x, n, attrs) != 0;
-    bad |= xml_check_children(x, n, kids) != 0;
-    bad |= xml_number(x, n, "radius", 1, &d.r) != 1;
-    int npoints = 0;
-    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
-        if (xml_is(c, "point") && npoints++ == 0)
-            bad |= xml_point(x, c, d.p[0]) != 0;
-    if (bad)
+    XmlDraw d = {XD_SPHERE, mk, {0}, {0}, {{0}}, 0, NULL, x->freedraw, xml_loc(x, n)};
+    if (read_round(x, n, mk, "drawsphere", 1, "one <point> (its centre)", &d))
         return -1;
-    if (npoints != 1) {
-        diag_error(loc, "<drawsphere> needs one <point> (its centre), got %d", npoints);
-        return -1;
-    }
-    if (!(d.r > 0)) {
-        diag_error(loc, "<drawsphere> attribute 'radius': must be positive (got %g)", d.r);
-        return -1;
-    }
-    if (mk < 0) {
-        diag_error(loc, "<drawsphere> comes before any <setmkbound mk=\"...\"/>: it has no mk");
-        return -1;
-    }
     if (x->dim == 2) { /* the disc in the plane of the case */
         const double off = x->pmin[1] - d.p[0][1];
-        if (fabs(off) >= d.r) {
-            diag_error(loc, "<drawsphere> does not reach the plane y = %g of this 2D case "
-                            "(pointmin.y == pointmax.y): it holds no particles", x->pmin[1]);
-            return -1;
-        }
+        if (fabs(off) >= d.r)
+            return off_plane(x, "drawsphere", d.loc);
         d.r = sqrt(d.r * d.r - off * off);
         d.p[0][1] = x->pmin[1];
     }
-    for (int a = 0; a < 3; a++) {
-        if (x->dim == 2 && a == 1)
-            continue;
-        if (node_span(x, a, d.p[0][a] - d.r, d.p[0][a] + d.r, &d.lo[a], &d.hi[a])) {
-            diag_error(loc, "<drawsphere> lies outside the domain of <definition> along %c: it "
-                            "holds no particles", "xyz"[a]);
+    for (int a = 0; a < 3; a++)
+        if (!(x->dim == 2 && a == 1) &&
+            draw_span(x, "drawsphere", a, d.p[0][a] - d.r, d.p[0][a] + d.r, &d))
             return -1;
-        }
-    }
-    x->draws = xml_grow(x->draws, x->ndraws + 1, sizeof *x->draws);
-    x->draws[x->ndraws++] = d;
-    return 0;
+    return add_draw(x, &d);
 }
 
 /* <setfrdrawmode auto="true|false"/>: GenCase's free drawing mode. */
@@ -356,17 +343,12 @@ static int drawfile(XmlCtx *x, const xmlNode *n, int mk)
         diag_error(loc, "<%s>: surfaces from files are supported in 3D cases only", xml_name(n));
         return -1;
     }
-    if (mk < 0) {
-        diag_error(loc, "<%s> comes before any <setmkbound mk=\"...\"/>: it has no mk",
-                   xml_name(n));
-        return -1;
-    }
+    if (mk < 0)
+        return no_mk(xml_name(n), loc);
     XmlDraw d = {XD_SURFACE, mk, {0}, {0}, {{0}}, 0, file, x->freedraw, loc};
     for (int a = 0; a < 3; a++)
         d.hi[a] = x->nodes[a];
-    x->draws = xml_grow(x->draws, x->ndraws + 1, sizeof *x->draws);
-    x->draws[x->ndraws++] = d;
-    return 0;
+    return add_draw(x, &d);
 }
 
 /* Drawings the importer does not handle yet. */
