@@ -646,6 +646,15 @@ void emit_model_desc(Emitter *E)
             E->cuda ? "    .sync_host = model_sync_host,\n" : "");
 }
 
+void emit_bc_passes(Emitter *E, const BodyModel *b, const BodyPlan *p)
+{
+    emit_bc_values(E, b);
+    if (p->velocity_bcs)
+        emit_bc_pass(E, b, BC_VELOCITY);
+    if (p->force_bcs)
+        emit_bc_pass(E, b, BC_FORCE);
+}
+
 int emit_c_program(const Model *m, const char *templates_dir, FILE *out)
 {
     BodyPlan *plans = calloc((size_t)m->nbodies, sizeof *plans);
@@ -662,11 +671,7 @@ int emit_c_program(const Model *m, const char *templates_dir, FILE *out)
         gravity(&E, b, &plans[i]);
         emit_template(&E, "body_particle.c", b, &plans[i]);
         emit_template(&E, "body_forces.c", b, &plans[i]);
-        emit_bc_values(&E, b);
-        if (plans[i].velocity_bcs)
-            emit_bc_pass(&E, b, BC_VELOCITY);
-        if (plans[i].force_bcs)
-            emit_bc_pass(&E, b, BC_FORCE);
+        emit_bc_passes(&E, b, &plans[i]);
         emit_template(&E, "body_update.c", b, &plans[i]);
         emit_template(&E, "body_output.c", b, &plans[i]);
         emit_fracture_restrict(out, E.m, b, 0);

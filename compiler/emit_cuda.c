@@ -75,11 +75,7 @@ int emit_cuda_program(const Model *m, const char *templates_dir, FILE *out)
             emit_template(&E, "body_particle.c", b, &plans[i]);
             emit_template(&E, "body_cuda.cu", b, &plans[i]);
             emit_template(&E, "body_output.c", b, &plans[i]);
-            emit_bc_values(&E, b);
-            if (plans[i].velocity_bcs)
-                emit_bc_pass(&E, b, BC_VELOCITY);
-            if (plans[i].force_bcs)
-                emit_bc_pass(&E, b, BC_FORCE);
+            emit_bc_passes(&E, b, &plans[i]);
             emit_fracture_restrict(out, m, b, 1);
         }
         scene_step_cuda(&E);

@@ -25,6 +25,8 @@ void emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyP
 void emit_bc_values(Emitter *E, const BodyModel *b);
 /* The velocity or force boundary-condition pass of body b (loops as SPH_FOR for CUDA). */
 void emit_bc_pass(Emitter *E, const BodyModel *b, BcKind kind);
+/* Body b's BC value functions and the passes its plan needs. */
+void emit_bc_passes(Emitter *E, const BodyModel *b, const BodyPlan *p);
 /* Body i's part of the step up to its internal forces, and from its force BCs to the end. */
 void emit_step_forces(Emitter *E, int i);
 void emit_step_update(Emitter *E, int i);
