@@ -339,11 +339,8 @@ static void sph_cuda_to_host(sph_body *h, const sph_body *d)
     if (h->state) /* plasticity: the VTU files and the plastic work read it */
         SPH_CUDA_CHECK(cudaMemcpy(h->state, d->state, n * (size_t)h->desc->nstate * sizeof(double),
                                   cudaMemcpyDeviceToHost));
-    /* the viscous sums; vmax2 and amax2 come back with every step, and the host's initial
-     * ones stand until then */
-    double red[SPH_NRED];
-    SPH_CUDA_CHECK(cudaMemcpy(red, d->red, sizeof red, cudaMemcpyDeviceToHost));
-    h->visc_rate = red[SPH_RED_VISC_RATE], h->visc_dissipated = red[SPH_RED_VISC_DISSIPATED];
+    /* (the sums come back with every step, sph_cuda_reductions; before the first, the
+     * host's initial ones are the device's) */
 }
 
 #endif

@@ -102,8 +102,8 @@ static void sph_cuda_contact_init(sph_cuda_contact *c, sph_sim *s)
         idx[g] = g;
     c->idx = (int *)sph_dev_copy(idx.data(), (size_t)n * sizeof(int));
     c->order = (int *)sph_dev_alloc((size_t)n * sizeof(int));
-    c->bstart = (int *)sph_dev_alloc(buckets * sizeof(int));
-    c->bend = (int *)sph_dev_alloc(buckets * sizeof(int));
+    c->bstart = (int *)sph_dev_alloc(2 * buckets * sizeof(int)); /* bend follows: one memset */
+    c->bend = c->bstart + buckets;
     c->tmp = NULL, c->tmp_bytes = 0;
 #ifndef SPH_CUDA_EMULATE
     SPH_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(NULL, c->tmp_bytes, c->key, c->skey, c->idx,
@@ -137,8 +137,7 @@ static void sph_cuda_contact_sort(sph_cuda_contact *c)
     for (int g = 0; g < n; g++)
         skey[g] = key[order[g]];
 #endif
-    SPH_CUDA_CHECK(cudaMemset(bstart, 0, ((size_t)mask + 1) * sizeof(int)));
-    SPH_CUDA_CHECK(cudaMemset(bend, 0, ((size_t)mask + 1) * sizeof(int)));
+    SPH_CUDA_CHECK(cudaMemset(bstart, 0, 2 * ((size_t)mask + 1) * sizeof(int))); /* and bend */
     SPH_FOR(p, n, {
         const unsigned k = skey[p];
         if (p == 0 || skey[p - 1] != k)
