@@ -8,6 +8,7 @@
  *  - SPH_FOR_MAX2(i, n, out, { ...; return sph_max2{x, y}; }): the same loop that also
  *    reduces out[0] = max x and out[1] = max y (x, y >= 0) per block, then once per block
  *    with an atomic: the |v|^2 and |a|^2 bounds of the time step (eq. 65-66).
+ *  - SPH_FOR_SUM(i, n, out, { ...; return x; }): the same for *out += the sum of x.
  *  - The device view of a body: a copy of the host sph_body in managed memory, marked read
  *    mostly so that host and device each keep a copy of its page, whose arrays live in device
  *    memory; the generated code reads `b->u[...]` on either side and the device writes only
@@ -77,6 +78,12 @@ struct sph_max2 {
     double x, y;
 };
 
+/* Threads per block of the passes (a multiple of 32, at most 1024). */
+#ifndef SPH_CUDA_BLOCK
+#define SPH_CUDA_BLOCK 256
+#endif
+static inline int sph_blocks(int n) { return (n + SPH_CUDA_BLOCK - 1) / SPH_CUDA_BLOCK; }
+
 #ifndef SPH_CUDA_EMULATE
 template <class F> __global__ void sph_for_kernel(int n, F f)
 {
@@ -87,7 +94,7 @@ template <class F> __global__ void sph_for_kernel(int n, F f)
 template <class F> static void sph_for(int n, F f)
 {
     if (n > 0)
-        sph_for_kernel<<<(n + 255) / 256, 256>>>(n, f);
+        sph_for_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, f);
 }
 
 /* *a = max(*a, v) for v >= 0: non-negative doubles order like their bit patterns. */
@@ -134,7 +141,41 @@ template <class F> __global__ void sph_for_max2_kernel(int n, double *out, F f)
 template <class F> static void sph_for_max2(int n, double *out, F f)
 {
     if (n > 0)
-        sph_for_max2_kernel<<<(n + 255) / 256, 256>>>(n, out, f);
+        sph_for_max2_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, out, f);
+}
+
+/* The sum of a warp's values, in every lane. */
+__device__ static inline double sph_warp_sum(double x)
+{
+    for (int o = 16; o > 0; o >>= 1)
+        x += __shfl_xor_sync(0xffffffffu, x, o);
+    return x;
+}
+
+/* As sph_for_max2_kernel, for a sum: warp, block, then one atomic add per block (an atomic
+ * per thread on one address serialises a million threads). */
+template <class F> __global__ void sph_for_sum_kernel(int n, double *out, F f)
+{
+    double x = 0;
+    for (int i = blockIdx.x * blockDim.x + threadIdx.x; i < n; i += blockDim.x * gridDim.x)
+        x += f(i);
+    __shared__ double warp[32];
+    const int lane = threadIdx.x & 31, w = threadIdx.x >> 5;
+    x = sph_warp_sum(x);
+    if (lane == 0)
+        warp[w] = x;
+    __syncthreads();
+    if (w)
+        return;
+    x = sph_warp_sum(lane < (int)(blockDim.x >> 5) ? warp[lane] : 0.0);
+    if (lane == 0)
+        atomicAdd(out, x);
+}
+
+template <class F> static void sph_for_sum(int n, double *out, F f)
+{
+    if (n > 0)
+        sph_for_sum_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, out, f);
 }
 #else
 template <class F> static void sph_for(int n, F f)
@@ -144,6 +185,12 @@ template <class F> static void sph_for(int n, F f)
 }
 
 static inline void sph_atomic_max_pos(double *a, double v) { *a = v > *a ? v : *a; }
+
+template <class F> static void sph_for_sum(int n, double *out, F f)
+{
+    for (int i = 0; i < n; i++)
+        *out += f(i);
+}
 
 template <class F> static void sph_for_max2(int n, double *out, F f)
 {
@@ -158,6 +205,8 @@ template <class F> static void sph_for_max2(int n, double *out, F f)
 #define SPH_FOR(i, n, ...) sph_for((n), [=] __device__(int i) __VA_ARGS__)
 #define SPH_FOR_MAX2(i, n, out, ...) \
     sph_for_max2((n), (out), [=] __device__(int i) -> sph_max2 __VA_ARGS__)
+#define SPH_FOR_SUM(i, n, out, ...) \
+    sph_for_sum((n), (out), [=] __device__(int i) -> double __VA_ARGS__)
 /* One thread: the body's scalars (reductions reset, sums advanced) in stream order. */
 #define SPH_ONCE(...) sph_for(1, [=] __device__(int) __VA_ARGS__)
 
@@ -180,6 +229,19 @@ static void *sph_dev_copy(const void *h, size_t bytes)
     return d;
 }
 
+/* A device copy of the table h of `entries` entries of `width` numbers, plus one entry of
+ * zeros (NULL for NULL). */
+static sph_real *sph_dev_table(const sph_real *h, size_t entries, size_t width)
+{
+    if (!h)
+        return NULL;
+    sph_real *t = (sph_real *)calloc((entries + 1) * width, sizeof(sph_real));
+    memcpy(t, h, entries * width * sizeof(sph_real));
+    sph_real *d = (sph_real *)sph_dev_copy(t, (entries + 1) * width * sizeof(sph_real));
+    free(t);
+    return d;
+}
+
 /* Managed memory that host and device only read from now on: each keeps its own copy. */
 static void sph_read_mostly(const void *p, size_t bytes)
 {
@@ -199,24 +261,36 @@ static void sph_read_mostly(const void *p, size_t bytes)
 #endif
 }
 
-/* Full pair lists from the half lists (j > i): i gets (j, k), j gets (i, ~k); each particle's
- * pairs sorted by offset, then laid out slot by slot (sphrt.h, fb_*).  A pair is packed as
- * key << 32 | j, key = 2k or 2~k + 1 (every offset its own key), so that sorting the packed
- * words sorts by offset. */
+/* Full pair lists from the half lists (j > i): i gets (j, k), j gets (i, ~k), laid out slot
+ * by slot (sphrt.h, fb_*).  A pair is packed as key << 32 | j, key = 2k or 2~k + 1 (every
+ * offset its own key), and each particle's pairs are sorted by key.  When the body's pairs
+ * use few distinct keys (a lattice: one table entry per offset) every key gets a fixed
+ * slot, its rank among the keys used, and a particle's missing neighbours are holes: the
+ * particle itself with the zero table entry ntab, which adds nothing, so the passes need no
+ * branch.  A warp at one slot then reads one offset in every thread, including threads
+ * whose particles lie near a surface.  Otherwise the pairs are packed from slot 0. */
 static void sph_full_lists(const sph_body *h, int **count, int **nb, int **k, int *slots)
 {
-    const size_t n = (size_t)h->n;
+    const size_t n = (size_t)h->n, nkey = 2 * (size_t)h->ntab + 2;
     size_t *start = (size_t *)calloc(n + 1, sizeof(size_t));
     for (size_t i = 0; i < n; i++)
         for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++)
             start[i + 1]++, start[h->hb[p] + 1]++;
     *count = (int *)malloc((n + 1) * sizeof(int));
-    int maxc = 0;
+    int maxc = 0, used = 0;
     for (size_t i = 0; i < n; i++) {
         (*count)[i] = (int)start[i + 1];
         maxc = (int)start[i + 1] > maxc ? (int)start[i + 1] : maxc;
         start[i + 1] += start[i];
     }
+    /* the rank of each key the pairs use, when there can be few (not one per pair) */
+    int *slot_of = nkey <= 4 * (size_t)maxc + 4 ? (int *)calloc(nkey, sizeof(int)) : NULL;
+    for (size_t i = 0; slot_of && i < n; i++)
+        for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++)
+            slot_of[2 * (size_t)h->hb_k[p]] = slot_of[2 * (size_t)h->hb_k[p] + 1] = 1;
+    for (size_t key = 0; slot_of && key < nkey; key++)
+        slot_of[key] = slot_of[key] ? used++ : -1;
+    const int fixed = slot_of && used <= maxc + maxc / 2; /* holes: at most half the slots */
     uint64_t *packed = (uint64_t *)malloc((start[n] + 1) * sizeof(uint64_t));
     size_t *fill = (size_t *)malloc((n + 1) * sizeof(size_t));
     memcpy(fill, start, n * sizeof(size_t));
@@ -227,19 +301,24 @@ static void sph_full_lists(const sph_body *h, int **count, int **nb, int **k, in
             packed[fill[j]++] = (key + 1) << 32 | i;
         }
     free(fill);
-    *slots = maxc;
-    *nb = (int *)calloc((size_t)maxc * n + 1, sizeof(int));
-    *k = (int *)calloc((size_t)maxc * n + 1, sizeof(int));
+    *slots = fixed ? used : maxc;
+    *nb = (int *)malloc(((size_t)*slots * n + 1) * sizeof(int));
+    *k = (int *)malloc(((size_t)*slots * n + 1) * sizeof(int));
+    for (size_t e = 0; e < (size_t)*slots * n; e++) /* holes: the particle and a zero entry */
+        (*nb)[e] = (int)(e % n), (*k)[e] = h->ntab;
 #pragma omp parallel for schedule(dynamic, 1024)
     for (size_t i = 0; i < n; i++) {
         std::sort(packed + start[i], packed + start[i + 1]);
         for (size_t a = 0; a < start[i + 1] - start[i]; a++) {
             const uint64_t w = packed[start[i] + a], key = w >> 32;
-            (*nb)[a * n + i] = (int)(w & 0xffffffffu);
-            (*k)[a * n + i] = key & 1 ? ~(int)(key >> 1) : (int)(key >> 1);
+            const size_t s = fixed ? (size_t)slot_of[key] : a;
+            (*nb)[s * n + i] = (int)(w & 0xffffffffu);
+            (*k)[s * n + i] = key & 1 ? ~(int)(key >> 1) : (int)(key >> 1);
+            if (fixed)
+                (*count)[i] = (int)s + 1; /* the last slot used, holes before it included */
         }
     }
-    free(start), free(packed);
+    free(start), free(packed), free(slot_of);
 }
 
 /* The device view of host body h (see the top of this file). */
@@ -267,10 +346,10 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->H = (double *)sph_dev_copy(h->H, n * sizeof(double));
     b->lap = (double *)sph_dev_copy(h->lap, n * sizeof(double));
     b->sd_n = (double *)sph_dev_copy(h->sd_n, n * sizeof(double));
-    b->ltab = (sph_real *)sph_dev_copy(h->ltab, nt * sizeof(sph_real));
-    b->wtab = (sph_real *)sph_dev_copy(h->wtab, nt * d * sizeof(sph_real));
-    b->gtab = (sph_real *)sph_dev_copy(h->gtab, nt * sizeof(sph_real));
-    b->htab = (sph_real *)sph_dev_copy(h->htab, nt * sizeof(sph_real));
+    b->ltab = sph_dev_table(h->ltab, nt, 1); /* each with the zero entry of holes */
+    b->wtab = sph_dev_table(h->wtab, nt, d);
+    b->gtab = sph_dev_table(h->gtab, nt, 1);
+    b->htab = sph_dev_table(h->htab, nt, 1);
     int *count, *nb, *k, slots;
     sph_full_lists(h, &count, &nb, &k, &slots);
     b->fb_count = (int *)sph_dev_copy(count, n * sizeof(int));

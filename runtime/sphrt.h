@@ -281,8 +281,11 @@ struct sph_body {
      * particle's pairs, stored slot by slot: pair s of particle i (s < fb_count[i]) is
      * fb[s*n + i], so the threads of a warp read consecutive words.  fb_k is the offset table
      * entry k of the pair as the half list holds it, or ~k for the reversed pair
-     * (w_ji = -w_ij); each particle's pairs are sorted by that entry, so that on a lattice
-     * slot s is the same offset for every interior particle.  NULL on the CPU. */
+     * (w_ji = -w_ij).  On a lattice every offset has its own slot, the same for all
+     * particles (where a particle lacks that neighbour, near a surface or a notch, the slot
+     * holds i itself and the zero table entry ntab the device tables end with), so a warp's
+     * threads at one slot read j = i + const, consecutive words; off a lattice
+     * each particle's pairs are packed and sorted by entry.  NULL on the CPU. */
     int *fb_count, *fb, *fb_k;
     /* Device targets: the reductions below as the device sums them (SPH_RED_* of
      * sph_cuda.h), read back once per step.  NULL on the CPU. */

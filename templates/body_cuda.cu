@@ -3,7 +3,9 @@
  * view (runtime/sph_cuda.h), whose full pair lists let every thread sum its own particle's
  * pairs, so no two threads write the same particle.  The pair terms are those of the CPU
  * passes, computed from both sides (w_ji = -w_ij).  Pair s of particle i is entry s*n + i of
- * the lists: a warp reads its particles' pairs as consecutive words. */
+ * the lists: a warp reads its particles' pairs as consecutive words; on a lattice slot s is
+ * one offset for every particle, and where a particle lacks it the slot holds the particle
+ * itself with a zero table entry (sph_full_lists). */
 
 /* Pass 1-2, per particle: A_i = sum_j V_j (u_j - u_i) (x) grad W_ij over the particle's
  * full list, then F, the law, P L and cof(F) L (@B@_particle_stress, body_particle.c). */
@@ -43,8 +45,12 @@ static void @B@_momentum_pass(sph_body *b)
     enum { D = @DIM@ };
 //@if VISCOSITY
     sph_cuda_zero(b->red + SPH_RED_VISC_RATE, 1);
+    /* each thread returns its particle's share of the viscous power: one atomic per block */
+    SPH_FOR_SUM(i, b->n, b->red + SPH_RED_VISC_RATE, {
 //@endif
+//@if NO_VISCOSITY
     SPH_FOR(i, b->n, {
+//@endif
         const sph_real inv_rho = (sph_real)(1.0 / b->rho0);
         const size_t n = (size_t)b->n, end = i + n * (size_t)b->fb_count[i];
         sph_real Qi[D * D]; /* Q and Cv entry by entry (SPH_AT) */
@@ -102,7 +108,7 @@ static void @B@_momentum_pass(sph_body *b)
         for (int r = 0; r < D; r++)
             b->a[i * D + r] = g[r] + fi[r];
 //@if VISCOSITY
-        atomicAdd(&b->red[SPH_RED_VISC_RATE], -0.5 * b->mass * (double)pv); /* each pair twice */
+        return -0.5 * b->mass * (double)pv; /* each pair twice */
 //@endif
     });
 }

@@ -133,7 +133,8 @@ SPH_FN void @B@_hourglass(const sph_body *b, int i, int j, int k, sph_real *f)
                      b->F[(size_t)j * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)]) * Xij[c];
         delta += (pred - 2 * xij[r]) * xij[r];
     }
-    const double hg = @HG@ * b->htab[k] * delta / r2; /* delta/r times 1/r */
+    /* delta/r times 1/r; r2 = 0 only for the empty slots of the device's lists */
+    const double hg = r2 > 0 ? @HG@ * b->htab[k] * delta / r2 : 0;
     for (int r = 0; r < D; r++)
         f[r] -= (sph_real)(hg * xij[r]);
 }
