@@ -21,7 +21,9 @@
  * (groups: runs of crack particles with at most one intact particle inside; with bands up
  * to 1 mm wide that leaves more than 1 mm of intact particles between the branches); the
  * same test restricted to the column 2 mm behind the crack front (largest x of the crack)
- * is reported too, and whether the first split column is still split at the end.  Crack
+ * is reported too, and whether the first split column is still split at the end; and the
+ * time the crack front passed the fork, the x where the line fitted to the branches'
+ * separation at the end (8 mm from the first split column on) comes to zero.  Crack
  * length: the crack traced column by column: in each column the groups' mean z, each
  * joined to the nearest group of the previous column (the first column to the notch tip),
  * summing the lengths of the joins.  Fracture energy: sph_fracture_energy.
@@ -282,11 +284,14 @@ static void print_initiation(const char *key, const initiation *in)
 #define CB_ZTIP 20e-3
 #define CB_SPLIT 2e-3  /* branches: two groups of a column with centres this far apart */
 #define CB_BEHIND 2e-3 /* the column this far behind the front (second criterion) */
+#define CB_FIT 8e-3    /* the branch point: separations fitted over this length */
 
 typedef struct {
     initiation init;
     double t_split, x_split, front_split;    /* first split column anywhere ahead of the tip */
     double t_behind, x_behind, front_behind; /* first split of the column 2 mm behind the front */
+    double *ft, *fx; /* the crack front x at every check, and when */
+    int nfront, capfront;
 } cb_state;
 
 static void cb_init(cb_state *c)
@@ -294,14 +299,25 @@ static void cb_init(cb_state *c)
     *c = (cb_state){.init = {.t = -1}, .t_split = -1, .t_behind = -1};
 }
 
+static void cb_free(cb_state *c) { free(c->ft), free(c->fx); }
+
+static void cb_front(cb_state *c, double t, double front)
+{
+    if (c->nfront == c->capfront) {
+        c->capfront = c->capfront ? 2 * c->capfront : 1024;
+        c->ft = (double *)realloc(c->ft, (size_t)c->capfront * sizeof(double));
+        c->fx = (double *)realloc(c->fx, (size_t)c->capfront * sizeof(double));
+    }
+    c->ft[c->nfront] = t, c->fx[c->nfront++] = front;
+}
+
 /* The branching criteria, evaluated on the crack as it is at time t. */
 static void cb_check(cb_state *c, lattice *L, double t)
 {
-    if (c->t_split >= 0 && c->t_behind >= 0)
-        return;
     if (crack_find(L, CB_XTIP, CB_ZTIP, 2e-3) == 0)
         return;
     const double front = L->xmax_crack;
+    cb_front(c, t, front);
     if (c->t_split < 0)
         for (int ix = column_of(L, CB_XTIP); ix < L->nx; ix++)
             if (column_split(L, ix) > CB_SPLIT) {
@@ -328,6 +344,38 @@ static void cb_progress(lattice *L, const sph_body *b, double t, int detail)
         print_groups(L, L->xmax_crack - CB_BEHIND);
 }
 
+/* The branch point, from the crack at the end: the separation of the two branches' centres
+ * in the columns from the first split one to CB_FIT beyond it, fitted by a line in x and
+ * extrapolated to zero.  The 2 mm of the split criterion take the crack about 1.5 mm past
+ * where it forks; the time the crack front passed the branch point has no such lag.
+ * Returns 0 with *xb and *tb, or -1 when there is no fit. */
+static int cb_branch_point(const cb_state *c, const lattice *L, double *xb, double *tb)
+{
+    double s1 = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    group g[MAXGROUPS];
+    if (c->t_split < 0)
+        return -1;
+    for (int ix = column_of(L, c->x_split); ix <= column_of(L, c->x_split + CB_FIT); ix++) {
+        if (column_groups(L, ix, g) != 2)
+            continue;
+        const double x = L->xlo + ix * L->dx, y = g[1].zmean - g[0].zmean;
+        s1 += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    const double det = s1 * sxx - sx * sx;
+    if (s1 < 3 || det <= 0)
+        return -1;
+    const double slope = (s1 * sxy - sx * sy) / det, icpt = (sy - slope * sx) / s1;
+    if (slope <= 0)
+        return -1;
+    *xb = -icpt / slope;
+    for (int k = 0; k < c->nfront; k++)
+        if (c->fx[k] >= *xb) {
+            *tb = c->ft[k];
+            return 0;
+        }
+    return -1;
+}
+
 static void cb_results(const cb_state *c, lattice *L, const sph_body *b)
 {
     const double Gc = b->desc->fracture->Gc;
@@ -345,6 +393,11 @@ static void cb_results(const cb_state *c, lattice *L, const sph_body *b)
                column_split(L, column_of(L, c->x_split)) > CB_SPLIT ? "yes" : "no");
     else
         printf("result branch_us none\n");
+    double xb, tb;
+    if (cb_branch_point(c, L, &xb, &tb) == 0)
+        printf("result branch_point_x_mm %.2f\nresult branch_point_us %.2f\n", xb * 1e3, tb * 1e6);
+    else
+        printf("result branch_point_us none\n");
     if (c->t_behind >= 0)
         printf("result branch2_us %.2f\nresult branch2_x_mm %.2f\nresult branch2_front_mm %.2f\n",
                c->t_behind * 1e6, c->x_behind * 1e3, c->front_behind * 1e3);
@@ -576,6 +629,7 @@ int main(int argc, char **argv)
     else
         cb_results(&cb, &L, b);
     lattice_free(&L);
+    cb_free(&cb);
     sph_sim_free(&sim);
     return 0;
 }
