@@ -168,34 +168,57 @@ static long offset_key(const sph_body *b, const double *dX)
     return key;
 }
 
+/* Table entry k from pair p = (i, nb[p]) with kernel gradient w_p. */
+static void table_entry(sph_body *b, int k, int i, long p, const double *w, sph_kernel_kind kernel)
+{
+    const int D = b->dim;
+    double dX[3], r2 = 0;
+    for (int c = 0; c < D; c++) {
+        dX[c] = b->X[(size_t)i * D + c] - b->X[(size_t)b->nb[p] * D + c];
+        b->wtab[(size_t)k * D + c] = (sph_real)w[(size_t)p * D + c];
+        r2 += dX[c] * dX[c];
+    }
+    b->gtab[k] = (sph_real)viscosity_factor(b, dX, w + (size_t)p * D);
+    b->htab[k] = (sph_real)(b->vol * sph_kernel_w(kernel, D, sqrt(r2), b->h) / (b->rho0 * r2));
+    if (b->ltab) /* eq. 62: 2 V_j (r0 . grad W) / r0^2 = 2 V dW/dr / r */
+        b->ltab[k] = (sph_real)(2 * b->vol * sph_kernel_dwdr_over_r(kernel, D, sqrt(r2), b->h));
+}
+
 /* Per-pair tables (see sphrt.h): one entry per distinct lattice offset, or one per pair
- * when the particles are not on one lattice. */
+ * when the particles are not on one lattice.  The offsets' keys are found in parallel; the
+ * entries are numbered in pair order (so the tables do not depend on the thread count), and
+ * on a lattice each is computed once, from the first pair that has it. */
 static void offset_tables(sph_body *b, double *w, sph_kernel_kind kernel)
 {
     const int D = b->dim;
-    const long np = b->npairs;
+    const long np = b->npairs, nslots = 1L << 21;
     b->nb_k = zalloc((size_t)np, sizeof(int));
-    int *slot = malloc(sizeof(int) * ((size_t)1 << 21));
-    long nslots = 1L << 21;
-    for (long s = 0; s < nslots; s++)
-        slot[s] = -1;
-    int ntab = 0, lattice = 1;
-    for (int i = 0; i < b->n && lattice; i++)
-        for (int p = b->nb_start[i]; p < b->nb_start[i + 1] && lattice; p++) {
+    int lattice = 1;
+#pragma omp parallel for schedule(dynamic, 1024) reduction(&& : lattice)
+    for (int i = 0; i < b->n; i++)
+        for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
             double dX[3];
             for (int k = 0; k < D; k++)
                 dX[k] = b->X[(size_t)i * D + k] - b->X[(size_t)b->nb[p] * D + k];
-            long key = offset_key(b, dX);
-            if (key < 0 || key >= nslots) {
-                lattice = 0;
-                break;
-            }
-            if (slot[key] < 0)
-                slot[key] = ntab++;
-            b->nb_k[p] = slot[key];
+            const long key = offset_key(b, dX);
+            lattice = lattice && key >= 0 && key < nslots;
+            b->nb_k[p] = (int)key;
         }
-    free(slot);
-    if (!lattice)
+    int ntab = 0, *slot = NULL, *first_i = NULL;
+    long *first_p = NULL;
+    if (lattice) {
+        slot = malloc(sizeof(int) * (size_t)nslots);
+        first_i = malloc(sizeof(int) * (size_t)nslots), first_p = malloc(sizeof(long) * (size_t)nslots);
+        for (long s = 0; s < nslots; s++)
+            slot[s] = -1;
+        for (int i = 0; i < b->n; i++)
+            for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
+                int *k = &slot[b->nb_k[p]];
+                if (*k < 0)
+                    first_i[ntab] = i, first_p[ntab] = p, *k = ntab++;
+                b->nb_k[p] = *k;
+            }
+    } else
         ntab = (int)np;
     b->ntab = ntab;
     b->wtab = zalloc((size_t)ntab * D, sizeof *b->wtab);
@@ -203,22 +226,17 @@ static void offset_tables(sph_body *b, double *w, sph_kernel_kind kernel)
     b->htab = zalloc((size_t)ntab, sizeof *b->htab);
     if (b->desc->fracture)
         b->ltab = zalloc((size_t)ntab, sizeof *b->ltab);
+    if (lattice) {
+        for (int k = 0; k < ntab; k++)
+            table_entry(b, k, first_i[k], first_p[k], w, kernel);
+        free(slot), free(first_i), free(first_p);
+        return;
+    }
+#pragma omp parallel for schedule(dynamic, 1024)
     for (int i = 0; i < b->n; i++)
         for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
-            int k = lattice ? b->nb_k[p] : p;
-            b->nb_k[p] = k;
-            double dX[3];
-            for (int c = 0; c < D; c++) {
-                dX[c] = b->X[(size_t)i * D + c] - b->X[(size_t)b->nb[p] * D + c];
-                b->wtab[(size_t)k * D + c] = (sph_real)w[(size_t)p * D + c];
-            }
-            b->gtab[k] = (sph_real)viscosity_factor(b, dX, w + (size_t)p * D);
-            double r2 = 0;
-            for (int c = 0; c < D; c++)
-                r2 += dX[c] * dX[c];
-            b->htab[k] = (sph_real)(b->vol * sph_kernel_w(kernel, D, sqrt(r2), b->h) / (b->rho0 * r2));
-            if (b->ltab) /* eq. 62: 2 V_j (r0 . grad W) / r0^2 = 2 V dW/dr / r */
-                b->ltab[k] = (sph_real)(2 * b->vol * sph_kernel_dwdr_over_r(kernel, D, sqrt(r2), b->h));
+            b->nb_k[p] = p;
+            table_entry(b, p, i, p, w, kernel);
         }
 }
 
@@ -228,24 +246,28 @@ static void half_lists(sph_body *b)
 {
     b->hb_start = zalloc((size_t)b->n + 1, sizeof(int));
     int reach = 1;
-    long q = 0;
-    for (int i = 0; i < b->n; i++)
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < b->n; i++) { /* counts, then their running sum */
+        int c = 0;
         for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++)
-            q += b->nb[p] > i;
-    b->hb = zalloc((size_t)q, sizeof(int));
-    b->hb_k = zalloc((size_t)q, sizeof(int));
-    q = 0;
+            c += b->nb[p] > i;
+        b->hb_start[i + 1] = c;
+    }
+    for (int i = 0; i < b->n; i++)
+        b->hb_start[i + 1] += b->hb_start[i];
+    const size_t q = (size_t)b->hb_start[b->n];
+    b->hb = zalloc(q, sizeof(int));
+    b->hb_k = zalloc(q, sizeof(int));
+#pragma omp parallel for schedule(static) reduction(max : reach)
     for (int i = 0; i < b->n; i++) {
-        b->hb_start[i] = (int)q;
+        int at = b->hb_start[i];
         for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++)
             if (b->nb[p] > i) {
-                b->hb[q] = b->nb[p];
-                b->hb_k[q++] = b->nb_k[p];
-                if (b->nb[p] - i > reach)
-                    reach = b->nb[p] - i;
+                b->hb[at] = b->nb[p];
+                b->hb_k[at++] = b->nb_k[p];
+                reach = b->nb[p] - i > reach ? b->nb[p] - i : reach;
             }
     }
-    b->hb_start[b->n] = (int)q;
     /* The passes use only the half lists; the full ones are not kept. */
     free(b->nb_start), free(b->nb), free(b->nb_k);
     b->nb_start = b->nb = b->nb_k = NULL;
