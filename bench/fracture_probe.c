@@ -29,7 +29,9 @@
  * summing the lengths of the joins.  Fracture energy: sph_fracture_energy.
  *
  * Kalthoff-Winkler (paper 4.2.2): initiation time and place (anywhere, and within 2 mm of the
- * notch tip); crack angle: the direction, measured from +x (positive: upward, +z), of the
+ * notch tip); when the crack began to run (its reach from the tip against time, fitted by a
+ * line while it is 3 to 15 mm, back to zero; and the first time it reaches 1 mm); crack
+ * angle: the direction, measured from +x (positive: upward, +z), of the
  * least-squares line through the notch tip fitted to the crack particles 3 to 15 mm from the
  * tip (the principal axis of sum d d^T, d = particle - tip); also the angle of the crack
  * particle farthest from the tip.  The run stops early when the crack comes within 1 mm of
@@ -278,6 +280,34 @@ static void print_initiation(const char *key, const initiation *in)
            key, in->x * 1e3, key, in->z * 1e3);
 }
 
+/* ------------------------------------------------------------------ a time series */
+
+typedef struct {
+    double *t, *v;
+    int n, cap;
+} series;
+
+static void series_push(series *s, double t, double v)
+{
+    if (s->n == s->cap) {
+        s->cap = s->cap ? 2 * s->cap : 1024;
+        s->t = (double *)realloc(s->t, (size_t)s->cap * sizeof(double));
+        s->v = (double *)realloc(s->v, (size_t)s->cap * sizeof(double));
+    }
+    s->t[s->n] = t, s->v[s->n++] = v;
+}
+
+static void series_free(series *s) { free(s->t), free(s->v); }
+
+/* The first time the series reaches v (v non-decreasing in practice); -1 when it never does. */
+static double series_first(const series *s, double v)
+{
+    for (int k = 0; k < s->n; k++)
+        if (s->v[k] >= v)
+            return s->t[k];
+    return -1;
+}
+
 /* ------------------------------------------------------------------ crack branching */
 
 #define CB_XTIP 50e-3  /* notch tip */
@@ -290,8 +320,7 @@ typedef struct {
     initiation init;
     double t_split, x_split, front_split;    /* first split column anywhere ahead of the tip */
     double t_behind, x_behind, front_behind; /* first split of the column 2 mm behind the front */
-    double *ft, *fx; /* the crack front x at every check, and when */
-    int nfront, capfront;
+    series front; /* the crack front x at every check */
 } cb_state;
 
 static void cb_init(cb_state *c)
@@ -299,17 +328,7 @@ static void cb_init(cb_state *c)
     *c = (cb_state){.init = {.t = -1}, .t_split = -1, .t_behind = -1};
 }
 
-static void cb_free(cb_state *c) { free(c->ft), free(c->fx); }
-
-static void cb_front(cb_state *c, double t, double front)
-{
-    if (c->nfront == c->capfront) {
-        c->capfront = c->capfront ? 2 * c->capfront : 1024;
-        c->ft = (double *)realloc(c->ft, (size_t)c->capfront * sizeof(double));
-        c->fx = (double *)realloc(c->fx, (size_t)c->capfront * sizeof(double));
-    }
-    c->ft[c->nfront] = t, c->fx[c->nfront++] = front;
-}
+static void cb_free(cb_state *c) { series_free(&c->front); }
 
 /* The branching criteria, evaluated on the crack as it is at time t. */
 static void cb_check(cb_state *c, lattice *L, double t)
@@ -317,7 +336,7 @@ static void cb_check(cb_state *c, lattice *L, double t)
     if (crack_find(L, CB_XTIP, CB_ZTIP, 2e-3) == 0)
         return;
     const double front = L->xmax_crack;
-    cb_front(c, t, front);
+    series_push(&c->front, t, front);
     if (c->t_split < 0)
         for (int ix = column_of(L, CB_XTIP); ix < L->nx; ix++)
             if (column_split(L, ix) > CB_SPLIT) {
@@ -368,12 +387,8 @@ static int cb_branch_point(const cb_state *c, const lattice *L, double *xb, doub
     if (slope <= 0)
         return -1;
     *xb = -icpt / slope;
-    for (int k = 0; k < c->nfront; k++)
-        if (c->fx[k] >= *xb) {
-            *tb = c->ft[k];
-            return 0;
-        }
-    return -1;
+    *tb = series_first(&c->front, *xb);
+    return *tb >= 0 ? 0 : -1;
 }
 
 static void cb_results(const cb_state *c, lattice *L, const sph_body *b)
@@ -420,6 +435,7 @@ static void cb_results(const cb_state *c, lattice *L, const sph_body *b)
 typedef struct {
     initiation any, tip;
     double t_edge; /* the crack reached an edge (< 0: not) */
+    series reach;  /* the crack's reach from the tip at every check */
 } kw_state;
 
 static void kw_init(kw_state *k)
@@ -468,9 +484,34 @@ static int kw_at_edge(const lattice *L)
 
 static int kw_check(kw_state *k, lattice *L, double t)
 {
-    if (crack_find(L, KW_XTIP, KW_ZTIP, 1.5e-3) > 0 && kw_at_edge(L) && k->t_edge < 0)
+    if (crack_find(L, KW_XTIP, KW_ZTIP, 1.5e-3) == 0)
+        return 0;
+    double far, rmax;
+    int nfit;
+    kw_angle(L, &far, &rmax, &nfit);
+    series_push(&k->reach, t, rmax);
+    if (kw_at_edge(L) && k->t_edge < 0)
         k->t_edge = t;
     return k->t_edge >= 0;
+}
+
+/* When the crack began to run: the line fitted to its reach against time while the reach
+ * is KW_RMIN to KW_RMAX, back to zero reach.  The first damage at the notch tip comes
+ * earlier: the tip's damaged spot grows in place before the crack runs.  -1 without a fit. */
+static double kw_onset(const kw_state *k)
+{
+    double s1 = 0, st = 0, sr = 0, stt = 0, str = 0;
+    for (int q = 0; q < k->reach.n; q++) {
+        const double t = k->reach.t[q], r = k->reach.v[q];
+        if (r < KW_RMIN || r > KW_RMAX)
+            continue;
+        s1 += 1, st += t, sr += r, stt += t * t, str += t * r;
+    }
+    const double det = s1 * stt - st * st;
+    if (s1 < 3 || det <= 0)
+        return -1;
+    const double speed = (s1 * str - st * sr) / det, icpt = (sr - speed * st) / s1;
+    return speed > 0 ? -icpt / speed : -1;
 }
 
 static void kw_progress(lattice *L, const sph_body *b, double t)
@@ -511,6 +552,15 @@ static void kw_results(const kw_state *k, lattice *L, const sph_body *b)
     const double a = kw_angle(L, &far, &rmax, &nfit), ef = sph_fracture_energy(b);
     print_initiation("init", &k->any);
     print_initiation("init_tip", &k->tip);
+    const double onset = kw_onset(k), r1 = series_first(&k->reach, 1e-3);
+    if (onset >= 0)
+        printf("result onset_us %.2f\n", onset * 1e6);
+    else
+        printf("result onset_us none\n");
+    if (r1 >= 0)
+        printf("result reach1_us %.2f\n", r1 * 1e6);
+    else
+        printf("result reach1_us none\n");
     printf("result angle_deg %.1f\nresult angle_fit_n %d\nresult far_angle_deg %.1f\n", a, nfit,
            far);
     printf("result crack_particles %d\nresult reach_mm %.2f\n", n, rmax * 1e3);
@@ -630,6 +680,7 @@ int main(int argc, char **argv)
         cb_results(&cb, &L, b);
     lattice_free(&L);
     cb_free(&cb);
+    series_free(&kw.reach);
     sph_sim_free(&sim);
     return 0;
 }
