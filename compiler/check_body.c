@@ -392,6 +392,22 @@ static int check_contact_setting(const Model *m, const Setting *s, double *out)
     return 0;
 }
 
+/* soundspeed c: the reference sound speed instead of eq. 59's (time step, viscosity). */
+static int check_soundspeed(const Model *m, const Setting *s, BodyModel *b)
+{
+    if (s->nvalues != 1) {
+        diag_error(s->loc, "'soundspeed' takes one value, the sound speed in m/s");
+        return -1;
+    }
+    if (check_const_expr(m, s->values[0], "soundspeed", &b->c0_set))
+        return -1;
+    if (!(b->c0_set > 0 && isfinite(b->c0_set))) {
+        diag_error(s->values[0]->loc, "the sound speed must be positive (got %g)", b->c0_set);
+        return -1;
+    }
+    return 0;
+}
+
 static int check_setting(const Model *m, const Setting *s, BodyModel *b)
 {
     if (!strcmp(s->key, "refine"))
@@ -408,8 +424,10 @@ static int check_setting(const Model *m, const Setting *s, BodyModel *b)
         return check_contact_setting(m, s, &b->restitution);
     if (!strcmp(s->key, "friction"))
         return check_contact_setting(m, s, &b->friction);
+    if (!strcmp(s->key, "soundspeed"))
+        return check_soundspeed(m, s, b);
     diag_error(s->loc, "unknown body setting '%s' (expected refine, nbsrange, viscosity, "
-                       "hourglass, lattice, restitution, friction or restrict)",
+                       "hourglass, lattice, restitution, friction, soundspeed or restrict)",
                s->key);
     return -1;
 }
@@ -529,6 +547,8 @@ int check_body(Model *m, const BodyDecl *d, BodyModel *b)
         diag_error(d->loc, "body '%s' has no material", d->name);
         bad = 1;
     }
+    if (!bad && b->c0_set > 0) /* after the material, which sets eq. 59's */
+        b->c0 = b->c0_set;
     if (!bad)
         bad |= check_fracture_body(b, d) != 0;
     return bad ? -1 : 0;

@@ -74,7 +74,8 @@ typedef struct {
     int refine, nbsrange;
     double rho0;
     double E, nu, lambda, mu, K;   /* elastic constants, all five derived */
-    double c0;                     /* eq. 59 */
+    double c0;                     /* eq. 59, or the `soundspeed` setting */
+    double c0_set;                 /* `soundspeed c` (0: none) */
     double beta1, beta2;           /* artificial viscosity, eq. 58 */
     double hourglass;              /* penalty coefficient of the hourglass control (0: off) */
     int has_lattice;               /* `lattice P`: the fill lattice has a cell corner at P */

@@ -19,6 +19,7 @@
  * SoliDualSPHysics reads them (elastic_args_2d).
  * Contact: <contcoeff> (in <deformstrucs>) is the scene's `contact` multiplier, <restcoef>
  * and <kfric> the body's `restitution` and `friction`. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -248,26 +249,37 @@ static void push_setting(BodyDecl *b, SrcLoc loc, const char *key, double v)
 
 /* --xml-elastic2d=sdsph in a 2D case: the cards are the constants of two-dimensional
  * elasticity, as SoliDualSPHysics reads them (its dim = 2): u_bulk = lambda + mu, and
- * youngmod, poissratio give mu = E / (2 (1 + nu)), lambda = E nu / ((1 + nu)(1 - nu)).
- * The body gets the equivalent lambda and shear. */
+ * youngmod, poissratio give mu = E / (2 (1 + nu)), lambda = E nu / ((1 + nu)(1 - nu)). */
+static void lame_2d(const Cards *c, double *lambda, double *mu)
+{
+    if (c->has_el[EL_E]) {
+        const double E = c->el[EL_E], nu = c->el[EL_NU];
+        *mu = E / (2.0 * (1.0 + nu));
+        *lambda = E * nu / ((1.0 + nu) * (1.0 - nu));
+        return;
+    }
+    *mu = c->el[EL_MU];
+    *lambda = c->has_el[EL_K] ? c->el[EL_K] - *mu : c->el[EL_LAMBDA];
+}
+
+/* The body gets the equivalent lambda and shear. */
 static void elastic_args_2d(const Cards *c, SettingList *args)
 {
     double lambda, mu;
-    SrcLoc lloc, mloc;
-    if (c->has_el[EL_E]) {
-        double E = c->el[EL_E], nu = c->el[EL_NU];
-        mu = E / (2.0 * (1.0 + nu));
-        lambda = E * nu / ((1.0 + nu) * (1.0 - nu));
-        lloc = c->el_loc[EL_NU];
-        mloc = c->el_loc[EL_E];
-    } else {
-        mu = c->el[EL_MU];
-        lambda = c->has_el[EL_K] ? c->el[EL_K] - mu : c->el[EL_LAMBDA];
-        lloc = c->el_loc[c->has_el[EL_K] ? EL_K : EL_LAMBDA];
-        mloc = c->el_loc[EL_MU];
-    }
+    lame_2d(c, &lambda, &mu);
+    const SrcLoc lloc = c->el_loc[c->has_el[EL_E] ? EL_NU : c->has_el[EL_K] ? EL_K : EL_LAMBDA];
+    const SrcLoc mloc = c->el_loc[c->has_el[EL_E] ? EL_E : EL_MU];
     ast_push_setting(args, ast_setting(lloc, "lambda", ast_num(lloc, lambda)));
     ast_push_setting(args, ast_setting(mloc, "shear", ast_num(mloc, mu)));
+}
+
+/* And SoliDualSPHysics' reference sound speed: eq. 59 with its plane bulk modulus
+ * K2 = lambda + mu, c0 = sqrt((K2 + 4 mu / 3) / rho0). */
+static double sound_speed_2d(const Cards *c)
+{
+    double lambda, mu;
+    lame_2d(c, &lambda, &mu);
+    return sqrt((lambda + mu + 4.0 * mu / 3.0) / c->density);
 }
 
 static void push_material(XmlCtx *x, const Cards *c, BodyDecl *b)
@@ -322,6 +334,8 @@ static int push_settings(XmlCtx *x, const Cards *c, BodyDecl *b)
     if (c->has_nbs)
         push_setting(b, c->nbs_loc, "nbsrange", (double)c->nbsrange);
     push_material(x, c, b);
+    if (x->dim == 2 && x->opt.elastic2d_sdsph)
+        push_setting(b, c->loc, "soundspeed", sound_speed_2d(c));
     SrcLoc vl = c->has_visc ? c->visc_loc : c->loc;
     Setting visc = ast_setting(vl, "viscosity", ast_num(vl, c->beta1));
     if (c->beta2 != 0)
