@@ -3,14 +3,15 @@
 #   cmake -DSPHC=sphc -DXML=case.xml -DWORKDIR=dir [-DMAPFACS=1,2,4 -DPARTICLES=a,b,c]
 #         [-DPARTICLES_RANGE=lo,hi] [-DSPHC_ARGS="--xml-fill=gencase"]
 #         [-DEND=1e-5] [-DRUN=OFF] [-DDUMP_CONTAINS=text|text] [-DDUMP_STAGE=ast]
-#         -P run_case.cmake
+#         [-DTHREADS=1] [-DCLEAN=ON] -P run_case.cmake
 #
 # For each mapfac in MAPFACS (default: the case as written, compiled where it is) the case
 # is copied with its <mapfac> values replaced, compiled with sphc (and SPHC_ARGS), and
 # (unless RUN=OFF) run with --end END; it must exit 0 and its summary.json must give the
 # matching number of PARTICLES, or a number in [lo, hi] of PARTICLES_RANGE.
 # DUMP_CONTAINS: texts (separated by |) that `sphc --dump=DUMP_STAGE` must print (default
-# stage: model), e.g. the imported box or measurement plane.
+# stage: model), e.g. the imported box or measurement plane.  THREADS: the run's threads;
+# CLEAN=ON: remove the run's particle files afterwards (large cases).
 
 foreach(var SPHC XML WORKDIR)
   if(NOT DEFINED ${var})
@@ -22,6 +23,9 @@ if(NOT DEFINED END)
 endif()
 if(NOT DEFINED RUN)
   set(RUN ON)
+endif()
+if(NOT DEFINED THREADS)
+  set(THREADS 1)
 endif()
 string(REPLACE "," ";" MAPFACS "${MAPFACS}")
 string(REPLACE "," ";" PARTICLES "${PARTICLES}")
@@ -70,13 +74,16 @@ foreach(mapfac IN LISTS MAPFACS)
     message(FATAL_ERROR "sphc ${name}.xml failed (exit ${rc}):\n${out}\n${err}")
   endif()
   if(RUN)
-    execute_process(COMMAND "${WORKDIR}/${name}" --quiet --threads 1 --end ${END}
+    execute_process(COMMAND "${WORKDIR}/${name}" --quiet --threads ${THREADS} --end ${END}
                             --out "${WORKDIR}/${name}_out"
                     RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
     if(NOT rc EQUAL 0)
       message(FATAL_ERROR "${name} --end ${END} failed (exit ${rc}):\n${out}\n${err}")
     endif()
     file(READ "${WORKDIR}/${name}_out/summary.json" summary)
+    if(CLEAN)
+      file(REMOVE_RECURSE "${WORKDIR}/${name}_out/particles")
+    endif()
     string(REGEX MATCH "\"particles\": ([0-9]+)" found "${summary}")
     set(particles "${CMAKE_MATCH_1}")
     string(REGEX MATCH "\"steps\": ([0-9]+)" found "${summary}")
