@@ -10,6 +10,7 @@
  *   xml_deform.c    <deformstrucs>: bodies, material and settings cards
  *   xml_fracture.c  the phase-field fracture cards of a body
  *   xml_bc.c        <bcvel>, <bcforce>, <measureplane> of a body
+ *   xml_functions.c shapes the expressions write out twice, as user functions
  *
  * Every value keeps the line of its element: errors read "file:line: error: <elem>: ...". */
 #ifndef SPHC_XML_INTERNAL_H
@@ -193,5 +194,10 @@ int xml_fracture_check(const XmlCtx *x, const XmlFracture *f, const xmlNode *fra
 /* The body items of fracture on: fracture(Gc, length, limit), restrict, the notches. */
 void xml_fracture_items(const XmlCtx *x, const XmlFracture *f, const xmlNode *fracture,
                         BodyDecl *b);
+
+/* The bodies' BC expressions with every shape they write out for two arguments turned into
+ * a user function of one parameter (xml_functions.c): the functions (IT_FN items, to come
+ * after the lets) in *fns, their number returned. */
+int xml_factor_functions(XmlCtx *x, Item **fns, int *nfns);
 
 #endif

@@ -274,6 +274,12 @@ static void assemble(XmlCtx *x, Program *prog)
     ast_push_item(prog, scene);
     for (int i = 0; i < x->nlets; i++)
         ast_push_item(prog, x->lets[i]);
+    Item *fns;
+    int nfns;
+    xml_factor_functions(x, &fns, &nfns);
+    for (int i = 0; i < nfns; i++)
+        ast_push_item(prog, fns[i]);
+    free(fns);
     for (int i = 0; i < x->nbodies; i++)
         ast_push_item(prog, x->bodies[i]);
 }
