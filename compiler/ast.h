@@ -164,6 +164,7 @@ typedef struct {
     SrcLoc loc;
     BodyItem *items;
     int n;
+    char *comment;       /* comment lines to print before it (--to-sph of a case), or NULL */
 } BodyDecl;
 
 /* ---------------------------------------------------------------- expectations */
@@ -209,6 +210,7 @@ typedef struct {
     int n;
     const char *file;    /* main model file */
     int from_xml;        /* imported from a SoliDualSPHysics case file (xml_import) */
+    char *comment;       /* the case's own comment lines (--to-sph prints them), or NULL */
 } Program;
 
 /* ---------------------------------------------------------------- construction (ast.c) */

@@ -210,7 +210,12 @@ int main(int argc, char **argv)
         return diag_error_count() ? 1 : 0;
     }
     if (o.to_sph) {
-        printf("# %s, converted by sphc --to-sph\n\n", o.input);
+        printf("# %s, converted by sphc --to-sph\n", o.input);
+        if (prog.comment) { /* the case's own comments */
+            printf("#\n");
+            sph_print_comment(prog.comment, stdout);
+        }
+        printf("\n");
         sph_print_program(&prog, stdout);
         return 0;
     }

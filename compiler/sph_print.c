@@ -392,8 +392,18 @@ static int print_lets(const Item *items, int n, int i, FILE *out)
     return i;
 }
 
+void sph_print_comment(const char *text, FILE *out)
+{
+    for (const char *s = text; s && *s;) {
+        const char *end = strchr(s, '\n') ? strchr(s, '\n') : s + strlen(s);
+        fprintf(out, "# %.*s\n", (int)(end - s), s);
+        s = *end ? end + 1 : end;
+    }
+}
+
 static void print_body(const BodyDecl *b, FILE *out)
 {
+    sph_print_comment(b->comment, out);
     fprintf(out, "body %s {\n", b->name);
     for (int i = 0; i < b->n; i++)
         print_body_item(&b->items[i], out);

@@ -11,4 +11,7 @@ void sph_print_program(const Program *p, FILE *out);
 /* One expression with the parentheses precedence needs. */
 void sph_print_expr(const Expr *e, FILE *out);
 
+/* Each line of text (NULL: none) as a `# ` comment. */
+void sph_print_comment(const char *text, FILE *out);
+
 #endif

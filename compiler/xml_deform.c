@@ -409,6 +409,14 @@ static int body(XmlCtx *x, const xmlNode *n)
     it.loc = c.loc;
     it.body.name = ast_strdup(name);
     it.body.loc = c.loc;
+    /* comments just before the card and inside it go with the body */
+    const xmlNode *first = n;
+    while (first->prev && first->prev->type != XML_ELEMENT_NODE)
+        first = first->prev;
+    for (const xmlNode *k = first; k != n; k = k->next)
+        xml_add_comment(k, &it.body.comment);
+    for (const xmlNode *k = n->children; k; k = k->next)
+        xml_add_comment(k, &it.body.comment);
     if (push_settings(x, &c, &it.body))
         return -1;
     int bad = 0;

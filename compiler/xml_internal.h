@@ -81,6 +81,10 @@ typedef struct {
 SrcLoc xml_loc(const XmlCtx *x, const xmlNode *n);
 const char *xml_name(const xmlNode *n);
 int xml_is(const xmlNode *n, const char *name);
+/* The text of comment node c (lines trimmed) appended to *acc, a malloc'ed string of
+ * lines, or NULL; other nodes leave it as it is. */
+void xml_add_comment(const xmlNode *c, char **acc);
+
 /* Element children: for (c = xml_first(n); c; c = xml_next(c)). */
 xmlNode *xml_first(const xmlNode *n);
 xmlNode *xml_next(const xmlNode *n);

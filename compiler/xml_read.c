@@ -300,8 +300,13 @@ int xml_import(const char *path, const XmlOptions *opt, Program *prog)
     const xmlNode *root = xmlDocGetRootElement(doc);
     x.scene_loc = xml_loc(&x, root);
     prog->from_xml = 1;
-    if (read_case(&x, root) == 0 && diag_error_count() == before)
+    if (read_case(&x, root) == 0 && diag_error_count() == before) {
         assemble(&x, prog);
+        for (const xmlNode *c = doc->children; c; c = c->next) /* around <case> */
+            xml_add_comment(c, &prog->comment);
+        for (const xmlNode *c = root->children; c; c = c->next) /* and directly inside it */
+            xml_add_comment(c, &prog->comment);
+    }
     xmlFreeDoc(doc);
     int errors = diag_error_count() - before;
     if (errors == 0 && prog->n == 0) {

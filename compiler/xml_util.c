@@ -35,6 +35,30 @@ static xmlNode *element_from(xmlNode *c)
     return c;
 }
 
+void xml_add_comment(const xmlNode *c, char **acc)
+{
+    if (c->type != XML_COMMENT_NODE || !c->content)
+        return;
+    const char *s = (const char *)c->content;
+    size_t len = *acc ? strlen(*acc) : 0;
+    char *out = realloc(*acc, len + strlen(s) + 2);
+    while (*s) { /* line by line, without the indentation and the trailing blanks */
+        while (*s == ' ' || *s == '\t')
+            s++;
+        const char *end = strchr(s, '\n') ? strchr(s, '\n') : s + strlen(s), *e = end;
+        while (e > s && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r'))
+            e--;
+        if (e > s) {
+            memcpy(out + len, s, (size_t)(e - s));
+            len += (size_t)(e - s);
+            out[len++] = '\n';
+        }
+        s = *end ? end + 1 : end;
+    }
+    out[len] = 0;
+    *acc = out;
+}
+
 xmlNode *xml_first(const xmlNode *n)
 {
     return element_from(n->children);
