@@ -344,13 +344,19 @@ static int check_viscosity(const Model *m, const Setting *s, BodyModel *b)
     return 0;
 }
 
-static int check_hourglass(const Model *m, const Setting *s, BodyModel *b)
+/* The one constant value of setting s, whose value is `what` (for the error). */
+static int one_value(const Model *m, const Setting *s, const char *what, double *out)
 {
     if (s->nvalues != 1) {
-        diag_error(s->loc, "'hourglass' takes one value, the penalty coefficient");
+        diag_error(s->loc, "'%s' takes one value, %s", s->key, what);
         return -1;
     }
-    if (check_const_expr(m, s->values[0], "hourglass", &b->hourglass))
+    return check_const_expr(m, s->values[0], s->key, out);
+}
+
+static int check_hourglass(const Model *m, const Setting *s, BodyModel *b)
+{
+    if (one_value(m, s, "the penalty coefficient", &b->hourglass))
         return -1;
     if (!(b->hourglass >= 0 && b->hourglass <= 10)) {
         diag_error(s->values[0]->loc, "the hourglass coefficient must lie in [0, 10] (typically "
@@ -378,11 +384,8 @@ static int check_lattice(const Model *m, const Setting *s, BodyModel *b)
 static int check_contact_setting(const Model *m, const Setting *s, double *out)
 {
     const int rest = !strcmp(s->key, "restitution");
-    if (s->nvalues != 1) {
-        diag_error(s->loc, "'%s' takes one value", s->key);
-        return -1;
-    }
-    if (check_const_expr(m, s->values[0], s->key, out))
+    if (one_value(m, s, rest ? "the coefficient of restitution" : "the friction coefficient",
+                  out))
         return -1;
     if (rest ? !(*out > 0 && *out <= 1) : !(*out >= 0 && isfinite(*out))) {
         diag_error(s->values[0]->loc, "'%s' must be %s (got %g)", s->key,
@@ -395,11 +398,7 @@ static int check_contact_setting(const Model *m, const Setting *s, double *out)
 /* soundspeed c: the reference sound speed instead of eq. 59's (time step, viscosity). */
 static int check_soundspeed(const Model *m, const Setting *s, BodyModel *b)
 {
-    if (s->nvalues != 1) {
-        diag_error(s->loc, "'soundspeed' takes one value, the sound speed in m/s");
-        return -1;
-    }
-    if (check_const_expr(m, s->values[0], "soundspeed", &b->c0_set))
+    if (one_value(m, s, "the sound speed in m/s", &b->c0_set))
         return -1;
     if (!(b->c0_set > 0 && isfinite(b->c0_set))) {
         diag_error(s->values[0]->loc, "the sound speed must be positive (got %g)", b->c0_set);
