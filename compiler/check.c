@@ -106,6 +106,7 @@ static int scene_setting(Model *m, const Setting *s)
     static const char *const kernels[] = {"wendland", "cubic"};
     static const char *const integrators[] = {"verlet", "symplectic"};
     static const char *const precisions[] = {"double", "single"};
+    static const char *const timesteps[] = {"reference", "stretch"};
     int k;
     double v;
     if (!strcmp(s->key, "dimension")) {
@@ -134,6 +135,13 @@ static int scene_setting(Model *m, const Setting *s)
         if (scene_name(s, precisions, 2, &k))
             return -1;
         m->single = k == 1;
+        return 0;
+    }
+    if (!strcmp(s->key, "timestep")) {
+        if (scene_name(s, timesteps, 2, &k))
+            return -1;
+        m->dt_stretch = k == 1;
+        m->dt_stretch_loc = s->loc;
         return 0;
     }
     if (!strcmp(s->key, "gravity"))

@@ -633,7 +633,7 @@ void emit_model_desc(Emitter *E)
             "    .dtmin_coef = %.17g,\n    .dt_fixed = %.17g,\n    .t_end = %.17g,\n"
             "    .t_out = %.17g,\n    .gravity = {%.17g, %.17g, %.17g},\n"
             "    .bodies = BODIES,\n    .nbodies = %d,\n    .expects = %s,\n    .nexpects = %d,\n"
-            "    .compat_outputs = %d,\n%s"
+            "    .compat_outputs = %d,\n%s%s"
             "    .velocity_bcs = model_velocity_bcs,\n    .step = model_step,\n"
             "    .stress_output = model_stress_output,\n%s};\n\n"
             "int main(int argc, char **argv)\n{\n    return sph_main(&MODEL, argc, argv);\n}\n",
@@ -642,6 +642,7 @@ void emit_model_desc(Emitter *E)
             m->integrator == INTEGRATOR_VERLET ? "SPH_VERLET" : "SPH_SYMPLECTIC", m->cfl, m->dtmin,
             m->dt, m->t_end, m->t_out, m->gravity[0], m->gravity[1], m->gravity[2], m->nbodies,
             m->nexpects ? "EXPECTS" : "NULL", m->nexpects, m->compat_outputs,
+            m->dt_stretch ? "    .dt_stretch = 1,\n" : "",
             model_has_contact(m) ? "    .contact = &CONTACT,\n" : "",
             E->cuda ? "    .sync_host = model_sync_host,\n" : "");
 }

@@ -113,6 +113,8 @@ typedef struct {
     KernelKind kernel;
     IntegratorKind integrator;
     int single;           /* precision single: the pair passes' arrays in float */
+    int dt_stretch;       /* timestep stretch: eq. 65 on the current spacing (docs/stability.md) */
+    SrcLoc dt_stretch_loc;
     double gravity[3];
     ConstDef *consts;
     int nconsts;

@@ -348,9 +348,11 @@ static int time_loop(run_state *r)
     double next_out = r->t_out;
     while (s->t < r->t_end - eps) {
         double dt = sph_sim_stable_dt(s);
-        if (!(dt >= floor_dt)) {
+        /* with timestep stretch the bound follows the current spacing, and so does dtmin */
+        const double floor_now = floor_dt * (r->m->dt_stretch ? s->stretch_min : 1.0);
+        if (!(dt >= floor_now)) {
             sync_host(r);
-            dt_collapse_report(r, dt, floor_dt);
+            dt_collapse_report(r, dt, floor_now);
             break;
         }
         dt = fmin(dt, fmin(next_out, r->t_end) - s->t); /* land on output times */

@@ -208,7 +208,8 @@ static void offset_tables(sph_body *b, double *w, sph_kernel_kind kernel)
     long *first_p = NULL;
     if (lattice) {
         slot = malloc(sizeof(int) * (size_t)nslots);
-        first_i = malloc(sizeof(int) * (size_t)nslots), first_p = malloc(sizeof(long) * (size_t)nslots);
+        first_i = malloc(sizeof(int) * (size_t)nslots);
+        first_p = malloc(sizeof(long) * (size_t)nslots);
         for (long s = 0; s < nslots; s++)
             slot[s] = -1;
         for (int i = 0; i < b->n; i++)

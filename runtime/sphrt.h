@@ -210,6 +210,9 @@ typedef struct {
      * (DeformStruc_Energies.csv, MeasuringPlData_MK<mk>_PL<k>.csv; docs/xml.md).  Set for
      * models imported from XML case files. */
     int compat_outputs;
+    /* 1 (scene setting `timestep stretch`): the bound of eq. 65 on the current spacing, h
+     * times the smallest principal stretch of any particle (docs/stability.md). */
+    int dt_stretch;
     const sph_contact_desc *contact; /* NULL: the bodies do not touch each other */
 
     /* Generated passes. */
@@ -323,6 +326,8 @@ struct sph_sim {
     long step;
     int threads;
     sph_contact *contact;  /* contact state (contact.c); NULL until the first contact pass */
+    double stretch_min;    /* with dt_stretch: the smallest principal stretch at the last
+                              sph_sim_stable_dt (1 otherwise) */
 };
 
 /* Entry point of a generated program. */
@@ -332,7 +337,7 @@ int sph_main(const sph_model *m, int argc, char **argv);
  * build every body and apply the velocity boundary conditions at t = 0 (initial
  * conditions); the stable time step of eq. 64-66 (or the fixed one); one step. */
 int sph_sim_init(sph_sim *s, const sph_model *m, int verbose);
-double sph_sim_stable_dt(const sph_sim *s);
+double sph_sim_stable_dt(sph_sim *s);
 void sph_sim_step(sph_sim *s, double dt);
 void sph_sim_free(sph_sim *s);
 /* Energies of a body: strain (sum V psi) and kinetic (sum m |v|^2 / 2). */
