@@ -28,6 +28,7 @@ typedef struct {
     int nframes;
     double step_seconds;
     double setup_seconds; /* particles, neighbours, tables, (device upload) */
+    double stretch_seen;  /* the smallest principal stretch at the monitor's checks */
     char unstable[512];
 } run_state;
 
@@ -307,9 +308,11 @@ static void sync_host(run_state *r)
 static int check_now(run_state *r, sph_monitor *mon)
 {
     sync_host(r); /* also for the frame written right after */
-    if (!sph_monitor_check(mon, &r->sim, r->unstable, sizeof r->unstable))
-        return 0;
-    return 1;
+    if (sph_monitor_check(mon, &r->sim, r->unstable, sizeof r->unstable))
+        return 1;
+    if (!r->m->dt_stretch) /* for the note after an unstable run (stretch_hint) */
+        r->stretch_seen = fmin(r->stretch_seen, sph_sim_stretch(&r->sim));
+    return 0;
 }
 
 /* The particle whose acceleration (eq. 66) or speed (eq. 65) limits the time step. */
@@ -389,11 +392,25 @@ static int setup(run_state *r, long *particles, long *pairs)
     return 0;
 }
 
+/* After an unstable run: when bodies were crushed far and the step did not follow the
+ * current spacing, say that `timestep stretch` would (docs/stability.md). */
+static void stretch_hint(const run_state *r)
+{
+    const double lam = r->stretch_seen;
+    if (r->m->dt_stretch || r->m->dt_fixed > 0 || !(lam < 0.3))
+        return;
+    fprintf(stderr, "%s: note: particles were compressed to a principal stretch of %.3g, and the "
+                    "time step follows the reference spacing; the scene setting `timestep "
+                    "stretch` bounds it by the current one (docs/stability.md)%s\n",
+            r->m->name, lam, r->m->sync_host ? " (CPU target)" : "");
+}
+
 int sph_main(const sph_model *m, int argc, char **argv)
 {
     run_state r;
     memset(&r, 0, sizeof r);
     r.m = m;
+    r.stretch_seen = 1.0;
     int rc = sph_parse_options(&r.opt, m->name, argc, argv);
     if (rc)
         return rc < 0 ? 2 : 0;
@@ -429,6 +446,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
         fprintf(stderr, "%s: error: the run went unstable at %s\n%s: the last good output is in "
                         "%s/ (t = %g s)\n",
                 m->name, r.unstable, m->name, r.opt.out_dir, r.frame_times[r.nframes - 1]);
+        stretch_hint(&r);
         return 3;
     }
     if (!r.opt.quiet)

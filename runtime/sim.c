@@ -77,6 +77,14 @@ static double stretch_min(const sph_body *b)
     return b->n ? sqrt(fmax(l2, 0.0)) : 1.0;
 }
 
+double sph_sim_stretch(const sph_sim *s)
+{
+    double lam = 1.0;
+    for (int i = 0; i < s->nbodies; i++)
+        lam = fmin(lam, stretch_min(&s->bodies[i]));
+    return lam;
+}
+
 double sph_sim_stable_dt(sph_sim *s)
 {
     const sph_model *m = s->m;

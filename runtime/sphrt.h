@@ -338,6 +338,9 @@ int sph_main(const sph_model *m, int argc, char **argv);
  * conditions); the stable time step of eq. 64-66 (or the fixed one); one step. */
 int sph_sim_init(sph_sim *s, const sph_model *m, int verbose);
 double sph_sim_stable_dt(sph_sim *s);
+/* The smallest principal stretch of any particle (finite ones; capped at 1), from the host's
+ * F: what `timestep stretch` bounds the step with. */
+double sph_sim_stretch(const sph_sim *s);
 void sph_sim_step(sph_sim *s, double dt);
 void sph_sim_free(sph_sim *s);
 /* Energies of a body: strain (sum V psi) and kinetic (sum m |v|^2 / 2). */

@@ -8,6 +8,7 @@
 #   -DWARNING=ON|OFF         whether the fixed-dt warning must be printed before the run
 #   -DNOT_FINITE=ON          the state at the stop is not finite: summary.json must give the
 #                            body's largest speed as null (not the largest finite one)
+#   -DNOTE=                  a text stderr must hold after the error (a hint)
 # Checked: exit code 3; the message on stderr names step, time, body, particle and the
 # quantity; summary.json says "unstable" with the same message; the .pvd and its frames
 # exist; energies.csv and the measurement files have rows and no NaN or infinity.
@@ -22,6 +23,12 @@ execute_process(COMMAND ${PROGRAM} --quiet --out ${OUT} ${ARGS}
 message(STATUS "exit code ${rc}; stderr:\n${err}")
 if(NOT rc EQUAL 3)
   fail("expected exit code 3 (unstable), got ${rc}")
+endif()
+if(DEFINED NOTE)
+  string(FIND "${err}" "${NOTE}" note_at)
+  if(note_at EQUAL -1)
+    fail("stderr does not hold '${NOTE}'")
+  endif()
 endif()
 
 # the warning about a fixed time step above h/c0, printed before the run
