@@ -259,7 +259,7 @@ struct sph_body {
     double *F;          /* n*9 deformation gradient (3×3) */
     double *L;          /* n*dim*dim correction */
     sph_real *Q;        /* n*dim*dim  P·L (first Piola–Kirchhoff times correction), SPH_AT */
-    sph_real *Cv;       /* n*dim*dim  cof(F)·L for artificial viscosity, SPH_AT */
+    sph_real *Cv;       /* n*dim*dim  cof(F) = J F^-T for artificial viscosity, SPH_AT */
     double *psi;        /* n strain energy density */
     double *sigma;      /* n*6 Cauchy stress, filled at output */
     double *work;       /* n*dim scratch for integrators (symplectic: v at n) */

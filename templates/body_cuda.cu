@@ -78,25 +78,24 @@ static void @B@_momentum_pass(sph_body *b)
                 f[r] = s2 * inv_rho;
             }
 //@if VISCOSITY
-            sph_real vw = 0, dv[D];
-            for (int c = 0; c < D; c++) {
-                dv[c] = (sph_real)(b->v[i * D + c] - b->v[j * D + c]);
-                vw += dv[c] * w[c];
+            /* G_ij along the viscous direction fv = (cof F_i + cof F_j) w, as templates/body_forces.c */
+            sph_real fv[D], vw = 0;
+            for (int r = 0; r < D; r++) {
+                fv[r] = 0;
+                for (int c = 0; c < D; c++)
+                    fv[r] += (Ci[r * D + c] + b->Cv[SPH_AT(j, r * D + c, D * D, n)]) * w[c];
+                vw += (sph_real)(b->v[i * D + r] - b->v[j * D + r]) * fv[r];
             }
-            const sph_real G = b->gtab[k < 0 ? ~k : k] * vw;
+            const sph_real G = b->gtab[k < 0 ? ~k : k] * (sph_real)0.5 * vw;
             sph_real pi = (sph_real)(-@BETA1@ * @C0@) * G;
 //@if BETA2
             const sph_real Gc = G < 0 ? G : 0;
             pi += (sph_real)@BETA2@ * Gc * Gc;
 //@endif
             const sph_real hpi = (sph_real)0.5 * pi;
-            for (int r = 0; r < D; r++) {
-                sph_real fv = 0;
-                for (int c = 0; c < D; c++)
-                    fv += (Ci[r * D + c] + b->Cv[SPH_AT(j, r * D + c, D * D, n)]) * w[c];
-                f[r] -= hpi * fv;
-                pv -= hpi * fv * dv[r];
-            }
+            for (int r = 0; r < D; r++)
+                f[r] -= hpi * fv[r];
+            pv -= hpi * vw;
 //@endif
 //@if HOURGLASS
             @B@_hourglass(b, i, j, k < 0 ? ~k : k, f);

@@ -120,28 +120,34 @@ static void @B@_momentum_pass(sph_body *b)
                         f[r] = s2 * inv_rho;
                     }
 //@if VISCOSITY
-                    /* G_ij (eq. 60; gtab holds h / (r^2 + 0.001 h^2) in the units of w) and
-                     * the viscous pressure pi_ij (eq. 58, times rho0), which resists relative
-                     * motion along the reference separation. */
-                    sph_real vw = 0, dv[D];
-                    for (int c = 0; c < D; c++) {
-                        dv[c] = (sph_real)(v[i * D + c] - v[j * D + c]);
-                        vw += dv[c] * w[c];
+                    /* The direction the viscous pressure acts along, fv = (J F^-T)_i w +
+                     * (J F^-T)_j w (eq. 57 from both sides, without the correction L), and
+                     * G_ij of eq. 60 measured along it (gtab holds h / (r^2 + 0.001 h^2) in
+                     * the units of w).  In the reference configuration fv/2 is w, parallel
+                     * to X_i - X_j, so this is eq. 60; fv turns with the pair, so a rigid
+                     * rotation gives G = 0 at any angle, and the viscous power pi G is never
+                     * positive (eq. 60 taken along X_i - X_j feeds energy in once a pair has
+                     * turned by more than 90 degrees, and L in fv lets a boundary pair's G
+                     * see a rigid rotation; docs/stability.md). */
+                    const sph_real *Cj = Cv + (size_t)j * D * D;
+                    sph_real fv[D], dv[D], vw = 0;
+                    for (int r = 0; r < D; r++) {
+                        fv[r] = 0;
+                        for (int c = 0; c < D; c++)
+                            fv[r] += (Ci[r * D + c] + Cj[r * D + c]) * w[c];
+                        dv[r] = (sph_real)(v[i * D + r] - v[j * D + r]);
+                        vw += dv[r] * fv[r];
                     }
-                    const sph_real G = gtab[k] * vw;
-                    sph_real pi = (sph_real)(-@BETA1@ * @C0@) * G;
+                    const sph_real G = gtab[k] * (sph_real)0.5 * vw;
+                    sph_real pi = (sph_real)(-@BETA1@ * @C0@) * G; /* eq. 58, times rho0 */
 //@if BETA2
                     const sph_real Gc = G < 0 ? G : 0; /* min(G, 0): beta2 acts on approach */
                     pi += (sph_real)@BETA2@ * Gc * Gc;
 //@endif
-                    const sph_real *Cj = Cv + (size_t)j * D * D, hpi = (sph_real)0.5 * pi;
-                    for (int r = 0; r < D; r++) {
-                        sph_real fv = 0;
-                        for (int c = 0; c < D; c++)
-                            fv += (Ci[r * D + c] + Cj[r * D + c]) * w[c];
-                        f[r] -= hpi * fv;
-                        pv -= hpi * fv * dv[r];
-                    }
+                    const sph_real hpi = (sph_real)0.5 * pi;
+                    for (int r = 0; r < D; r++)
+                        f[r] -= hpi * fv[r];
+                    pv -= hpi * vw;
 //@endif
 //@if HOURGLASS
                     @B@_hourglass(b, i, j, k, f);

@@ -25,7 +25,7 @@ SPH_FN void @B@_phase_move(double *s, double *sd, double h)
 /* ---- body @B@: one particle's stress ---------------------------------------------------
  * From A_i = sum_j V_j (u_j - u_i) (x) grad W_ij: F = I + A L^T (eq. 53 with the corrected
  * gradient), the material law (S, psi), P = F S (eq. 2), and what the momentum pass needs of
- * each particle: Q = P L and, for artificial viscosity, Cv = cof(F) L = J F^-T L.  Shared by
+ * each particle: Q = P L and, for artificial viscosity, Cv = cof(F) = J F^-T.  Shared by
  * the CPU passes (body_forces.c) and the CUDA ones (body_cuda.cu).
 //@if FRACTURE
  * With fracture: F = I where s <= s_l (eq. 63), the stress degraded by s (eq. 18), the
@@ -90,7 +90,9 @@ SPH_FN void @B@_particle_stress(sph_body *b, int i, const double *A)
             b->Q[SPH_AT(i, r * D + c, D * D, b->n)] = (sph_real)s;
         }
 //@if VISCOSITY
-    /* cof(F) = J F^-T: the Piola transform of the viscous pressure (eq. 57) */
+    /* cof(F) = J F^-T: the Piola transform of the viscous pressure (eq. 57), without the
+     * gradient correction L, so that the pair's direction (cof F_i + cof F_j) grad W turns
+     * exactly with the pair under a rigid rotation (docs/stability.md) */
 //@if FRACTURE
     /* degraded like the elastic stress, so that a crack does not carry viscous stress
      * either (its faces would otherwise be held back as they separate) */
@@ -98,9 +100,7 @@ SPH_FN void @B@_particle_stress(sph_body *b, int i, const double *A)
 //@endif
     for (int r = 0; r < D; r++)
         for (int c = 0; c < D; c++) {
-            double s = 0;
-            for (int k = 0; k < D; k++)
-                s += sph_cofactor(F, sph_axis(D, r), sph_axis(D, k)) * L[k * D + c];
+            const double s = sph_cofactor(F, sph_axis(D, r), sph_axis(D, c));
 //@if FRACTURE
             b->Cv[SPH_AT(i, r * D + c, D * D, b->n)] = (sph_real)(s * vdeg);
 //@endif
