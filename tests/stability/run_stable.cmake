@@ -1,9 +1,12 @@
-# A run that must end stable: -DPROGRAM= -DOUT=
+# A run that must end stable: -DPROGRAM= -DOUT= [-DWARNING=OFF]
 # Checked: exit code 0, "verdict": "stable" in summary.json, and every value in every CSV
-# file finite (no nan or inf written).
+# file finite (no nan or inf written); with WARNING=OFF, no fixed-dt warning either.
 execute_process(COMMAND ${PROGRAM} --quiet --out ${OUT} RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "exit code ${rc} (expected 0); stderr:\n${err}")
+endif()
+if(DEFINED WARNING AND NOT WARNING AND err MATCHES "warning: the fixed time step")
+  message(FATAL_ERROR "unexpected fixed-dt warning:\n${err}")
 endif()
 file(READ ${OUT}/summary.json summary)
 if(NOT summary MATCHES "\"verdict\": \"stable\"")
