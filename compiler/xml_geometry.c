@@ -23,6 +23,8 @@
 #include <string.h>
 
 #include "diag.h"
+#include "mesh.h"
+#include "source.h"
 #include "xml_internal.h"
 
 static long gc_round(double v)
@@ -320,6 +322,21 @@ static int setfrdrawmode(XmlCtx *x, const xmlNode *n)
 
 /* ------------------------------------------------------------------ <drawfilevtk/stl> */
 
+/* The surface file of a drawing, beside the case file: it must open and be a closed surface
+ * (the model's checker reads it again with the body; here the error can name the card). */
+static int surface_file_ok(const XmlCtx *x, const xmlNode *n, const char *file, SrcLoc loc)
+{
+    char *path = source_beside(x->file, file), err[1024];
+    sph_mesh mesh;
+    int rc = sph_mesh_load(path, &mesh, err, sizeof err);
+    if (rc)
+        diag_error(loc, "<%s> attribute 'file': %s", xml_name(n), err);
+    else
+        sph_mesh_free(&mesh);
+    free(path);
+    return rc ? -1 : 0;
+}
+
 /* A closed surface from a file, filled (autofill="true").  The file is read and checked
  * with the body (check_body.c), relative to the case file. */
 static int drawfile(XmlCtx *x, const xmlNode *n, int mk)
@@ -345,6 +362,8 @@ static int drawfile(XmlCtx *x, const xmlNode *n, int mk)
     }
     if (mk < 0)
         return no_mk(xml_name(n), loc);
+    if (surface_file_ok(x, n, file, loc))
+        return -1;
     XmlDraw d = {XD_SURFACE, mk, {0}, {0}, {{0}}, 0, file, x->freedraw, loc};
     for (int a = 0; a < 3; a++)
         d.hi[a] = x->nodes[a];

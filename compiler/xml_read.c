@@ -191,6 +191,23 @@ static xmlNode *need_child(const XmlCtx *x, const xmlNode *n, const char *name)
     return c;
 }
 
+/* <motion>: accepted (its <objreal> objects are the bodies that <deformstrucs> deforms).  A
+ * motion other than a null one would move a rigid object in DualSPHysics; sphc's bodies move
+ * only by their dynamics and boundary conditions, so it is ignored with a warning. */
+static void read_motion(const XmlCtx *x, const xmlNode *motion)
+{
+    for (const xmlNode *o = motion->children; o; o = o->next) {
+        if (o->type != XML_ELEMENT_NODE || !xml_is(o, "objreal"))
+            continue;
+        for (const xmlNode *m = o->children; m; m = m->next)
+            if (m->type == XML_ELEMENT_NODE && !xml_is(m, "begin") && !xml_is(m, "mvnull") &&
+                !xml_is(m, "mnull") && !xml_is(m, "wait"))
+                diag_warning(xml_loc(x, m), "<%s> is ignored: the bodies of <deformstrucs> move "
+                                            "by their own dynamics (give a velocity with <bcvel>)",
+                             xml_name(m));
+    }
+}
+
 static int read_casedef(XmlCtx *x, const xmlNode *casedef)
 {
     static const char *const known[] = {"constantsdef", "mkconfig", "geometry", "motion", NULL};
@@ -199,6 +216,9 @@ static int read_casedef(XmlCtx *x, const xmlNode *casedef)
     if (!geometry)
         return -1;
     bad |= xml_geometry(x, geometry) != 0;
+    const xmlNode *motion = xml_child(casedef, "motion");
+    if (motion)
+        read_motion(x, motion);
     const xmlNode *constants = xml_child(casedef, "constantsdef");
     if (constants)
         bad |= xml_constants(x, constants) != 0;
