@@ -106,7 +106,7 @@ static int scene_setting(Model *m, const Setting *s)
     static const char *const kernels[] = {"wendland", "cubic"};
     static const char *const integrators[] = {"verlet", "symplectic"};
     static const char *const precisions[] = {"double", "single"};
-    static const char *const timesteps[] = {"reference", "stretch"};
+    static const char *const timesteps[] = {"auto", "undeformed", "stretch"};
     int k;
     double v;
     if (!strcmp(s->key, "dimension")) {
@@ -138,10 +138,9 @@ static int scene_setting(Model *m, const Setting *s)
         return 0;
     }
     if (!strcmp(s->key, "timestep")) {
-        if (scene_name(s, timesteps, 2, &k))
+        if (scene_name(s, timesteps, 3, &k))
             return -1;
-        m->dt_stretch = k == 1;
-        m->dt_stretch_loc = s->loc;
+        m->dt_mode = (TimestepKind)k;
         return 0;
     }
     if (!strcmp(s->key, "gravity"))

@@ -176,6 +176,8 @@ void emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyP
     tpl_feature(&env, "NO_FRACTURE", !p->fracture);
     tpl_feature(&env, "STATE", p->nstate > 0);
     tpl_feature(&env, "PLAIN_LAW", !p->fracture && !p->nstate);
+    tpl_feature(&env, "CRUSH", p->crush);
+    tpl_feature(&env, "NO_CRUSH", !p->crush);
     tpl_set(&env, "NSTATE", "%d", p->nstate);
     const double *g = E->m->gravity; /* compact components */
     tpl_set(&env, "G0", "%.17g", g[0]);
@@ -552,6 +554,8 @@ static void bodies_desc(Emitter *E)
                     E->plans[i].roots.dissipation, E->plans[i].roots.dissipation - 1);
         if (E->plans[i].viscosity)
             fputs("        .viscous = 1,\n", out);
+        if (E->plans[i].crush)
+            fputs("        .crush = 1,\n", out);
         if (model_has_contact(m))
             fprintf(out, "        .young = %.17g,\n        .poisson = %.17g, /* contact stiffness */\n"
                          "        .restitution = %.17g,\n        .friction = %.17g,\n",
@@ -618,6 +622,10 @@ void emit_model_desc(Emitter *E)
 {
     const Model *m = E->m;
     FILE *out = E->out;
+    /* timestep auto or stretch (docs/stability.md); reference and a fixed dt: none */
+    const char *lambda_on = m->dt > 0 || m->dt_mode == TIMESTEP_UNDEFORMED ? ""
+                            : m->dt_mode == TIMESTEP_STRETCH ? "    .dt_lambda_on = 1.0,\n"
+                                                             : "    .dt_lambda_on = 0.5,\n";
     if (E->cuda) /* C++ warns where C does not */
         fputs("/* The descriptions name only the members a scene uses; the others are zero, as in "
               "C. */\n#pragma GCC diagnostic ignored \"-Wmissing-field-initializers\"\n\n", out);
@@ -642,7 +650,7 @@ void emit_model_desc(Emitter *E)
             m->integrator == INTEGRATOR_VERLET ? "SPH_VERLET" : "SPH_SYMPLECTIC", m->cfl, m->dtmin,
             m->dt, m->t_end, m->t_out, m->gravity[0], m->gravity[1], m->gravity[2], m->nbodies,
             m->nexpects ? "EXPECTS" : "NULL", m->nexpects, m->compat_outputs,
-            m->dt_stretch ? "    .dt_stretch = 1,\n" : "",
+            lambda_on,
             model_has_contact(m) ? "    .contact = &CONTACT,\n" : "",
             E->cuda ? "    .sync_host = model_sync_host,\n" : "");
 }

@@ -58,15 +58,8 @@ static void scene_step_cuda(Emitter *E)
     fputs("}\n\n", out);
 }
 
-
 int emit_cuda_program(const Model *m, const char *templates_dir, FILE *out)
 {
-    if (m->dt_stretch) {
-        diag_error(m->dt_stretch_loc,
-                   "the scene setting 'timestep stretch' is not supported by the cuda target yet "
-                   "(its bound reads every particle's deformation gradient on the host each step)");
-        return -1;
-    }
     BodyPlan *plans = calloc((size_t)m->nbodies, sizeof *plans);
     int rc = lower_model(m, plans) ? -1 : 0;
     if (!rc) {

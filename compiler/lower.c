@@ -17,6 +17,7 @@ static void features(const Model *m, const BodyModel *b, BodyPlan *p)
     p->symplectic = m->integrator == INTEGRATOR_SYMPLECTIC;
     p->fracture = b->fracture.on;
     p->restrict_phase = b->fracture.restrict_expr != NULL;
+    p->crush = m->dt <= 0 && m->dt_mode != TIMESTEP_UNDEFORMED;
     for (int k = 0; k < b->nbcs; k++) {
         if (!b->bcs[k].comps)
             continue; /* only out-of-plane components in 2D: nothing to do */
@@ -75,9 +76,10 @@ void plan_dump(const Model *m, FILE *out)
         fprintf(out, "body %s: dim %d, law %s, %s integrator\n", b->name, m->dim, b->law->name,
                 p->symplectic ? "symplectic" : "verlet");
         fprintf(out, "  features: viscosity=%d beta2=%d gravity=%d velocity_bcs=%d "
-                     "force_bcs=%d hourglass=%d fracture=%d restrict=%d state=%d contact=%d\n",
+                     "force_bcs=%d hourglass=%d fracture=%d restrict=%d state=%d contact=%d "
+                     "crush=%d\n",
                 p->viscosity, p->beta2, p->gravity, p->velocity_bcs, p->force_bcs, p->hourglass,
-                p->fracture, p->restrict_phase, p->nstate > 0, model_has_contact(m));
+                p->fracture, p->restrict_phase, p->nstate > 0, model_has_contact(m), p->crush);
         fprintf(out, "  material law: %d graph nodes\n", count_ops(&p->law));
         int roots[10 + LAW_MAX_SLOTS];
         memcpy(roots, p->roots.S, sizeof p->roots.S);

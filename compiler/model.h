@@ -104,6 +104,9 @@ typedef struct {
 
 typedef enum { KERNEL_WENDLAND = 0, KERNEL_CUBIC = 1 } KernelKind;
 typedef enum { INTEGRATOR_VERLET = 0, INTEGRATOR_SYMPLECTIC = 1 } IntegratorKind;
+/* `timestep`: eq. 65 follows the current spacing of compressed bodies below a stretch of 0.5
+ * (auto), always (stretch), or never (undeformed: the paper's bound, on the undeformed spacing) */
+typedef enum { TIMESTEP_AUTO = 0, TIMESTEP_UNDEFORMED = 1, TIMESTEP_STRETCH = 2 } TimestepKind;
 
 typedef struct {
     const char *name;     /* program name (file stem) */
@@ -113,8 +116,7 @@ typedef struct {
     KernelKind kernel;
     IntegratorKind integrator;
     int single;           /* precision single: the pair passes' arrays in float */
-    int dt_stretch;       /* timestep stretch: eq. 65 on the current spacing (docs/stability.md) */
-    SrcLoc dt_stretch_loc;
+    TimestepKind dt_mode; /* how eq. 65 sees compressed bodies (docs/stability.md) */
     double gravity[3];
     ConstDef *consts;
     int nconsts;

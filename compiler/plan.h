@@ -16,6 +16,7 @@ typedef struct {
     int symplectic;
     int fracture;       /* phase-field fracture (eq. 6-9, 61-63) */
     int restrict_phase; /* a lower bound on its phase field */
+    int crush;          /* the time step's bound on compression (timestep auto or stretch) */
     int nstate;         /* state values per particle of its law (plasticity); 0: none */
     SGraph law;         /* the material law, constants folded, for this body's dimension */
     LawRoots roots;

@@ -310,7 +310,7 @@ static int check_now(run_state *r, sph_monitor *mon)
     sync_host(r); /* also for the frame written right after */
     if (sph_monitor_check(mon, &r->sim, r->unstable, sizeof r->unstable))
         return 1;
-    if (!r->m->dt_stretch) /* for the note after an unstable run (stretch_hint) */
+    if (!(r->m->dt_lambda_on > 0)) /* for the note after an unstable run (stretch_hint) */
         r->stretch_seen = fmin(r->stretch_seen, sph_sim_stretch(&r->sim));
     return 0;
 }
@@ -333,11 +333,15 @@ static void dt_collapse_report(run_state *r, double dt, double floor_dt)
     }
     const sph_body *b = &s->bodies[body];
     const double *X = b->X + (size_t)particle * b->dim;
+    char crushed[96] = "";
+    if (s->dt_factor < 1) /* the bound followed a compression (timestep auto or stretch) */
+        snprintf(crushed, sizeof crushed, "; compressed to a principal stretch of %.3g",
+                 sph_sim_stretch(s));
     snprintf(r->unstable, sizeof r->unstable,
              "step %ld, t = %.6g s, body '%s', particle %d (reference position x = %g, %s = %g): "
-             "time step collapsed to %g s, below dtmin = %g s (acceleration %g m/s^2)",
+             "time step collapsed to %g s, below dtmin = %g s (acceleration %g m/s^2%s)",
              s->step, s->t, b->desc->name, particle, X[0], b->dim == 2 ? "z" : "y", X[1], dt,
-             floor_dt, sqrt(fmax(worst, 0)));
+             floor_dt, sqrt(fmax(worst, 0)), crushed);
 }
 
 /* Runs until t_end or instability; returns 0, or 1 when the monitor stopped it. */
@@ -351,8 +355,9 @@ static int time_loop(run_state *r)
     double next_out = r->t_out;
     while (s->t < r->t_end - eps) {
         double dt = sph_sim_stable_dt(s);
-        /* with timestep stretch the bound follows the current spacing, and so does dtmin */
-        const double floor_now = floor_dt * (r->m->dt_stretch ? s->stretch_min : 1.0);
+        /* where a body is compressed the bound follows the current spacing, and so does
+         * dtmin, down to a hundredth of it (a stretch below 0.005 is a collapse too) */
+        const double floor_now = floor_dt * fmax(s->dt_factor, 0.01);
         if (!(dt >= floor_now)) {
             sync_host(r);
             dt_collapse_report(r, dt, floor_now);
@@ -392,17 +397,18 @@ static int setup(run_state *r, long *particles, long *pairs)
     return 0;
 }
 
-/* After an unstable run: when bodies were crushed far and the step did not follow the
- * current spacing, say that `timestep stretch` would (docs/stability.md). */
+/* After an unstable run under `timestep undeformed`: when bodies were crushed far, say that
+ * the default bound, which follows the current spacing, would not be fooled
+ * (docs/stability.md). */
 static void stretch_hint(const run_state *r)
 {
     const double lam = r->stretch_seen;
-    if (r->m->dt_stretch || r->m->dt_fixed > 0 || !(lam < 0.3))
+    if (r->m->dt_lambda_on > 0 || r->m->dt_fixed > 0 || !(lam < 0.3))
         return;
     fprintf(stderr, "%s: note: particles were compressed to a principal stretch of %.3g, and the "
-                    "time step follows the reference spacing; the scene setting `timestep "
-                    "stretch` bounds it by the current one (docs/stability.md)%s\n",
-            r->m->name, lam, r->m->sync_host ? " (CPU target)" : "");
+                    "time step follows the undeformed spacing (`timestep undeformed`); the default, "
+                    "`timestep auto`, bounds it by the current one (docs/stability.md)\n",
+            r->m->name, lam);
 }
 
 int sph_main(const sph_model *m, int argc, char **argv)

@@ -90,6 +90,12 @@ static void allocate(sph_body *b)
     b->psi = zalloc(n, sizeof(double));
     b->sigma = zalloc(n * 6, sizeof(double));
     b->fix = zalloc(n, 1);
+    b->lam2min = 1.0;
+    if (b->desc->crush) {
+        b->lam2 = zalloc(n, sizeof(double));
+        for (size_t i = 0; i < n; i++)
+            b->lam2[i] = 1.0;
+    }
     const int ns = b->desc->nstate;
     if (ns > 0) {
         b->state = zalloc(n * (size_t)ns, sizeof(double));
@@ -351,7 +357,7 @@ void sph_body_free(sph_body *b)
         free(b->ms_list[k]);
     free(b->bc_list), free(b->bc_count), free(b->ms_list), free(b->ms_count);
     free(b->X), free(b->u), free(b->v), free(b->a), free(b->work), free(b->F), free(b->L);
-    free(b->Q), free(b->Cv), free(b->psi), free(b->sigma), free(b->fix);
+    free(b->Q), free(b->Cv), free(b->lam2), free(b->psi), free(b->sigma), free(b->fix);
     free(b->nb_start), free(b->nb), free(b->nb_k), free(b->wtab), free(b->gtab), free(b->htab);
     free(b->hb_start), free(b->hb), free(b->hb_k), free(b->stripe), free(b->A);
     free(b->s), free(b->sd), free(b->sdd), free(b->H), free(b->lap), free(b->sd_n);

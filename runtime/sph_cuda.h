@@ -5,9 +5,10 @@
  *  - SPH_FOR(i, n, { body }): the loop over particles of the generated passes, a device
  *    lambda run by one thread per particle (the CPU target writes the same body in an
  *    OpenMP loop); SPH_ONCE({ body }) the same on one thread.
- *  - SPH_FOR_MAX2(i, n, out, { ...; return sph_max2{x, y}; }): the same loop that also
- *    reduces out[0] = max x and out[1] = max y (x, y >= 0) per block, then once per block
- *    with an atomic: the |v|^2 and |a|^2 bounds of the time step (eq. 65-66).
+ *  - SPH_FOR_MAX3(i, n, out, { ...; return sph_max3{x, y, z}; }): the same loop that also
+ *    reduces out[k] = the maximum of the k-th value (x, y, z >= 0) per block, then once per
+ *    block with an atomic: the |v|^2 and |a|^2 bounds of the time step (eq. 65-66) and the
+ *    compression bound 1 / lambda_min^2.
  *  - SPH_FOR_SUM(i, n, out, { ...; return x; }): the same for *out += the sum of x.
  *  - The device view of a body: a copy of the host sph_body in managed memory, marked read
  *    mostly so that host and device each keep a copy of its page, whose arrays live in device
@@ -71,11 +72,15 @@ static inline void atomicAdd(double *a, double v) { *a += v; }
     } while (0)
 
 /* The device's sums of a body, b->red[SPH_RED_*]. */
-enum { SPH_RED_VMAX2, SPH_RED_AMAX2, SPH_RED_VISC_RATE, SPH_RED_VISC_DISSIPATED, SPH_NRED };
+enum {
+    SPH_RED_VMAX2, SPH_RED_AMAX2, SPH_RED_CRUSH, /* maxima of |v|^2, |a|^2, 1 / lambda_min^2 */
+    SPH_RED_VISC_RATE, SPH_RED_VISC_DISSIPATED,
+    SPH_NRED
+};
 
-/* What an SPH_FOR_MAX2 body returns: two non-negative values to take the maxima of. */
-struct sph_max2 {
-    double x, y;
+/* What an SPH_FOR_MAX3 body returns: three non-negative values to take the maxima of. */
+struct sph_max3 {
+    double x, y, z;
 };
 
 /* Threads per block of the passes (a multiple of 32, at most 1024). */
@@ -104,44 +109,46 @@ __device__ static inline void sph_atomic_max_pos(double *a, double v)
 }
 
 /* The maxima of a warp's values, in every lane. */
-__device__ static inline sph_max2 sph_warp_max2(sph_max2 m)
+__device__ static inline sph_max3 sph_warp_max3(sph_max3 m)
 {
     for (int o = 16; o > 0; o >>= 1) {
         m.x = fmax(m.x, __shfl_xor_sync(0xffffffffu, m.x, o));
         m.y = fmax(m.y, __shfl_xor_sync(0xffffffffu, m.y, o));
+        m.z = fmax(m.z, __shfl_xor_sync(0xffffffffu, m.z, o));
     }
     return m;
 }
 
 /* Every thread runs the loop (so whole warps reach the shuffles), then warp and block
  * maxima, then one atomic per block. */
-template <class F> __global__ void sph_for_max2_kernel(int n, double *out, F f)
+template <class F> __global__ void sph_for_max3_kernel(int n, double *out, F f)
 {
-    sph_max2 m = {0, 0};
+    sph_max3 m = {0, 0, 0};
     for (int i = blockIdx.x * blockDim.x + threadIdx.x; i < n; i += blockDim.x * gridDim.x) {
-        const sph_max2 r = f(i);
-        m.x = fmax(m.x, r.x), m.y = fmax(m.y, r.y);
+        const sph_max3 r = f(i);
+        m.x = fmax(m.x, r.x), m.y = fmax(m.y, r.y), m.z = fmax(m.z, r.z);
     }
-    __shared__ sph_max2 warp[32];
+    __shared__ sph_max3 warp[32];
     const int lane = threadIdx.x & 31, w = threadIdx.x >> 5;
-    m = sph_warp_max2(m);
+    m = sph_warp_max3(m);
     if (lane == 0)
         warp[w] = m;
     __syncthreads();
     if (w)
         return;
-    const sph_max2 zero = {0, 0};
-    m = sph_warp_max2(lane < (int)(blockDim.x >> 5) ? warp[lane] : zero);
+    const sph_max3 zero = {0, 0, 0};
+    m = sph_warp_max3(lane < (int)(blockDim.x >> 5) ? warp[lane] : zero);
     if (lane == 0) {
         sph_atomic_max_pos(&out[0], m.x);
         sph_atomic_max_pos(&out[1], m.y);
+        sph_atomic_max_pos(&out[2], m.z);
     }
 }
 
-template <class F> static void sph_for_max2(int n, double *out, F f)
+template <class F> static void sph_for_max3(int n, double *out, F f)
 {
     if (n > 0)
-        sph_for_max2_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, out, f);
+        sph_for_max3_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, out, f);
 }
 
 /* The sum of a warp's values, in every lane. */
@@ -152,7 +159,7 @@ __device__ static inline double sph_warp_sum(double x)
     return x;
 }
 
-/* As sph_for_max2_kernel, for a sum: warp, block, then one atomic add per block (an atomic
+/* As sph_for_max3_kernel, for a sum: warp, block, then one atomic add per block (an atomic
  * per thread on one address serialises a million threads). */
 template <class F> __global__ void sph_for_sum_kernel(int n, double *out, F f)
 {
@@ -192,19 +199,20 @@ template <class F> static void sph_for_sum(int n, double *out, F f)
         *out += f(i);
 }
 
-template <class F> static void sph_for_max2(int n, double *out, F f)
+template <class F> static void sph_for_max3(int n, double *out, F f)
 {
     for (int i = 0; i < n; i++) {
-        const sph_max2 r = f(i);
+        const sph_max3 r = f(i);
         out[0] = r.x > out[0] ? r.x : out[0];
         out[1] = r.y > out[1] ? r.y : out[1];
+        out[2] = r.z > out[2] ? r.z : out[2];
     }
 }
 #endif
 
 #define SPH_FOR(i, n, ...) sph_for((n), [=] __device__(int i) __VA_ARGS__)
-#define SPH_FOR_MAX2(i, n, out, ...) \
-    sph_for_max2((n), (out), [=] __device__(int i) -> sph_max2 __VA_ARGS__)
+#define SPH_FOR_MAX3(i, n, out, ...) \
+    sph_for_max3((n), (out), [=] __device__(int i) -> sph_max3 __VA_ARGS__)
 #define SPH_FOR_SUM(i, n, out, ...) \
     sph_for_sum((n), (out), [=] __device__(int i) -> double __VA_ARGS__)
 /* One thread: the body's scalars (reductions reset, sums advanced) in stream order. */
@@ -337,6 +345,7 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->L = (double *)sph_dev_copy(h->L, n * d * d * sizeof(double));
     b->Q = (sph_real *)sph_dev_copy(h->Q, n * d * d * sizeof(sph_real));
     b->Cv = (sph_real *)sph_dev_copy(h->Cv, n * d * d * sizeof(sph_real));
+    b->lam2 = (double *)sph_dev_copy(h->lam2, n * sizeof(double)); /* NULL without crush */
     b->psi = (double *)sph_dev_copy(h->psi, n * sizeof(double));
     b->fix = (uint8_t *)sph_dev_copy(h->fix, n);
     b->state = (double *)sph_dev_copy(h->state, n * (size_t)h->desc->nstate * sizeof(double));
@@ -356,7 +365,8 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->fb = (int *)sph_dev_copy(nb, (size_t)slots * n * sizeof(int));
     b->fb_k = (int *)sph_dev_copy(k, (size_t)slots * n * sizeof(int));
     free(count), free(nb), free(k);
-    const double red[SPH_NRED] = {h->vmax2, h->amax2, h->visc_rate, h->visc_dissipated};
+    const double red[SPH_NRED] = {h->vmax2, h->amax2, 1.0 / h->lam2min, h->visc_rate,
+                                  h->visc_dissipated};
     b->red = (double *)sph_dev_copy(red, sizeof red);
     const int nbcs = h->desc->nbcs;
     if (nbcs) { /* the particles of each `near` BC: a managed table of device lists */
@@ -396,6 +406,7 @@ static void sph_cuda_reductions(sph_body *h, const sph_body *d)
     double red[SPH_NRED];
     SPH_CUDA_CHECK(cudaMemcpy(red, d->red, sizeof red, cudaMemcpyDeviceToHost));
     h->vmax2 = red[SPH_RED_VMAX2], h->amax2 = red[SPH_RED_AMAX2];
+    h->lam2min = red[SPH_RED_CRUSH] > 0 ? 1.0 / red[SPH_RED_CRUSH] : 1.0;
     h->visc_rate = red[SPH_RED_VISC_RATE], h->visc_dissipated = red[SPH_RED_VISC_DISSIPATED];
 }
 

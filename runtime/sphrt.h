@@ -23,6 +23,7 @@
 #ifndef SPHRT_H
 #define SPHRT_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -159,6 +160,8 @@ typedef struct {
                                    (plastic work); 0: none */
     int viscous;                /* 1: artificial viscosity, whose dissipated energy the run
                                    reports */
+    int crush;                  /* 1: the time step follows the current spacing where the body
+                                   is compressed (sph_model.dt_lambda_on; lam2 below) */
     /* Contact with the other bodies (scenes with contact, see sph_contact_desc). */
     double young, poisson;      /* elastic constants of the contact stiffness */
     double restitution;         /* coefficient of restitution, 0 < e <= 1 */
@@ -210,9 +213,11 @@ typedef struct {
      * (DeformStruc_Energies.csv, MeasuringPlData_MK<mk>_PL<k>.csv; docs/xml.md).  Set for
      * models imported from XML case files. */
     int compat_outputs;
-    /* 1 (scene setting `timestep stretch`): the bound of eq. 65 on the current spacing, h
-     * times the smallest principal stretch of any particle (docs/stability.md). */
-    int dt_stretch;
+    /* The scene setting `timestep`: where a body's smallest principal stretch lambda is
+     * below dt_lambda_on, the bound of eq. 65 is taken on the current spacing, times
+     * lambda / dt_lambda_on (docs/stability.md): 0.5 `auto` (the default), 1 `stretch`, 0
+     * `undeformed` (never: eq. 65 on h as the paper writes it). */
+    double dt_lambda_on;
     const sph_contact_desc *contact; /* NULL: the bodies do not touch each other */
 
     /* Generated passes. */
@@ -311,6 +316,9 @@ struct sph_body {
 
     /* reductions written by the generated update pass */
     double vmax2, amax2;
+    /* the time step's bound on compression (desc->crush): each particle's squared smallest
+     * principal stretch from the last stress pass, and their minimum (update; 1 before) */
+    double *lam2, lam2min;
     /* artificial viscosity: the rate at which it dissipates energy (momentum pass) and the
      * energy it has dissipated so far (update) */
     double visc_rate, visc_dissipated;
@@ -326,8 +334,8 @@ struct sph_sim {
     long step;
     int threads;
     sph_contact *contact;  /* contact state (contact.c); NULL until the first contact pass */
-    double stretch_min;    /* with dt_stretch: the smallest principal stretch at the last
-                              sph_sim_stable_dt (1 otherwise) */
+    double dt_factor;      /* the smallest factor on eq. 65 of any body at the last
+                              sph_sim_stable_dt (timestep auto or stretch; 1 otherwise) */
 };
 
 /* Entry point of a generated program. */
@@ -385,6 +393,35 @@ SPH_HD static inline double sph_det3(const double F[9])
 {
     return F[0] * sph_cofactor(F, 0, 0) + F[1] * sph_cofactor(F, 0, 1) +
            F[2] * sph_cofactor(F, 0, 2);
+}
+
+/* The square of the smallest principal stretch of F: the smallest eigenvalue of C = F^T F.
+ * In 2D (plane strain, F_yy = 1) the in-plane pair in closed form, with the out-of-plane 1;
+ * in 3D the trigonometric solution of the characteristic cubic.  A time-step bound uses it,
+ * so a few ulps do not matter. */
+SPH_HD static inline double sph_stretch2_min(const double F[9], int dim)
+{
+    double C[9];
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            C[3 * r + c] = F[r] * F[c] + F[3 + r] * F[3 + c] + F[6 + r] * F[6 + c];
+    if (dim == 2) {
+        const double m = 0.5 * (C[0] + C[8]), d = 0.5 * (C[0] - C[8]);
+        const double l2 = m - sqrt(d * d + C[2] * C[2]);
+        return l2 < 1.0 ? l2 : 1.0;
+    }
+    const double off = C[1] * C[1] + C[2] * C[2] + C[5] * C[5];
+    const double q = (C[0] + C[4] + C[8]) / 3.0;
+    const double d0 = C[0] - q, d1 = C[4] - q, d2 = C[8] - q;
+    const double p = sqrt((d0 * d0 + d1 * d1 + d2 * d2 + 2.0 * off) / 6.0);
+    if (p <= 1e-14 * fabs(q))
+        return q; /* a multiple of I */
+    const double b0 = d0 / p, b1 = d1 / p, b2 = d2 / p, b01 = C[1] / p, b02 = C[2] / p,
+                 b12 = C[5] / p;
+    double r = 0.5 * (b0 * (b1 * b2 - b12 * b12) - b01 * (b01 * b2 - b12 * b02) +
+                      b02 * (b01 * b12 - b1 * b02));
+    r = r < -1.0 ? -1.0 : r > 1.0 ? 1.0 : r;
+    return q + 2.0 * p * cos(acos(r) / 3.0 + 2.0943951023931957); /* + 2 pi / 3 */
 }
 
 /* C = A B */

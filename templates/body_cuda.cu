@@ -8,7 +8,7 @@
  * itself with a zero table entry (sph_full_lists). */
 
 /* Pass 1-2, per particle: A_i = sum_j V_j (u_j - u_i) (x) grad W_ij over the particle's
- * full list, then F, the law, P L and cof(F) L (@B@_particle_stress, body_particle.c). */
+ * full list, then F, the law, P L and cof(F) (@B@_particle_stress, body_particle.c). */
 static void @B@_stress_pass(sph_body *b)
 {
     enum { D = @DIM@ };
@@ -153,8 +153,8 @@ static void @B@_predict(sph_body *b, double dt)
 static void @B@_update(sph_body *b, double dt)
 {
     enum { D = @DIM@ };
-    sph_cuda_zero(b->red + SPH_RED_VMAX2, 2);
-    SPH_FOR_MAX2(i, b->n, b->red + SPH_RED_VMAX2, {
+    sph_cuda_zero(b->red + SPH_RED_VMAX2, 3);
+    SPH_FOR_MAX3(i, b->n, b->red + SPH_RED_VMAX2, {
 //@if VERLET
         const double *vn = b->v, du = dt;
 //@endif
@@ -179,7 +179,12 @@ static void @B@_update(sph_body *b, double dt)
             v2 += b->v[i * D + k] * b->v[i * D + k];
             a2 += ak * ak;
         }
-        return sph_max2{v2, a2};
+//@if CRUSH
+        return sph_max3{v2, a2, 1.0 / b->lam2[i]}; /* the compression bound (runtime/sim.c) */
+//@endif
+//@if NO_CRUSH
+        return sph_max3{v2, a2, 0.0};
+//@endif
     });
 //@if VISCOSITY
     SPH_ONCE({ b->red[SPH_RED_VISC_DISSIPATED] += b->red[SPH_RED_VISC_RATE] * dt; });

@@ -48,7 +48,7 @@ static void @B@_gradient_pass(sph_body *b)
     }
 }
 
-/* Pass 2, per particle: F, the law, P L and cof(F) L (@B@_particle_stress). */
+/* Pass 2, per particle: F, the law, P L and cof(F) (@B@_particle_stress). */
 static void @B@_stress_pass(sph_body *b)
 {
     enum { D = @DIM@ };

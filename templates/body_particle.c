@@ -73,6 +73,11 @@ SPH_FN void @B@_particle_stress(sph_body *b, int i, const double *A)
         for (int c = 0; c < D; c++)
             b->F[(size_t)i * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] =
                 F[sph_axis(D, r) * 3 + sph_axis(D, c)];
+//@if CRUSH
+    /* the smallest principal stretch squared, for the time step where the body is
+     * compressed (timestep auto: eq. 65 on the current spacing; runtime/sim.c) */
+    b->lam2[i] = sph_stretch2_min(F, D);
+//@endif
     /* P = F S (eq. 2), in-plane block, then Q = P L */
     double P[D * D];
     for (int r = 0; r < D; r++)

@@ -68,9 +68,18 @@ static void @B@_update(sph_body *b, double dt)
     const double *sdn = b->sd_n;
 //@endif
 //@endif
+//@if CRUSH
+    double lam2min = 1; /* the smallest principal stretch squared (stress pass) */
+#pragma omp parallel for schedule(static) reduction(max : vmax2, amax2) reduction(min : lam2min)
+//@endif
+//@if NO_CRUSH
 #pragma omp parallel for schedule(static) reduction(max : vmax2, amax2)
+//@endif
     for (int i = 0; i < b->n; i++) {
         double v2 = 0, a2 = 0;
+//@if CRUSH
+        lam2min = b->lam2[i] < lam2min ? b->lam2[i] : lam2min;
+//@endif
 //@if FRACTURE
         sd[i] = @B@_phase_rate(sdn[i], sdd[i], H[i], dt);
         @B@_phase_move(&s[i], &sd[i], du);
@@ -87,6 +96,9 @@ static void @B@_update(sph_body *b, double dt)
     }
     b->vmax2 = vmax2;
     b->amax2 = amax2;
+//@if CRUSH
+    b->lam2min = lam2min;
+//@endif
 //@if VISCOSITY
     b->visc_dissipated += b->visc_rate * dt;
 //@endif

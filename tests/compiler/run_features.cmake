@@ -23,7 +23,8 @@ set(marks
   "hourglass=htab"
   "fracture=ltab"
   "restrict=@B@_restrict(sph_body"
-  "state=st_new")
+  "state=st_new"
+  "crush=sph_stretch2_min(F")
 
 string(REGEX MATCHALL "body [A-Za-z0-9_]+: dim [23][^\n]*\n[^\n]*features:[^\n]*" bodies "${plan}")
 foreach(entry ${bodies})
