@@ -622,10 +622,13 @@ void emit_model_desc(Emitter *E)
 {
     const Model *m = E->m;
     FILE *out = E->out;
-    /* timestep auto or stretch (docs/stability.md); reference and a fixed dt: none */
-    const char *lambda_on = m->dt > 0 || m->dt_mode == TIMESTEP_UNDEFORMED ? ""
-                            : m->dt_mode == TIMESTEP_STRETCH ? "    .dt_lambda_on = 1.0,\n"
-                                                             : "    .dt_lambda_on = 0.5,\n";
+    /* timestep auto: the Courant number on the current spacing at most SPH_CFL_CURRENT
+     * (lambda_on = CFL / 0.4, at most 1); stretch: lambda_on = 1; undeformed and a fixed dt:
+     * none (docs/stability.md) */
+    char lambda_on[64] = "";
+    if (m->dt <= 0 && m->dt_mode != TIMESTEP_UNDEFORMED)
+        snprintf(lambda_on, sizeof lambda_on, "    .dt_lambda_on = %.17g,\n",
+                 m->dt_mode == TIMESTEP_STRETCH ? 1.0 : fmin(1.0, m->cfl / SPH_CFL_CURRENT));
     if (E->cuda) /* C++ warns where C does not */
         fputs("/* The descriptions name only the members a scene uses; the others are zero, as in "
               "C. */\n#pragma GCC diagnostic ignored \"-Wmissing-field-initializers\"\n\n", out);

@@ -104,9 +104,11 @@ typedef struct {
 
 typedef enum { KERNEL_WENDLAND = 0, KERNEL_CUBIC = 1 } KernelKind;
 typedef enum { INTEGRATOR_VERLET = 0, INTEGRATOR_SYMPLECTIC = 1 } IntegratorKind;
-/* `timestep`: eq. 65 follows the current spacing of compressed bodies below a stretch of 0.5
- * (auto), always (stretch), or never (undeformed: the paper's bound, on the undeformed spacing) */
+/* `timestep`: eq. 65 follows the current spacing of compressed bodies where the Courant
+ * number on it would exceed SPH_CFL_CURRENT (auto), always (stretch), or never (undeformed:
+ * the paper's bound, on the undeformed spacing); docs/stability.md */
 typedef enum { TIMESTEP_AUTO = 0, TIMESTEP_UNDEFORMED = 1, TIMESTEP_STRETCH = 2 } TimestepKind;
+#define SPH_CFL_CURRENT 0.4
 
 typedef struct {
     const char *name;     /* program name (file stem) */

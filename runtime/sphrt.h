@@ -214,9 +214,10 @@ typedef struct {
      * models imported from XML case files. */
     int compat_outputs;
     /* The scene setting `timestep`: where a body's smallest principal stretch lambda is
-     * below dt_lambda_on, the bound of eq. 65 is taken on the current spacing, times
-     * lambda / dt_lambda_on (docs/stability.md): 0.5 `auto` (the default), 1 `stretch`, 0
-     * `undeformed` (never: eq. 65 on h as the paper writes it). */
+     * below dt_lambda_on, the bound of eq. 65 is multiplied by lambda / dt_lambda_on
+     * (docs/stability.md): `auto` (the default) CFL / 0.4, at most 1, so that the Courant
+     * number on the current spacing lambda h stays below 0.4 (0.5 at CFL 0.2); `stretch` 1;
+     * 0 `undeformed` (never: eq. 65 on h as the paper writes it). */
     double dt_lambda_on;
     const sph_contact_desc *contact; /* NULL: the bodies do not touch each other */
 
