@@ -18,9 +18,11 @@ static void features(const Model *m, const BodyModel *b, BodyPlan *p)
     p->fracture = b->fracture.on;
     p->restrict_phase = b->fracture.restrict_expr != NULL;
     p->crush = m->dt <= 0 && m->dt_mode != TIMESTEP_UNDEFORMED;
+    p->measure = b->nmeasures > 0;
     for (int k = 0; k < b->nbcs; k++) {
         if (!b->bcs[k].comps)
             continue; /* only out-of-plane components in 2D: nothing to do */
+        p->bc_fns++;
         p->velocity_bcs |= b->bcs[k].kind == BC_VELOCITY;
         p->force_bcs |= b->bcs[k].kind == BC_FORCE;
     }
@@ -77,9 +79,10 @@ void plan_dump(const Model *m, FILE *out)
                 p->symplectic ? "symplectic" : "verlet");
         fprintf(out, "  features: viscosity=%d beta2=%d gravity=%d velocity_bcs=%d "
                      "force_bcs=%d hourglass=%d fracture=%d restrict=%d state=%d contact=%d "
-                     "crush=%d\n",
+                     "crush=%d measure=%d bc_fns=%d\n",
                 p->viscosity, p->beta2, p->gravity, p->velocity_bcs, p->force_bcs, p->hourglass,
-                p->fracture, p->restrict_phase, p->nstate > 0, model_has_contact(m), p->crush);
+                p->fracture, p->restrict_phase, p->nstate > 0, model_has_contact(m), p->crush,
+                p->measure, p->bc_fns);
         fprintf(out, "  material law: %d graph nodes\n", count_ops(&p->law));
         int roots[10 + LAW_MAX_SLOTS];
         memcpy(roots, p->roots.S, sizeof p->roots.S);

@@ -17,6 +17,8 @@ typedef struct {
     int fracture;       /* phase-field fracture (eq. 6-9, 61-63) */
     int restrict_phase; /* a lower bound on its phase field */
     int crush;          /* the time step's bound on compression (timestep auto or stretch) */
+    int measure;        /* measurement planes */
+    int bc_fns;         /* BCs with a value function: those with an in-plane component */
     int nstate;         /* state values per particle of its law (plasticity); 0: none */
     SGraph law;         /* the material law, constants folded, for this body's dimension */
     LawRoots roots;
