@@ -406,8 +406,8 @@ static void stretch_hint(const run_state *r)
     if (r->m->dt_lambda_on > 0 || r->m->dt_fixed > 0 || !(lam < 0.3))
         return;
     fprintf(stderr, "%s: note: particles were compressed to a principal stretch of %.3g, and the "
-                    "time step follows the undeformed spacing (`timestep undeformed`); the default, "
-                    "`timestep auto`, bounds it by the current one (docs/stability.md)\n",
+                    "time step follows the undeformed spacing (`timestep undeformed`); the "
+                    "default, `timestep auto`, bounds it by the current one (docs/stability.md)\n",
             r->m->name, lam);
 }
 

@@ -398,8 +398,9 @@ SPH_HD static inline double sph_det3(const double F[9])
 
 /* The square of the smallest principal stretch of F: the smallest eigenvalue of C = F^T F.
  * In 2D (plane strain, F_yy = 1) the in-plane pair in closed form, with the out-of-plane 1;
- * in 3D the trigonometric solution of the characteristic cubic.  A time-step bound uses it,
- * so a few ulps do not matter. */
+ * in 3D the trigonometric solution of the characteristic cubic, to about 1e-9 relative (a few
+ * 1e-7 where two stretches coincide; tests/unit/test_stretch.c).  A time-step bound uses it,
+ * which does not feel that. */
 SPH_HD static inline double sph_stretch2_min(const double F[9], int dim)
 {
     double C[9];

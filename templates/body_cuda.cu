@@ -78,7 +78,8 @@ static void @B@_momentum_pass(sph_body *b)
                 f[r] = s2 * inv_rho;
             }
 //@if VISCOSITY
-            /* G_ij along the viscous direction fv = (cof F_i + cof F_j) w, as templates/body_forces.c */
+            /* G_ij along the viscous direction fv = (cof F_i + cof F_j) w, as in
+             * templates/body_forces.c */
             sph_real fv[D], vw = 0;
             for (int r = 0; r < D; r++) {
                 fv[r] = 0;
