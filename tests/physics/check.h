@@ -16,6 +16,17 @@ static void check_close(const char *what, double got, double want, double tol)
     check_failures += !ok;
 }
 
+#ifdef SPHRT_H
+/* The largest |entry| of a body's P L (Q): its stress, for tests of stress-free motions. */
+static double check_max_stress(const sph_body *b)
+{
+    double q = 0;
+    for (long i = 0; i < (long)b->n * b->dim * b->dim; i++)
+        q = fmax(q, fabs(b->Q[i]));
+    return q;
+}
+#endif
+
 static int check_result(void)
 {
     printf(check_failures ? "%d check(s) FAILED\n" : "all checks passed\n", check_failures);

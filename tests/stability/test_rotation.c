@@ -7,14 +7,6 @@
 
 #include "check.h"
 
-static double max_stress(const sph_body *b)
-{
-    double q = 0;
-    for (int i = 0; i < b->n * 4; i++)
-        q = fmax(q, fabs(b->Q[i]));
-    return q;
-}
-
 int main(void)
 {
     sph_sim sim;
@@ -24,7 +16,7 @@ int main(void)
     while (sim.t < MODEL.t_end - 1e-12) {
         sph_sim_step(&sim, fmin(MODEL.dt_fixed, MODEL.t_end - sim.t));
         for (int ib = 0; ib < 2; ib++)
-            worst[ib] = fmax(worst[ib], max_stress(&sim.bodies[ib]));
+            worst[ib] = fmax(worst[ib], check_max_stress(&sim.bodies[ib]));
     }
     const double E = 1.99845e6;
     printf("%ld steps, t = %.6g s (%.3f turns)\n", sim.step, sim.t, sim.t * 100 / (2 * 3.14159265358979));

@@ -11,14 +11,6 @@
 
 #include "check.h"
 
-static double max_stress(const sph_body *b)
-{
-    double q = 0;
-    for (int i = 0; i < b->n * 4; i++)
-        q = fmax(q, fabs(b->Q[i]));
-    return q;
-}
-
 int main(void)
 {
     sph_sim sim;
@@ -34,7 +26,7 @@ int main(void)
     while (sim.t < MODEL.t_end - 1e-12) {
         sph_sim_step(&sim, fmin(sph_sim_stable_dt(&sim), MODEL.t_end - sim.t));
         vmin = fmin(vmin, b->visc_dissipated);
-        qmax = fmax(qmax, max_stress(b));
+        qmax = fmax(qmax, check_max_stress(b));
     }
     double es, ek;
     sph_body_energies(b, &es, &ek);
