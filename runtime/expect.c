@@ -88,8 +88,12 @@ static void reference_error(const sph_series *s, int q, double (*ref)(double), d
 
 static const char *const KIND[] = {"period", "amplitude", "energy", "reference"};
 
-int sph_expect_evaluate(const sph_model *m, const sph_record *r, sph_json *j, int quiet)
+int sph_expect_evaluate(const sph_model *m, const sph_record *r, sph_json *j, int quiet,
+                        char *errors, size_t len)
 {
+    size_t used = 0;
+    if (errors && len)
+        errors[0] = 0;
     int failed = 0;
     sph_json_key_array(j, "expectations");
     for (int k = 0; k < m->nexpects; k++) {
@@ -126,6 +130,9 @@ int sph_expect_evaluate(const sph_model *m, const sph_record *r, sph_json *j, in
             sph_json_num(j, "tolerance", x->tolerance);
         sph_json_bool(j, "pass", pass);
         sph_json_end_object(j);
+        if (errors && used < len)
+            used += (size_t)snprintf(errors + used, len - used, "%s%s %.3g %%", used ? ", " : "",
+                                     KIND[x->kind], 100.0 * error);
         if (!quiet || !pass)
             fprintf(pass ? stdout : stderr, "%s: relative error %.3g %%%s%s\n", x->text,
                     100.0 * error, x->tolerance >= 0 ? (pass ? " (ok)" : " (FAILED)") : "",

@@ -30,6 +30,7 @@ typedef struct {
     double setup_seconds; /* particles, neighbours, tables, (device upload) */
     double stretch_seen;  /* the smallest principal stretch at the monitor's checks */
     char unstable[512];
+    char errors[512];     /* the declared expectations' errors, for the final line */
 } run_state;
 
 static double dt_floor(const run_state *r)
@@ -292,7 +293,9 @@ static int write_summary(run_state *r, double wall, long particles, long pairs, 
     for (int i = 0; i < s->nbodies; i++)
         body_summary(&j, &s->bodies[i]);
     sph_json_end_array(&j);
-    *failed = r->unstable[0] ? 0 : sph_expect_evaluate(r->m, &r->rec, &j, r->opt.quiet);
+    *failed = r->unstable[0] ? 0
+                             : sph_expect_evaluate(r->m, &r->rec, &j, r->opt.quiet, r->errors,
+                                                   sizeof r->errors);
     return sph_json_close(&j);
 }
 
@@ -456,10 +459,10 @@ int sph_main(const sph_model *m, int argc, char **argv)
         return 3;
     }
     if (!r.opt.quiet)
-        printf("%s: %ld particles, %ld steps to t = %g s in %.2f s (%.1f ns per particle-step)\n"
-               "%s: ParaView: %s/particles/%s.pvd ; energies and measurements in %s/\n",
+        printf("%s: %ld particles, %ld steps to t = %g s in %.2f s (%.1f ns per particle-step)"
+               "%s%s\n%s: ParaView: %s/particles/%s.pvd ; energies and measurements in %s/\n",
                m->name, particles, r.sim.step, r.sim.t, wall,
-               ps > 0 ? 1e9 * r.step_seconds / ps : 0.0, m->name, r.opt.out_dir,
-               m->bodies[0].name, r.opt.out_dir);
+               ps > 0 ? 1e9 * r.step_seconds / ps : 0.0, r.errors[0] ? "; errors: " : "",
+               r.errors, m->name, r.opt.out_dir, m->bodies[0].name, r.opt.out_dir);
     return failed ? 1 : 0;
 }

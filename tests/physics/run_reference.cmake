@@ -19,3 +19,10 @@ if(last LESS 0.0859 OR last GREATER 0.0959)
   message(FATAL_ERROR "the 10 % table's relative error is ${last}, expected 0.0909 +- 0.005")
 endif()
 message(STATUS "references: ${errors}")
+# Without --quiet the final line gives them too, with the run time.
+execute_process(COMMAND ${PROGRAM} --out ${OUT} RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                ERROR_VARIABLE err)
+if(NOT out MATCHES "steps to t = [^\n]* s in [0-9.]+ s \\([0-9.]+ ns per particle-step\\); errors: reference [0-9.e+-]+ %, reference [0-9.e+-]+ %, reference [0-9.e+-]+ %\n")
+  message(FATAL_ERROR "the final line does not give the run time and the three errors:\n${out}")
+endif()
+message(STATUS "final line gives the errors")
