@@ -626,7 +626,7 @@ void emit_model_desc(Emitter *E)
      * (lambda_on = CFL / 0.4, at most 1); stretch: lambda_on = 1; undeformed and a fixed dt:
      * none (docs/stability.md) */
     char lambda_on[64] = "";
-    if (m->dt <= 0 && m->dt_mode != TIMESTEP_UNDEFORMED)
+    if (model_has_crush(m))
         snprintf(lambda_on, sizeof lambda_on, "    .dt_lambda_on = %.17g,\n",
                  m->dt_mode == TIMESTEP_STRETCH ? 1.0 : fmin(1.0, m->cfl / SPH_CFL_CURRENT));
     if (E->cuda) /* C++ warns where C does not */

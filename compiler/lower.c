@@ -17,7 +17,7 @@ static void features(const Model *m, const BodyModel *b, BodyPlan *p)
     p->symplectic = m->integrator == INTEGRATOR_SYMPLECTIC;
     p->fracture = b->fracture.on;
     p->restrict_phase = b->fracture.restrict_expr != NULL;
-    p->crush = m->dt <= 0 && m->dt_mode != TIMESTEP_UNDEFORMED;
+    p->crush = model_has_crush(m);
     p->measure = b->nmeasures > 0;
     for (int k = 0; k < b->nbcs; k++) {
         if (!b->bcs[k].comps)

@@ -136,6 +136,11 @@ typedef struct {
 
 /* 1 when the scene's bodies touch each other: several bodies and contact not switched off. */
 static inline int model_has_contact(const Model *m) { return m->nbodies > 1 && m->contact > 0; }
+/* The time step's bound on compression: an adaptive step not `timestep undeformed`. */
+static inline int model_has_crush(const Model *m)
+{
+    return m->dt <= 0 && m->dt_mode != TIMESTEP_UNDEFORMED;
+}
 
 /* Check the program; returns 0 and fills *m when there are no errors. */
 int check_program(const Program *p, Model *m);

@@ -130,13 +130,12 @@ static void @B@_momentum_pass(sph_body *b)
                      * turned by more than 90 degrees, and L in fv lets a boundary pair's G
                      * see a rigid rotation; docs/stability.md). */
                     const sph_real *Cj = Cv + (size_t)j * D * D;
-                    sph_real fv[D], dv[D], vw = 0;
+                    sph_real fv[D], vw = 0;
                     for (int r = 0; r < D; r++) {
                         fv[r] = 0;
                         for (int c = 0; c < D; c++)
                             fv[r] += (Ci[r * D + c] + Cj[r * D + c]) * w[c];
-                        dv[r] = (sph_real)(v[i * D + r] - v[j * D + r]);
-                        vw += dv[r] * fv[r];
+                        vw += (sph_real)(v[i * D + r] - v[j * D + r]) * fv[r];
                     }
                     const sph_real G = gtab[k] * (sph_real)0.5 * vw;
                     sph_real pi = (sph_real)(-@BETA1@ * @C0@) * G; /* eq. 58, times rho0 */
