@@ -6,26 +6,9 @@
 #include <stdio.h>
 #include <time.h>
 #include "sph_tensor.h"
-
-static int failures = 0;
-
-/* Prints one check and counts it when it fails. */
-static void check(int ok, const char *what, double value, double limit)
-{
-    printf("%-4s %-62s %.3e (limit %.1e)\n", ok ? "ok" : "FAIL", what, value, limit);
-    failures += !ok;
-}
+#include "unit_check.h"
 
 /* ---------------------------------------------------------------- helpers */
-
-static uint64_t lcg_state = 12345u;
-
-/* Uniform in [0, 1) from a 64-bit LCG (Knuth's MMIX constants), the top 53 bits. */
-static double urand(void)
-{
-    lcg_state = lcg_state * 6364136223846793005u + 1442695040888963407u;
-    return (double)(lcg_state >> 11) * 0x1.0p-53;
-}
 
 static double srand1(void) { return 2.0 * urand() - 1.0; } /* uniform in [-1, 1) */
 

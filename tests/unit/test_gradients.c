@@ -7,15 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "sphrt.h"
-
-static int failures = 0;
-
-/* Prints one check and counts it when it fails. */
-static void check(int ok, const char *what, double value, double limit)
-{
-    printf("%-4s %-66s %.3e (limit %.1e)\n", ok ? "ok" : "FAIL", what, value, limit);
-    failures += !ok;
-}
+#include "unit_check.h"
 
 /* Deterministic uniform random numbers in [-1, 1). */
 static double rnd(unsigned long long *s)

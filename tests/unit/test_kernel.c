@@ -2,15 +2,7 @@
 #include <math.h>
 #include <stdio.h>
 #include "sphrt.h"
-
-static int failures = 0;
-
-/* Prints one check and counts it when it fails. */
-static void check(int ok, const char *what, double value, double limit)
-{
-    printf("%-4s %-58s %.3e (limit %.1e)\n", ok ? "ok" : "FAIL", what, value, limit);
-    failures += !ok;
-}
+#include "unit_check.h"
 
 static const char *kname(sph_kernel_kind k) { return k == SPH_CUBIC ? "cubic" : "wendland"; }
 

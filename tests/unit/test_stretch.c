@@ -7,21 +7,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "sph_tensor.h"
-
-static int failures = 0;
-
-static void check(int ok, const char *what, double value, double limit)
-{
-    printf("%-4s %-62s %.3e (limit %.1e)\n", ok ? "ok" : "FAIL", what, value, limit);
-    failures += !ok;
-}
-
-static uint64_t lcg_state = 2024u;
-static double urand(void)
-{
-    lcg_state = lcg_state * 6364136223846793005u + 1442695040888963407u;
-    return (double)(lcg_state >> 11) * 0x1.0p-53;
-}
+#include "unit_check.h"
 
 /* The reference: the smallest eigenvalue of F^T F by Jacobi (sph_tensor.h). */
 static double jacobi_min(const double F[9])
@@ -67,6 +53,7 @@ static void make_F(const double u[3], double F[9], int dim)
 
 int main(void)
 {
+    lcg_state = 2024u;
     const double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
     for (int dim = 2; dim <= 3; dim++) {
         const double e = fabs(sph_stretch2_min(I, dim) - 1);
