@@ -5,6 +5,8 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 static int check_failures;
 
@@ -24,6 +26,41 @@ static double check_max_stress(const sph_body *b)
     for (long i = 0; i < (long)b->n * b->dim * b->dim; i++)
         q = fmax(q, fabs(b->Q[i]));
     return q;
+}
+
+/* A fracture body run to the model's end time under watch: over every step, the largest
+ * decrease of the history field H at any particle (irreversibility, eq. 8: must be 0), the
+ * range of s (must stay in [0, 1]), and the first damage (s < 0.5): its time and particle. */
+typedef struct {
+    double h_drop, s_lo, s_hi;
+    double t_init; /* -1: no damage */
+    int i_init;
+} check_fracture_run;
+
+static check_fracture_run check_run_fracture(sph_sim *sim, const sph_body *b)
+{
+    check_fracture_run w = {0, 1, 0, -1, -1};
+    double *H0 = malloc(sizeof(double) * (size_t)b->n);
+    while (sim->t < sim->m->t_end - 1e-15) {
+        memcpy(H0, b->H, sizeof(double) * (size_t)b->n);
+        sph_sim_step(sim, fmin(sph_sim_stable_dt(sim), sim->m->t_end - sim->t));
+        for (int i = 0; i < b->n; i++) {
+            w.h_drop = fmax(w.h_drop, H0[i] - b->H[i]);
+            w.s_lo = fmin(w.s_lo, b->s[i]), w.s_hi = fmax(w.s_hi, b->s[i]);
+            if (w.t_init < 0 && b->s[i] < 0.5)
+                w.t_init = sim->t, w.i_init = i;
+        }
+    }
+    free(H0);
+    return w;
+}
+
+/* The checks of irreversibility and of the range of s on a watched run. */
+static void check_fracture_bounds(const check_fracture_run *w)
+{
+    check_close("largest decrease of H over a step", w->h_drop, 0, 0);
+    check_close("smallest s is at least 0", w->s_lo < 0 ? w->s_lo : 0, 0, 0);
+    check_close("largest s is at most 1", w->s_hi > 1 ? w->s_hi : 1, 1, 0);
 }
 #endif
 
