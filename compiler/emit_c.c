@@ -462,6 +462,37 @@ static void region(Emitter *E, const char *name, const Region *r)
     fputs("};\n", E->out);
 }
 
+/* What a BC sets, "velocity z" or "force surface x, z", for the runtime's messages. */
+static void bc_what(const BcModel *bc, char *buf, size_t size)
+{
+    static const char *const force[] = {"force", "force point", "force surface", "force accel"};
+    int len = snprintf(buf, size, "%s", bc->kind == BC_VELOCITY ? "velocity" : force[bc->force]);
+    for (int axis = 0, first = 1; axis < 3 && len > 0 && (size_t)len < size; axis++)
+        if (bc->comps >> axis & 1) {
+            len += snprintf(buf + len, size - (size_t)len, "%s%c", first ? " " : ", ", "xyz"[axis]);
+            first = 0;
+        }
+}
+
+/* Entry k of a body's sph_bc_desc table: its `near` region, its line, its value function. */
+static void bc_desc(Emitter *E, const BodyModel *b, int k)
+{
+    const BcModel *bc = &b->bcs[k];
+    char where[300], what[64], value[160] = "NULL";
+    snprintf(where, sizeof where, "%s:%d", source_basename(bc->loc.file), bc->loc.line);
+    bc_what(bc, what, sizeof what);
+    if (bc->comps)
+        snprintf(value, sizeof value, "%s_bc%d", b->name, k);
+    if (bc->has_near)
+        fprintf(E->out, "    {1, {%s_near%d, %d, 0, {0, 0, 0}}, ", b->name, k, bc->near.n);
+    else
+        fputs("    {0, {NULL, 0, 0, {0, 0, 0}}, ", E->out);
+    c_string(E->out, where);
+    fputs(", ", E->out);
+    c_string(E->out, what);
+    fprintf(E->out, ", %s},\n", value);
+}
+
 static void body_desc_arrays(Emitter *E, const BodyModel *b)
 {
     FILE *out = E->out;
@@ -476,11 +507,7 @@ static void body_desc_arrays(Emitter *E, const BodyModel *b)
     if (b->nbcs) {
         fprintf(out, "static const sph_bc_desc %s_bcs[] = {\n", b->name);
         for (int k = 0; k < b->nbcs; k++)
-            if (b->bcs[k].has_near)
-                fprintf(out, "    {1, {%s_near%d, %d, 0, {0, 0, 0}}},\n", b->name, k,
-                        b->bcs[k].near.n);
-            else
-                fputs("    {0, {NULL, 0, 0, {0, 0, 0}}},\n", out);
+            bc_desc(E, b, k);
         fputs("};\n", out);
     }
     emit_fracture_desc(out, b);

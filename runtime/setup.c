@@ -288,19 +288,46 @@ static void half_lists(sph_body *b)
         b->stripe[s] = (int)((long)b->n * s / ns);
 }
 
-static void selections(sph_body *b, const sph_body_desc *d)
+/* Whether BC k's expression selects (does not skip) any of the particles it may act on, at
+ * five times from 0 to t_end: a selection narrower than the spacing (a window 0.4 mm wide at
+ * dx = 1 mm) would otherwise do nothing silently.  The displacement is zero here, so a
+ * selection by displacement counts as empty until it moves; that is only a warning. */
+static int bc_selects(const sph_body *b, int k, double t_end)
+{
+    const sph_bc_desc *bc = &b->desc->bcs[k];
+    const int n = bc->has_near ? b->bc_count[k] : b->n;
+    for (int q = 0; q <= 4; q++)
+        for (int c = 0; c < n; c++) {
+            sph_pt p;
+            double val;
+            sph_point(b, bc->has_near ? b->bc_list[k][c] : c, b->dim, 0.25 * q * t_end, 0, &p);
+            if (bc->value(&p, &val))
+                return 1;
+        }
+    return 0;
+}
+
+static void selections(sph_body *b, const sph_body_desc *d, double t_end)
 {
     b->bc_list = zalloc((size_t)d->nbcs, sizeof(int *));
     b->bc_count = zalloc((size_t)d->nbcs, sizeof(int));
     for (int k = 0; k < d->nbcs; k++) {
-        if (!d->bcs[k].has_near)
-            continue;
-        b->bc_count[k] = sph_select_near(b->X, b->n, b->dim, b->y_plane, b->dx,
-                                         &d->bcs[k].near, &b->bc_list[k]);
-        if (b->bc_count[k] == 0)
-            fprintf(stderr, "sph: warning: boundary condition %d of body '%s' is restricted to "
-                            "particles near a shape, and no particle lies within dx = %g of it\n",
-                    k + 1, d->name, b->dx);
+        const sph_bc_desc *bc = &d->bcs[k];
+        if (bc->has_near) {
+            b->bc_count[k] = sph_select_near(b->X, b->n, b->dim, b->y_plane, b->dx, &bc->near,
+                                             &b->bc_list[k]);
+            if (b->bc_count[k] == 0) {
+                fprintf(stderr, "%s: warning: %s of body '%s' acts on no particle: none lies "
+                                "within dx = %g m of its `near` shape\n",
+                        bc->where, bc->what, d->name, b->dx);
+                continue;
+            }
+        }
+        if (bc->value && !bc_selects(b, k, t_end))
+            fprintf(stderr, "%s: warning: %s of body '%s' acts on no particle: its expression "
+                            "skips every particle%s at t = 0, T/4, T/2, 3T/4 and T (the end "
+                            "time); is the selection narrower than the spacing dx = %g m?\n",
+                    bc->where, bc->what, d->name, bc->has_near ? " near its shape" : "", b->dx);
     }
     b->ms_list = zalloc((size_t)d->nmeasures, sizeof(int *));
     b->ms_count = zalloc((size_t)d->nmeasures, sizeof(int));
@@ -345,7 +372,7 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
     free(w);
     half_lists(b);
     allocate(b);
-    selections(b, d);
+    selections(b, d, m->t_end);
     return 0;
 }
 

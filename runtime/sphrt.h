@@ -118,9 +118,15 @@ typedef struct {
 } sph_measure_desc;
 
 /* A boundary condition's static part; the value comes from generated code. */
+struct sph_pt;
 typedef struct {
     int has_near;       /* restricted to particles near a region */
     sph_region near;    /* within dx of this region (reference configuration) */
+    const char *where;  /* the model line, "beam.sph:12", and what it sets, "velocity z", */
+    const char *what;   /* for messages */
+    /* the BC's value at a particle: 0 where its expression skips the particle (the
+     * passes' own function; the set-up counts what it selects) */
+    int (*value)(const struct sph_pt *p, double *out);
 } sph_bc_desc;
 
 /* Phase-field fracture of a body (section 2.2; eq. 6-9, 61-63). */
@@ -444,7 +450,7 @@ SPH_HD static inline void sph_mat3_mul_bt(const double A[9], const double B[9], 
 }
 
 /* The variables of user expressions (paper Table 1) at one particle. */
-typedef struct {
+typedef struct sph_pt {
     double x0, y0, z0, x, y, z, ux, uy, uz, t, dt, dx;
 } sph_pt;
 
