@@ -100,6 +100,8 @@ static int check_notch(const Model *m, const BodyItem *it, FractureModel *f)
     if (bad)
         return -1;
     f->notches = realloc(f->notches, (size_t)(f->nnotches + 1) * sizeof *f->notches);
+    f->notch_locs = realloc(f->notch_locs, (size_t)(f->nnotches + 1) * sizeof *f->notch_locs);
+    f->notch_locs[f->nnotches] = it->loc;
     memcpy(f->notches[f->nnotches++], q, sizeof q);
     return 0;
 }

@@ -430,8 +430,8 @@ static void scene_step(Emitter *E)
     fputs("}\n\n", out);
 }
 
-/* A C string literal. */
-static void c_string(FILE *out, const char *s)
+/* A C string literal (emit_internal.h). */
+void emit_c_string(FILE *out, const char *s)
 {
     fputc('"', out);
     for (; *s; s++)
@@ -454,7 +454,7 @@ static void region(Emitter *E, const char *name, const Region *r)
                 kinds[s->kind], s->a[0], s->a[1], s->a[2], s->b[0], s->b[1], s->b[2], s->r,
                 s->subtract);
         if (s->file)
-            c_string(E->out, s->file);
+            emit_c_string(E->out, s->file);
         else
             fputs("NULL", E->out);
         fputs("},\n", E->out);
@@ -487,9 +487,9 @@ static void bc_desc(Emitter *E, const BodyModel *b, int k)
         fprintf(E->out, "    {1, {%s_near%d, %d, 0, {0, 0, 0}}, ", b->name, k, bc->near.n);
     else
         fputs("    {0, {NULL, 0, 0, {0, 0, 0}}, ", E->out);
-    c_string(E->out, where);
+    emit_c_string(E->out, where);
     fputs(", ", E->out);
-    c_string(E->out, what);
+    emit_c_string(E->out, what);
     fprintf(E->out, ", %s},\n", value);
 }
 

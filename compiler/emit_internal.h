@@ -18,6 +18,8 @@ typedef struct {
 } Emitter;
 
 void emit_header(Emitter *E);
+/* s as a C string literal (quotes, backslashes and control characters escaped). */
+void emit_c_string(FILE *out, const char *s);
 void emit_consts_fns(Emitter *E);
 void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p);
 /* templates/FILE filled for body b (its features and numbers). */

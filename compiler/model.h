@@ -62,6 +62,7 @@ typedef struct {
     double eps0;                   /* phase-field length scale, m */
     double limit;                  /* s_l of eq. 63: F = I where s <= s_l */
     double (*notches)[4][3];       /* quads; pairs crossing one are cut at set-up */
+    SrcLoc *notch_locs;            /* per notch: its item */
     int nnotches;
     Expr *restrict_expr;           /* lower bound of s per particle (skip: none), or NULL */
     SrcLoc restrict_loc;

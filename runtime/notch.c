@@ -212,7 +212,7 @@ static void point3(const notch_set *s, int i, double p[3])
     p[2] = x[1];
 }
 
-/* 1 when the pair (i at p, j) crosses one of the quads. */
+/* 1 + the first of the prepared quads the pair (i at p, j) crosses; 0 when it crosses none. */
 static int pair_cut(const notch_set *s, const double p[3], int j)
 {
     double q[3];
@@ -221,24 +221,31 @@ static int pair_cut(const notch_set *s, const double p[3], int j)
         return 0;
     for (int k = 0; k < s->nq; k++)
         if (quad_crossed(&s->q[k], p, q))
-            return 1;
+            return 1 + k;
     return 0;
 }
 
-/* Number of i's pairs that cross a quad. */
-static int count_cut(const notch_set *s, int i, const int *start, const int *nb)
+/* Number of i's pairs that cross a quad; hit[k] = 1 for each prepared quad k one crosses first. */
+static int count_cut(const notch_set *s, int i, const int *start, const int *nb, char *hit)
 {
     double p[3];
     int c = 0;
     point3(s, i, p);
-    for (int k = start[i]; k < start[i + 1]; k++)
-        c += pair_cut(s, p, nb[k]);
+    for (int k = start[i]; k < start[i + 1]; k++) {
+        const int q = pair_cut(s, p, nb[k]);
+        if (!q)
+            continue;
+        c++;
+#pragma omp atomic write
+        hit[q - 1] = 1;
+    }
     return c;
 }
 
 /* Prepares the quads that can cut a pair (with area; in 2D, reaching y_plane); returns
- * their number, 0 when none can. */
-static int set_prepare(notch_set *s, notch_quad *q, const double (*quads)[4][3], int nquads)
+ * their number, 0 when none can.  from[m] is the index in quads of prepared quad m. */
+static int set_prepare(notch_set *s, notch_quad *q, int *from, const double (*quads)[4][3],
+                       int nquads)
 {
     s->q = q;
     s->nq = 0;
@@ -256,29 +263,36 @@ static int set_prepare(notch_set *s, notch_quad *q, const double (*quads)[4][3],
             s->lo[m] = fmin(s->lo[m], Q->lo[m]);
             s->hi[m] = fmax(s->hi[m], Q->hi[m]);
         }
-        s->nq++;
+        from[s->nq++] = k;
     }
     return s->nq;
 }
 
 long sph_drop_notch_pairs(const double *X, int n, int dim, double y_plane, int *start, int *nb,
-                          const double (*quads)[4][3], int nquads)
+                          const double (*quads)[4][3], int nquads, int *quad_cuts)
 {
+    for (int k = 0; quad_cuts && k < nquads; k++)
+        quad_cuts[k] = 0;
     if (n <= 0 || nquads <= 0)
         return n > 0 ? start[n] : 0;
     notch_set s = { .X = X, .dim = dim, .y_plane = y_plane };
     notch_quad *q = xmalloc((size_t)nquads * sizeof *q);
-    if (!set_prepare(&s, q, quads, nquads)) {
-        free(q);
+    int *from = xmalloc((size_t)nquads * sizeof *from);
+    char *hit = calloc((size_t)nquads, 1);
+    if (!hit || !set_prepare(&s, q, from, quads, nquads)) {
+        free(hit), free(from), free(q);
         return start[n];
     }
     int *cut = xmalloc((size_t)n * sizeof *cut);
     long total = 0;
 #pragma omp parallel for schedule(dynamic, 1024) reduction(+ : total)
     for (int i = 0; i < n; i++) {
-        cut[i] = count_cut(&s, i, start, nb);
+        cut[i] = count_cut(&s, i, start, nb, hit);
         total += cut[i];
     }
+    for (int m = 0; quad_cuts && m < s.nq; m++)
+        quad_cuts[from[m]] = hit[m];
+    free(hit), free(from);
     if (total == 0) {
         free(cut);
         free(q);

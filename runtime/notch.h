@@ -22,8 +22,10 @@ int sph_segment_crosses_quad(const double p[3], const double q[3], const double 
  * whose reference segment X_i-X_j crosses one of the nquads quads, compacting nb in place
  * (every list keeps its order) and updating start.  X holds n×dim coordinates: (x, y, z) in
  * 3D, (x, z) in 2D where the particles lie at y = y_plane (ignored in 3D).  The removal is
- * symmetric: (j, i) goes with (i, j).  Returns the new number of list entries, start[n]. */
+ * symmetric: (j, i) goes with (i, j).  Returns the new number of list entries, start[n].
+ * quad_cuts (NULL, or nquads entries): 1 for each quad that is the first one some pair
+ * crosses (the quads are tried in order), 0 for a quad that cuts nothing on its own. */
 long sph_drop_notch_pairs(const double *X, int n, int dim, double y_plane, int *start, int *nb,
-                          const double (*quads)[4][3], int nquads);
+                          const double (*quads)[4][3], int nquads, int *quad_cuts);
 
 #endif

@@ -340,6 +340,41 @@ static void selections(sph_body *b, const sph_body_desc *d, double t_end)
     }
 }
 
+/* Cuts the pairs across the body's notches; a notch that cuts no pair (outside the body, or
+ * along a plane of particles that no pair crosses) is reported. */
+static void cut_notches(sph_body *b, const sph_fracture_desc *f)
+{
+    int *cuts = zalloc((size_t)f->nnotches, sizeof(int));
+    b->npairs = sph_drop_notch_pairs(b->X, b->n, b->dim, b->y_plane, b->nb_start, b->nb,
+                                     (const double(*)[4][3])f->notches, f->nnotches, cuts);
+    for (int k = 0; k < f->nnotches; k++)
+        if (!cuts[k])
+            fprintf(stderr, "%s: warning: the notch of body '%s' cuts no pair of particles: no "
+                            "pair of neighbours crosses it (does it lie outside the body?)\n",
+                    f->notch_where ? f->notch_where[k] : "sph", b->desc->name);
+    free(cuts);
+}
+
+/* A `restrict` that bounds no particle at t = 0, T/4, T/2, 3T/4 and T is reported, like a
+ * boundary condition that acts on none (bc_selects). */
+static void check_restrict(const sph_body *b, const sph_fracture_desc *f, double t_end)
+{
+    if (!f->restrict_value)
+        return;
+    for (int q = 0; q <= 4; q++)
+        for (int i = 0; i < b->n; i++) {
+            sph_pt p;
+            double smin;
+            sph_point(b, i, b->dim, 0.25 * q * t_end, 0, &p);
+            if (f->restrict_value(&p, &smin))
+                return;
+        }
+    fprintf(stderr, "%s: warning: the restrict of body '%s' bounds no particle: its expression "
+                    "skips every particle at t = 0, T/4, T/2, 3T/4 and T (the end time); is the "
+                    "selection narrower than the spacing dx = %g m?\n",
+            f->restrict_where, b->desc->name, b->dx);
+}
+
 int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
 {
     memset(b, 0, sizeof *b);
@@ -362,9 +397,7 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
     sph_neighbours(b->X, b->n, b->dim, 2.0 * b->h, d->nbsrange, b->dx, &b->nb_start, &b->nb);
     b->npairs = b->nb_start[b->n];
     if (d->fracture && d->fracture->nnotches) /* before the gradients: L sees the cut */
-        b->npairs = sph_drop_notch_pairs(b->X, b->n, b->dim, b->y_plane, b->nb_start, b->nb,
-                                         (const double(*)[4][3])d->fracture->notches,
-                                         d->fracture->nnotches);
+        cut_notches(b, d->fracture);
     double *w;
     sph_gradients(b->X, b->n, b->dim, b->nb_start, b->nb, m->kernel, b->h, b->vol, &w, &b->L);
     drop_silent_pairs(b, w);
@@ -373,6 +406,8 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
     half_lists(b);
     allocate(b);
     selections(b, d, m->t_end);
+    if (d->fracture)
+        check_restrict(b, d->fracture, m->t_end);
     return 0;
 }
 

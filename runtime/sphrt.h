@@ -140,6 +140,10 @@ typedef struct {
     double limit;          /* s_l of eq. 63 */
     const sph_quad *notches; /* pairs whose segment crosses a notch are cut at set-up */
     int nnotches;
+    const char *const *notch_where; /* per notch its model line ("beam.sph:24"), for messages */
+    /* the lower bound of s (`restrict`): its model line and its value, 0 where it skips */
+    const char *restrict_where;
+    int (*restrict_value)(const struct sph_pt *p, double *out);
 } sph_fracture_desc;
 
 typedef struct sph_body sph_body;

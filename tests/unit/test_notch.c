@@ -269,7 +269,7 @@ static cut_result cut_and_compare(const double *X, int n, int dim, double y_plan
     memcpy(st0, st, ((size_t)n + 1) * sizeof *st);
     memcpy(nb0, nb, (size_t)st[n] * sizeof *nb);
     r.before = st0[n];
-    r.returned = sph_drop_notch_pairs(X, n, dim, y_plane, st, nb, quads, nquads);
+    r.returned = sph_drop_notch_pairs(X, n, dim, y_plane, st, nb, quads, nquads, NULL);
     r.after = st[n];
     for (int i = 0; i < n; i++) {
         int k = st[i];
@@ -396,7 +396,7 @@ static void test_timing(void)
     long before = st[n];
     static const double N[1][4][3] = {
         { { -1, -1, 20 }, { 20.2, -1, 20 }, { 20.2, 41, 20 }, { -1, 41, 20 } } };
-    long after = sph_drop_notch_pairs(X, n, 3, 0.0, st, nb, N, 1);
+    long after = sph_drop_notch_pairs(X, n, 3, 0.0, st, nb, N, 1, NULL);
     double t2 = omp_get_wtime();
     plane2 p = { 20, -1, 20.2 };
     long brute = 0;
