@@ -288,20 +288,20 @@ static void half_lists(sph_body *b)
         b->stripe[s] = (int)((long)b->n * s / ns);
 }
 
-/* Whether BC k's expression selects (does not skip) any of the particles it may act on, at
- * five times from 0 to t_end: a selection narrower than the spacing (a window 0.4 mm wide at
- * dx = 1 mm) would otherwise do nothing silently.  The displacement is zero here, so a
- * selection by displacement counts as empty until it moves; that is only a warning. */
-static int bc_selects(const sph_body *b, int k, double t_end)
+/* Whether value (a BC's or a restrict's expression) gives a value, rather than skip, at any
+ * of n particles (list, or all when list is NULL) at five times from 0 to t_end.  A selection
+ * that holds nothing (a window narrower than the spacing: 0.4 mm wide at dx = 1 mm) would
+ * otherwise do nothing silently.  The displacement is zero here, so a selection by
+ * displacement counts as empty until it moves; the callers only warn. */
+static int selects_any(const sph_body *b, int (*value)(const struct sph_pt *, double *),
+                       const int *list, int n, double t_end)
 {
-    const sph_bc_desc *bc = &b->desc->bcs[k];
-    const int n = bc->has_near ? b->bc_count[k] : b->n;
     for (int q = 0; q <= 4; q++)
         for (int c = 0; c < n; c++) {
             sph_pt p;
             double val;
-            sph_point(b, bc->has_near ? b->bc_list[k][c] : c, b->dim, 0.25 * q * t_end, 0, &p);
-            if (bc->value(&p, &val))
+            sph_point(b, list ? list[c] : c, b->dim, 0.25 * q * t_end, 0, &p);
+            if (value(&p, &val))
                 return 1;
         }
     return 0;
@@ -323,7 +323,8 @@ static void selections(sph_body *b, const sph_body_desc *d, double t_end)
                 continue;
             }
         }
-        if (bc->value && !bc_selects(b, k, t_end))
+        if (bc->value && !selects_any(b, bc->value, bc->has_near ? b->bc_list[k] : NULL,
+                                      bc->has_near ? b->bc_count[k] : b->n, t_end))
             fprintf(stderr, "%s: warning: %s of body '%s' acts on no particle: its expression "
                             "skips every particle%s at t = 0, T/4, T/2, 3T/4 and T (the end "
                             "time); is the selection narrower than the spacing dx = %g m?\n",
@@ -356,19 +357,11 @@ static void cut_notches(sph_body *b, const sph_fracture_desc *f)
 }
 
 /* A `restrict` that bounds no particle at t = 0, T/4, T/2, 3T/4 and T is reported, like a
- * boundary condition that acts on none (bc_selects). */
+ * boundary condition that acts on none. */
 static void check_restrict(const sph_body *b, const sph_fracture_desc *f, double t_end)
 {
-    if (!f->restrict_value)
+    if (!f->restrict_value || selects_any(b, f->restrict_value, NULL, b->n, t_end))
         return;
-    for (int q = 0; q <= 4; q++)
-        for (int i = 0; i < b->n; i++) {
-            sph_pt p;
-            double smin;
-            sph_point(b, i, b->dim, 0.25 * q * t_end, 0, &p);
-            if (f->restrict_value(&p, &smin))
-                return;
-        }
     fprintf(stderr, "%s: warning: the restrict of body '%s' bounds no particle: its expression "
                     "skips every particle at t = 0, T/4, T/2, 3T/4 and T (the end time); is the "
                     "selection narrower than the spacing dx = %g m?\n",
