@@ -46,16 +46,23 @@ typedef struct {
 
 static double slice_z0(int k) { return SLIT_TOP + 0.4e-3 + k * SLICE; }
 
+/* Whether particle i is damaged and lies in the slice from z0 up, between the inner loading
+ * points. */
+static int in_slice(const sph_body *b, int i, double z0)
+{
+    const double *X = b->X + (size_t)i * D;
+    return b->s[i] < DAMAGED && X[2] >= z0 && X[2] < z0 + SLICE && X[0] >= X_LO && X[0] <= X_HI;
+}
+
 /* Least-squares line x = a + b y through the damaged particles of slice k. */
 static slice_fit fit_slice(const sph_body *b, int k)
 {
     slice_fit f = {slice_z0(k), NAN, NAN, NAN, 0};
     double sy = 0, sx = 0, syy = 0, sxy = 0;
     for (int i = 0; i < b->n; i++) {
-        const double *X = b->X + (size_t)i * D;
-        if (b->s[i] >= DAMAGED || X[2] < f.z0 || X[2] >= f.z0 + SLICE || X[0] < X_LO ||
-            X[0] > X_HI)
+        if (!in_slice(b, i, f.z0))
             continue;
+        const double *X = b->X + (size_t)i * D;
         sy += X[1], sx += X[0], syy += X[1] * X[1], sxy += X[0] * X[1];
         f.n++;
     }
@@ -66,10 +73,9 @@ static slice_fit fit_slice(const sph_body *b, int k)
     const double a = mx - slope * my;
     double r2 = 0;
     for (int i = 0; i < b->n; i++) {
-        const double *X = b->X + (size_t)i * D;
-        if (b->s[i] >= DAMAGED || X[2] < f.z0 || X[2] >= f.z0 + SLICE || X[0] < X_LO ||
-            X[0] > X_HI)
+        if (!in_slice(b, i, f.z0))
             continue;
+        const double *X = b->X + (size_t)i * D;
         const double d = (X[0] - a - slope * X[1]) / sqrt(1 + slope * slope);
         r2 += d * d;
     }
