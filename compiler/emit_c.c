@@ -444,6 +444,13 @@ void emit_c_string(FILE *out, const char *s)
     fputc('"', out);
 }
 
+void emit_where(FILE *out, SrcLoc loc)
+{
+    char buf[300];
+    snprintf(buf, sizeof buf, "%s:%d", source_basename(loc.file), loc.line);
+    emit_c_string(out, buf);
+}
+
 static void region(Emitter *E, const char *name, const Region *r)
 {
     static const char *const kinds[] = {"SPH_BOX", "SPH_CYLINDER", "SPH_SPHERE", "SPH_MESH"};
@@ -478,8 +485,7 @@ static void bc_what(const BcModel *bc, char *buf, size_t size)
 static void bc_desc(Emitter *E, const BodyModel *b, int k)
 {
     const BcModel *bc = &b->bcs[k];
-    char where[300], what[64], value[160] = "NULL";
-    snprintf(where, sizeof where, "%s:%d", source_basename(bc->loc.file), bc->loc.line);
+    char what[64], value[160] = "NULL";
     bc_what(bc, what, sizeof what);
     if (bc->comps)
         snprintf(value, sizeof value, "%s_bc%d", b->name, k);
@@ -487,7 +493,7 @@ static void bc_desc(Emitter *E, const BodyModel *b, int k)
         fprintf(E->out, "    {1, {%s_near%d, %d, 0, {0, 0, 0}}, ", b->name, k, bc->near.n);
     else
         fputs("    {0, {NULL, 0, 0, {0, 0, 0}}, ", E->out);
-    emit_c_string(E->out, where);
+    emit_where(E->out, bc->loc);
     fputs(", ", E->out);
     emit_c_string(E->out, what);
     fprintf(E->out, ", %s},\n", value);

@@ -58,15 +58,6 @@ void emit_fracture_restrict(FILE *out, const Model *m, const BodyModel *b, int c
             fname, cuda ? ");" : "");
 }
 
-/* prefix, then "file.sph:LINE" as a C string: where an item is, for the runtime's messages */
-static void where_string(FILE *out, const char *prefix, SrcLoc loc)
-{
-    char buf[300];
-    snprintf(buf, sizeof buf, "%s:%d", source_basename(loc.file), loc.line);
-    fputs(prefix, out);
-    emit_c_string(out, buf);
-}
-
 /* static const sph_quad B_notches[]; static const sph_fracture_desc B_fracture */
 void emit_fracture_desc(FILE *out, const BodyModel *b)
 {
@@ -84,8 +75,10 @@ void emit_fracture_desc(FILE *out, const BodyModel *b)
         }
         fputs("};\n", out);
         fprintf(out, "static const char *const %s_notch_where[] = {", b->name);
-        for (int k = 0; k < f->nnotches; k++)
-            where_string(out, k ? ", " : "", f->notch_locs[k]);
+        for (int k = 0; k < f->nnotches; k++) {
+            fputs(k ? ", " : "", out);
+            emit_where(out, f->notch_locs[k]);
+        }
         fputs("};\n", out);
     }
     fprintf(out, "static const sph_fracture_desc %s_fracture = {\n"
@@ -96,7 +89,8 @@ void emit_fracture_desc(FILE *out, const BodyModel *b)
                      "    .notch_where = %s_notch_where,\n",
                 b->name, f->nnotches, b->name);
     if (f->restrict_expr) {
-        where_string(out, "    .restrict_where = ", f->restrict_loc);
+        fputs("    .restrict_where = ", out);
+        emit_where(out, f->restrict_loc);
         fprintf(out, ",\n    .restrict_value = %s_phase_min,\n", b->name);
     }
     fputs("};\n", out);

@@ -20,6 +20,9 @@ typedef struct {
 void emit_header(Emitter *E);
 /* s as a C string literal (quotes, backslashes and control characters escaped). */
 void emit_c_string(FILE *out, const char *s);
+/* "file.sph:LINE" of loc as a C string literal: where a model item is, for the runtime's
+ * messages. */
+void emit_where(FILE *out, SrcLoc loc);
 void emit_consts_fns(Emitter *E);
 void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p);
 /* templates/FILE filled for body b (its features and numbers). */

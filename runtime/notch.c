@@ -47,6 +47,7 @@ typedef struct {
     notch_tri t[2];
     double lo[3], hi[3];        /* bounding box grown by tol */
     double tol;                 /* distance counted as "on the plane" */
+    int index;                  /* its place in the caller's list of quads */
 } notch_quad;
 
 static double dot3(const double a[3], const double b[3])
@@ -212,7 +213,7 @@ static void point3(const notch_set *s, int i, double p[3])
     p[2] = x[1];
 }
 
-/* 1 + the first of the prepared quads the pair (i at p, j) crosses; 0 when it crosses none. */
+/* 1 + the index of the first quad the pair (i at p, j) crosses; 0 when it crosses none. */
 static int pair_cut(const notch_set *s, const double p[3], int j)
 {
     double q[3];
@@ -221,12 +222,13 @@ static int pair_cut(const notch_set *s, const double p[3], int j)
         return 0;
     for (int k = 0; k < s->nq; k++)
         if (quad_crossed(&s->q[k], p, q))
-            return 1 + k;
+            return 1 + s->q[k].index;
     return 0;
 }
 
-/* Number of i's pairs that cross a quad; hit[k] = 1 for each prepared quad k one crosses first. */
-static int count_cut(const notch_set *s, int i, const int *start, const int *nb, char *hit)
+/* Number of i's pairs that cross a quad; hit[k] = 1 (hit not NULL) for each quad k one of
+ * them crosses first. */
+static int count_cut(const notch_set *s, int i, const int *start, const int *nb, int *hit)
 {
     double p[3];
     int c = 0;
@@ -236,16 +238,17 @@ static int count_cut(const notch_set *s, int i, const int *start, const int *nb,
         if (!q)
             continue;
         c++;
+        if (hit) {
 #pragma omp atomic write
-        hit[q - 1] = 1;
+            hit[q - 1] = 1;
+        }
     }
     return c;
 }
 
 /* Prepares the quads that can cut a pair (with area; in 2D, reaching y_plane); returns
- * their number, 0 when none can.  from[m] is the index in quads of prepared quad m. */
-static int set_prepare(notch_set *s, notch_quad *q, int *from, const double (*quads)[4][3],
-                       int nquads)
+ * their number, 0 when none can. */
+static int set_prepare(notch_set *s, notch_quad *q, const double (*quads)[4][3], int nquads)
 {
     s->q = q;
     s->nq = 0;
@@ -263,7 +266,8 @@ static int set_prepare(notch_set *s, notch_quad *q, int *from, const double (*qu
             s->lo[m] = fmin(s->lo[m], Q->lo[m]);
             s->hi[m] = fmax(s->hi[m], Q->hi[m]);
         }
-        from[s->nq++] = k;
+        Q->index = k;
+        s->nq++;
     }
     return s->nq;
 }
@@ -277,22 +281,17 @@ long sph_drop_notch_pairs(const double *X, int n, int dim, double y_plane, int *
         return n > 0 ? start[n] : 0;
     notch_set s = { .X = X, .dim = dim, .y_plane = y_plane };
     notch_quad *q = xmalloc((size_t)nquads * sizeof *q);
-    int *from = xmalloc((size_t)nquads * sizeof *from);
-    char *hit = calloc((size_t)nquads, 1);
-    if (!hit || !set_prepare(&s, q, from, quads, nquads)) {
-        free(hit), free(from), free(q);
+    if (!set_prepare(&s, q, quads, nquads)) {
+        free(q);
         return start[n];
     }
     int *cut = xmalloc((size_t)n * sizeof *cut);
     long total = 0;
 #pragma omp parallel for schedule(dynamic, 1024) reduction(+ : total)
     for (int i = 0; i < n; i++) {
-        cut[i] = count_cut(&s, i, start, nb, hit);
+        cut[i] = count_cut(&s, i, start, nb, quad_cuts);
         total += cut[i];
     }
-    for (int m = 0; quad_cuts && m < s.nq; m++)
-        quad_cuts[from[m]] = hit[m];
-    free(hit), free(from);
     if (total == 0) {
         free(cut);
         free(q);

@@ -337,14 +337,9 @@ static void dt_collapse_report(run_state *r, double dt, double floor_dt)
     const sph_body *b = &s->bodies[body];
     const double *X = b->X + (size_t)particle * b->dim;
     char crushed[96] = "";
-    if (s->dt_factor < 1) { /* the bound followed a compression (timestep auto or stretch) */
-        double lam2 = 1;
-        for (int ib = 0; ib < s->nbodies; ib++)
-            if (s->bodies[ib].lam2)
-                lam2 = fmin(lam2, s->bodies[ib].lam2min);
+    if (s->dt_factor < 1) /* the bound followed a compression: factor lambda / lambda_on */
         snprintf(crushed, sizeof crushed, "; compressed to a principal stretch of %.3g",
-                 sqrt(fmax(lam2, 0.0)));
-    }
+                 s->dt_factor * r->m->dt_lambda_on);
     snprintf(r->unstable, sizeof r->unstable,
              "step %ld, t = %.6g s, body '%s', particle %d (reference position x = %g, %s = %g): "
              "time step collapsed to %g s, below dtmin = %g s (acceleration %g m/s^2%s)",

@@ -122,8 +122,8 @@ struct sph_pt;
 typedef struct {
     int has_near;       /* restricted to particles near a region */
     sph_region near;    /* within dx of this region (reference configuration) */
-    const char *where;  /* the model line, "beam.sph:12", and what it sets, "velocity z", */
-    const char *what;   /* for messages */
+    const char *where;  /* for messages: its model line, "beam.sph:12", */
+    const char *what;   /* and what it sets, "velocity z" */
     /* the BC's value at a particle: 0 where its expression skips the particle (the
      * passes' own function; the set-up counts what it selects) */
     int (*value)(const struct sph_pt *p, double *out);
