@@ -688,7 +688,7 @@ void emit_model_desc(Emitter *E)
             m->nexpects ? "EXPECTS" : "NULL", m->nexpects, m->compat_outputs,
             lambda_on,
             model_has_contact(m) ? "    .contact = &CONTACT,\n" : "",
-            E->cuda ? "    .sync_host = model_sync_host,\n" : "");
+            E->cuda ? "    .sync_host = model_sync_host,\n    .monitor = model_monitor,\n" : "");
 }
 
 void emit_bc_passes(Emitter *E, const BodyModel *b, const BodyPlan *p)

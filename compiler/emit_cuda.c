@@ -3,7 +3,8 @@
  * The same constants, laws, boundary-condition passes and scene description as the CPU
  * target (emit_c.c, emit_internal.h); the body passes come from templates/body_cuda.cu and
  * the per-particle code both targets share from templates/body_particle.c.  The scene's step
- * runs every body's passes on its device view (runtime/sph_cuda.h). */
+ * runs every body's passes on its device view (runtime/sph_cuda.h); the stability monitor's
+ * periodic look sums on the device too. */
 #include <stdlib.h>
 
 #include "diag.h"
@@ -58,6 +59,22 @@ static void scene_step_cuda(Emitter *E)
     fputs("}\n\n", out);
 }
 
+/* The stability monitor's pass: every body's sums on the device, back to the host. */
+static void scene_monitor_cuda(Emitter *E)
+{
+    const Model *m = E->m;
+    FILE *out = E->out;
+    fputs("/* The stability monitor's sums of every body, summed on the device so that a\n"
+          " * periodic check copies a few numbers, not the state (runtime/monitor.c). */\n"
+          "static void model_monitor(sph_sim *s, sph_monitor_sums *out)\n{\n", out);
+    for (int i = 0; i < m->nbodies; i++)
+        fprintf(out, "    %s_monitor(DEV[%d]);\n", m->bodies[i].name, i);
+    fputs("    SPH_CUDA_CHECK(cudaGetLastError());\n", out);
+    for (int i = 0; i < m->nbodies; i++)
+        fprintf(out, "    sph_cuda_monitor_sums(DEV[%d], &out[%d]);\n", i, i);
+    fputs("    (void)s;\n}\n\n", out);
+}
+
 int emit_cuda_program(const Model *m, const char *templates_dir, FILE *out)
 {
     BodyPlan *plans = calloc((size_t)m->nbodies, sizeof *plans);
@@ -78,6 +95,7 @@ int emit_cuda_program(const Model *m, const char *templates_dir, FILE *out)
             emit_fracture_restrict(out, m, b, 1);
         }
         scene_step_cuda(&E);
+        scene_monitor_cuda(&E);
         emit_model_desc(&E);
     }
     for (int i = 0; i < m->nbodies; i++)

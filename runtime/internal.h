@@ -35,6 +35,11 @@ typedef struct {
     double e_ref;     /* largest total energy seen (for runaway detection) */
 } sph_monitor;
 int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len);
+/* The same checks from a device target's per-body sums (sph_model.monitor): 0 when they show
+ * a sane state (*stretch then gets the smallest principal stretch), 1 when the state must be
+ * copied to the host and looked at with sph_monitor_check. */
+int sph_monitor_glance(sph_monitor *mon, const sph_sim *s, const sph_monitor_sums *sums,
+                       double *stretch);
 
 /* expect.c: evaluate the model's expectations; writes them into the summary and prints a
  * line each.  Returns the number of failed expectations. */

@@ -28,7 +28,12 @@ typedef struct {
     int nframes;
     double step_seconds;
     double setup_seconds; /* particles, neighbours, tables, (device upload) */
-    double stretch_seen;  /* the smallest principal stretch at the monitor's checks */
+    double check_seconds; /* the monitor's periodic checks (those before outputs count as */
+    double output_seconds;/* output time, with the outputs and a device's copy for them) */
+    sph_monitor mon;      /* the stability monitor: its checks (summary.json), */
+    double stretch_seen;  /* the smallest principal stretch they saw, */
+    long checks;          /* how many there were, */
+    long device_checks;   /* and how many a device target's sums answered alone */
     char unstable[512];
     char errors[512];     /* the declared expectations' errors, for the final line */
 } run_state;
@@ -280,6 +285,8 @@ static int write_summary(run_state *r, double wall, long particles, long pairs, 
     sph_json_num(&j, "wall_time", wall);
     sph_json_num(&j, "setup_time", r->setup_seconds);
     sph_json_num(&j, "step_time", r->step_seconds);
+    sph_json_num(&j, "check_time", r->check_seconds);
+    sph_json_num(&j, "output_time", r->output_seconds);
     double ps = (double)particles * (double)s->step;
     sph_json_num(&j, "ns_per_particle_step", ps > 0 ? 1e9 * r->step_seconds / ps : NAN);
     sph_json_num(&j, "pair_interactions_per_second",
@@ -288,6 +295,10 @@ static int write_summary(run_state *r, double wall, long particles, long pairs, 
     sph_json_str(&j, "verdict", r->unstable[0] ? "unstable" : "stable");
     if (r->unstable[0])
         sph_json_str(&j, "message", r->unstable);
+    sph_json_int(&j, "checks", r->checks);
+    sph_json_int(&j, "device_checks", r->device_checks);
+    sph_json_num(&j, "smallest_stretch", r->stretch_seen);
+    sph_json_num(&j, "largest_energy", r->mon.e_ref);
     sph_json_end_object(&j);
     sph_json_key_array(&j, "bodies");
     for (int i = 0; i < s->nbodies; i++)
@@ -308,13 +319,32 @@ static void sync_host(run_state *r)
         r->m->sync_host(&r->sim);
 }
 
-static int check_now(run_state *r, sph_monitor *mon)
+/* A device target's periodic check: the monitor's sums from the device, without copying the
+ * state.  0 when they show a sane state; 1 when the host must look itself. */
+static int glance(run_state *r)
 {
+    sph_monitor_sums *sums = calloc((size_t)r->sim.nbodies, sizeof *sums);
+    double stretch = 1.0;
+    r->m->monitor(&r->sim, sums);
+    const int look = sph_monitor_glance(&r->mon, &r->sim, sums, &stretch);
+    free(sums);
+    if (!look)
+        r->stretch_seen = fmin(r->stretch_seen, stretch);
+    return look;
+}
+
+/* The stability monitor, every 20 steps and before every output. */
+static int check_now(run_state *r, int output)
+{
+    r->checks++;
+    if (!output && r->m->monitor && !glance(r)) {
+        r->device_checks++;
+        return 0;
+    }
     sync_host(r); /* also for the frame written right after */
-    if (sph_monitor_check(mon, &r->sim, r->unstable, sizeof r->unstable))
+    if (sph_monitor_check(&r->mon, &r->sim, r->unstable, sizeof r->unstable))
         return 1;
-    if (!(r->m->dt_lambda_on > 0)) /* for the note after an unstable run (stretch_hint) */
-        r->stretch_seen = fmin(r->stretch_seen, sph_sim_stretch(&r->sim));
+    r->stretch_seen = fmin(r->stretch_seen, sph_sim_stretch(&r->sim));
     return 0;
 }
 
@@ -351,7 +381,6 @@ static void dt_collapse_report(run_state *r, double dt, double floor_dt)
 static int time_loop(run_state *r)
 {
     sph_sim *s = &r->sim;
-    sph_monitor mon = {0};
     sph_progress prog;
     sph_progress_start(&prog, r->t_end, r->opt.quiet);
     const double floor_dt = dt_floor(r), eps = 1e-9 * r->t_out;
@@ -370,14 +399,19 @@ static int time_loop(run_state *r)
         double w0 = sph_wall_time();
         sph_sim_step(s, dt);
         r->step_seconds += sph_wall_time() - w0;
-        int output = s->t >= next_out - eps;
-        if ((output || s->step % 20 == 0) && check_now(r, &mon))
+        const int output = s->t >= next_out - eps;
+        w0 = sph_wall_time();
+        if ((output || s->step % 20 == 0) && check_now(r, output))
             break;
         if (output) {
             if (write_output(r))
                 return -1;
             next_out += r->t_out;
         }
+        if (output)
+            r->output_seconds += sph_wall_time() - w0;
+        else
+            r->check_seconds += sph_wall_time() - w0;
         sph_progress_update(&prog, s->t, dt, s->step);
     }
     sph_progress_finish(&prog);

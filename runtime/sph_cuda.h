@@ -17,7 +17,8 @@
  *    selections) stays on the host and is copied once; full pair lists (fb_*) replace the half
  *    lists, so that every thread sums the pairs of its own particle without atomics.
  *  - sph_cuda_reductions: the step's sums back into the host body, the one wait of a step;
- *    sph_cuda_to_host: the state too, when the runtime reads it.
+ *    sph_cuda_monitor_sums: the stability monitor's sums (every 20 steps); sph_cuda_to_host:
+ *    the state too, when the runtime reads it (outputs, or a monitor's closer look).
  *  - With SPH_CUDA_EMULATE the host compiler builds model.cu as C++ with the passes run
  *    serially on host memory: how the tests check the target's code without a GPU. */
 #ifndef SPH_CUDA_H
@@ -75,6 +76,9 @@ static inline void atomicAdd(double *a, double v) { *a += v; }
 enum {
     SPH_RED_VMAX2, SPH_RED_AMAX2, SPH_RED_CRUSH, /* maxima of |v|^2, |a|^2, 1 / lambda_min^2 */
     SPH_RED_VISC_RATE, SPH_RED_VISC_DISSIPATED,
+    /* the monitor's pass (templates/body_cuda.cu): the maxima of a particle's failed check
+     * (0 or 1) and of 1 - lambda_min^2 (and a spare maximum), and the body's energy */
+    SPH_RED_BAD, SPH_RED_SQUEEZE, SPH_RED_SPARE, SPH_RED_ENERGY,
     SPH_NRED
 };
 
@@ -408,6 +412,17 @@ static void sph_cuda_reductions(sph_body *h, const sph_body *d)
     h->vmax2 = red[SPH_RED_VMAX2], h->amax2 = red[SPH_RED_AMAX2];
     h->lam2min = red[SPH_RED_CRUSH] > 0 ? 1.0 / red[SPH_RED_CRUSH] : 1.0;
     h->visc_rate = red[SPH_RED_VISC_RATE], h->visc_dissipated = red[SPH_RED_VISC_DISSIPATED];
+}
+
+/* The stability monitor's sums of device view d, after its monitor pass: a few numbers
+ * instead of the state (runtime/monitor.c). */
+static void sph_cuda_monitor_sums(const sph_body *d, sph_monitor_sums *out)
+{
+    double red[SPH_NRED];
+    SPH_CUDA_CHECK(cudaMemcpy(red, d->red, sizeof red, cudaMemcpyDeviceToHost));
+    out->bad = red[SPH_RED_BAD] > 0;
+    out->energy = red[SPH_RED_ENERGY];
+    out->stretch2 = 1.0 - red[SPH_RED_SQUEEZE];
 }
 
 /* The state of device view d back into host body h: what outputs, energies, measurements

@@ -148,6 +148,7 @@ typedef struct {
 
 typedef struct sph_body sph_body;
 typedef struct sph_sim sph_sim;
+struct sph_monitor_sums;
 
 typedef struct {
     const char *name;
@@ -242,7 +243,19 @@ typedef struct {
      * arrays before the runtime reads them (outputs, energies, the stability monitor);
      * NULL on the CPU, where the host arrays are the state. */
     void (*sync_host)(sph_sim *s);
+    /* Device targets: the stability monitor's look at every body without copying its state
+     * to the host (sph_monitor_sums, one per body); NULL on the CPU.  The runtime copies the
+     * state and looks itself only when these show something wrong (runtime/monitor.c). */
+    void (*monitor)(sph_sim *s, struct sph_monitor_sums *out);
 } sph_model;
+
+/* What a device target's monitor pass sums over a body, for sph_model.monitor. */
+typedef struct sph_monitor_sums {
+    int bad;         /* 1: a particle fails one of the monitor's checks (a non-finite u, v or a;
+                        det F <= 0; a speed above 10 c0) */
+    double energy;   /* strain + kinetic energy (sph_body_energies) */
+    double stretch2; /* the smallest squared principal stretch (sph_stretch2_min, at most 1) */
+} sph_monitor_sums;
 
 /* ------------------------------------------------------------------ state */
 

@@ -191,3 +191,34 @@ static void @B@_update(sph_body *b, double dt)
     SPH_ONCE({ b->red[SPH_RED_VISC_DISSIPATED] += b->red[SPH_RED_VISC_RATE] * dt; });
 //@endif
 }
+
+/* ---- body @B@: the stability monitor's sums on the device -------------------------------
+ * The checks the monitor makes at every particle (runtime/monitor.c: a non-finite u, v or a,
+ * det F <= 0, a speed above 10 c0), the body's strain + kinetic energy and its smallest
+ * principal stretch, reduced on the device: a periodic check then copies a few numbers
+ * instead of the state (sph_cuda_monitor_sums). */
+static void @B@_monitor(sph_body *b)
+{
+    enum { D = @DIM@ };
+    sph_cuda_zero(b->red + SPH_RED_BAD, 4);
+    SPH_FOR_MAX3(i, b->n, b->red + SPH_RED_BAD, {
+        double v2 = 0, bad = 0;
+        for (int k = 0; k < D; k++) {
+            const double u = b->u[i * D + k], v = b->v[i * D + k], a = b->a[i * D + k];
+            if (!isfinite(u) || !isfinite(v) || !isfinite(a))
+                bad = 1;
+            v2 += v * v;
+        }
+        const double *F = b->F + 9 * (size_t)i;
+        if (!(sph_det3(F) > 0) || v2 > 100.0 * b->c0 * b->c0)
+            bad = 1;
+        const double l2 = sph_stretch2_min(F, D); /* at most 1: 1 - l2 >= 0 */
+        return sph_max3{bad, l2 < 1 ? 1 - l2 : 0.0, 0.0};
+    });
+    SPH_FOR_SUM(i, b->n, b->red + SPH_RED_ENERGY, {
+        double v2 = 0;
+        for (int k = 0; k < D; k++)
+            v2 += b->v[i * D + k] * b->v[i * D + k];
+        return b->vol * b->psi[i] + 0.5 * b->mass * v2; /* as sph_body_energies */
+    });
+}

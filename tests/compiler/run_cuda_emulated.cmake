@@ -8,27 +8,9 @@
 # cancels to a few digits, as does the strain energy of a body 1e4 times stiffer than the
 # one it presses on; a wrong pass differs by far more: a stale initial time step alone made
 # 1e-4).
-get_filename_component(stem ${MODEL} NAME_WE)
-file(REMOVE_RECURSE ${WORKDIR})
-file(MAKE_DIRECTORY ${WORKDIR})
-execute_process(COMMAND ${SPHC} -o ${WORKDIR}/cpu ${MODEL} RESULT_VARIABLE rc ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "sphc (cpu) failed:\n${err}")
-endif()
-execute_process(COMMAND ${SPHC} --target cuda --emit-c ${WORKDIR} --emit-only -o ${stem} ${MODEL}
-                RESULT_VARIABLE rc ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "sphc --target cuda failed:\n${err}")
-endif()
-execute_process(COMMAND ${CXX} -std=c++20 -O2 -DSPH_CUDA_EMULATE -fopenmp -Wall -Wextra -Werror
-                        -I${INCLUDE} -x c++ ${WORKDIR}/${stem}.cu -x none ${LIB} -lm
-                        -o ${WORKDIR}/emulated
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "the emulated CUDA build failed:\n${out}\n${err}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/cuda_emulated_build.cmake)
 foreach(prog cpu emulated)
-  execute_process(COMMAND ${WORKDIR}/${prog} --quiet --threads 1 --end ${END}
+  execute_process(COMMAND ${${prog}} --quiet --threads 1 --end ${END}
                           --out ${WORKDIR}/${prog}_out
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0 AND NOT rc EQUAL 1) # 1: an expectation of the model failed (short run)
@@ -74,3 +56,21 @@ foreach(csv ${csvs})
   endforeach()
 endforeach()
 message(STATUS "${stem}: ${compared} values of ${csvs} agree (CPU and emulated CUDA)")
+
+# The stability monitor's periodic checks (every 20 steps) read the device's sums alone; only
+# the checks before outputs, one per row of energies.csv after the first, copy the state.
+file(READ ${WORKDIR}/emulated_out/summary.json summary)
+if(NOT summary MATCHES "\"checks\": ([0-9]+),[ \n]*\"device_checks\": ([0-9]+)")
+  message(FATAL_ERROR "summary.json does not give the monitor's checks")
+endif()
+set(checks ${CMAKE_MATCH_1})
+set(device_checks ${CMAKE_MATCH_2})
+file(STRINGS ${WORKDIR}/emulated_out/energies.csv rows)
+list(LENGTH rows nrows)
+math(EXPR looks "${checks} - ${device_checks}")
+math(EXPR outputs "${nrows} - 2")
+if(NOT looks EQUAL outputs)
+  message(FATAL_ERROR "the monitor copied the state at ${looks} of its ${checks} checks; "
+                      "expected only the ${outputs} before outputs")
+endif()
+message(STATUS "${stem}: ${device_checks} of the monitor's ${checks} checks on the device")
