@@ -269,13 +269,12 @@ static void force_scale(Emitter *E, const BcModel *bc, int k)
  * t, so steps landing on t0 and t1 give a force exactly the impulse over t1 - t0 and hold a
  * velocity exactly from t0 to t1.  The symplectic force pass is called at the middle of the
  * step already (at_middle); the other passes at its start (the initial conditions with
- * dt = 0, i.e. at t = 0). */
-static int window_open(Emitter *E, const BcModel *bc, int k, int at_middle)
+ * dt = 0, i.e. at t = 0).  `const int onK = ...;` with the given indent: in the function on
+ * the CPU; inside the loops in the CUDA target, where t and dt are read on the device. */
+static void window_open(Emitter *E, const BcModel *bc, int k, int at_middle, const char *indent)
 {
-    if (!bc->has_window)
-        return 0;
     const char *tm = at_middle ? "t" : "(t + 0.5 * dt)";
-    fprintf(E->out, "    const int on%d = ", k);
+    fprintf(E->out, "%sconst int on%d = ", indent, k);
     if (isfinite(bc->t0))
         fprintf(E->out, "%s >= %.17g%s", tm, bc->t0, isfinite(bc->t1) ? " && " : "");
     if (isfinite(bc->t1))
@@ -283,57 +282,33 @@ static int window_open(Emitter *E, const BcModel *bc, int k, int at_middle)
     if (!isfinite(bc->t0) && !isfinite(bc->t1))
         fputs("1", E->out);
     fputs(";\n", E->out);
-    return 1;
 }
 
-/* One pass over the whole body for the BCs without `near`, then one loop per `near` list. */
-void emit_bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
+/* Whether BC k of body b is one of the pass's: kind, components, and with or without `near`. */
+static int bc_in_pass(const BcModel *bc, BcKind kind, int near)
+{
+    return bc->kind == kind && bc->comps && bc->has_near == near;
+}
+
+/* The windows of the pass's BCs without `near`, at the top of the CUDA target's loop. */
+static void windows_open(Emitter *E, const BodyModel *b, BcKind kind, const char *indent)
+{
+    const int at_middle = kind == BC_FORCE && E->m->integrator == INTEGRATOR_SYMPLECTIC;
+    for (int k = 0; k < b->nbcs; k++)
+        if (bc_in_pass(&b->bcs[k], kind, 0) && b->bcs[k].has_window)
+            window_open(E, &b->bcs[k], k, at_middle, indent);
+}
+
+/* The loop over the BCs with `near`, one per BC: over its particle list. */
+static void bc_near_loops(Emitter *E, const BodyModel *b, BcKind kind)
 {
     FILE *out = E->out;
-    int vel = kind == BC_VELOCITY;
-    fprintf(out, "/* %s boundary conditions of body %s at time t (Alg. 1, step 3). */\n",
-            vel ? "Velocity" : "Force", b->name);
-    fprintf(out, "static void %s_%s_bcs(sph_body *b, double t, double dt)\n{\n    enum { D = %d };\n",
-            b->name, vel ? "velocity" : "force", E->m->dim);
-    int any_whole = 0, windows = 0;
+    const int vel = kind == BC_VELOCITY;
     for (int k = 0; k < b->nbcs; k++) {
         const BcModel *bc = &b->bcs[k];
-        if (bc->kind != kind || !bc->comps)
+        if (!bc_in_pass(bc, kind, 1))
             continue;
-        windows |= window_open(E, bc, k, !vel && E->m->integrator == INTEGRATOR_SYMPLECTIC);
-        if (!vel)
-            force_scale(E, bc, k);
-        any_whole |= !bc->has_near;
-    }
-    (void)windows;
-    if (vel || any_whole) {
-        fputs(E->cuda ? "    SPH_FOR(i, b->n, {\n"
-                      : "#pragma omp parallel for schedule(static)\n    for (int i = 0; i < b->n; i++) {\n",
-              out);
-        /* Without a whole-body BC, the velocity pass's loop only clears the fix bits. */
-        if (any_whole)
-            fputs("        sph_pt p;\n        sph_point(b, i, D, t, dt, &p);\n        double val;\n", out);
-        if (vel)
-            fputs("        uint8_t fix = 0;\n", out);
-        for (int k = 0; k < b->nbcs; k++) {
-            const BcModel *bc = &b->bcs[k];
-            if (bc->kind != kind || !bc->comps || bc->has_near)
-                continue;
-            if (bc->has_window)
-                fprintf(out, "        if (on%d)\n", k);
-            fputs(bc->has_window ? "        {\n" : "", out);
-            bc_apply(E, b, k, bc->has_window ? "            " : "        ");
-            fputs(bc->has_window ? "        }\n" : "", out);
-        }
-        if (vel)
-            fputs("        b->fix[i] = fix;\n", out);
-        fputs(E->cuda ? "    });\n" : "    }\n", out);
-    }
-    for (int k = 0; k < b->nbcs; k++) {
-        const BcModel *bc = &b->bcs[k];
-        if (bc->kind != kind || !bc->comps || !bc->has_near)
-            continue;
-        if (bc->has_window)
+        if (bc->has_window && !E->cuda)
             fprintf(out, "    if (on%d) {\n", k);
         else
             fputs("    {\n", out);
@@ -341,6 +316,11 @@ void emit_bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
                              : "#pragma omp parallel for schedule(static)\n"
                                "        for (int q = 0; q < b->bc_count[%d]; q++) {\n",
                 k);
+        if (bc->has_window && E->cuda) {
+            window_open(E, bc, k, kind == BC_FORCE && E->m->integrator == INTEGRATOR_SYMPLECTIC,
+                        "            ");
+            fprintf(out, "            if (!on%d)\n                return;\n", k);
+        }
         fprintf(out, "            const int i = b->bc_list[%d][q];\n"
                      "            sph_pt p;\n            sph_point(b, i, D, t, dt, &p);\n"
                      "            double val;\n",
@@ -352,6 +332,56 @@ void emit_bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
             fputs("            b->fix[i] = fix;\n", out);
         fputs(E->cuda ? "        });\n    }\n" : "        }\n    }\n", out);
     }
+}
+
+/* One pass over the whole body for the BCs without `near`, then one loop per `near` list. */
+void emit_bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
+{
+    FILE *out = E->out;
+    int vel = kind == BC_VELOCITY;
+    fprintf(out, "/* %s boundary conditions of body %s at time t (Alg. 1, step 3). */\n",
+            vel ? "Velocity" : "Force", b->name);
+    fprintf(out, "static void %s_%s_bcs(sph_body *b, sph_time t, sph_time dt)\n{\n"
+                 "    enum { D = %d };\n",
+            b->name, vel ? "velocity" : "force", E->m->dim);
+    const int at_middle = !vel && E->m->integrator == INTEGRATOR_SYMPLECTIC;
+    int any_whole = 0;
+    for (int k = 0; k < b->nbcs; k++) {
+        const BcModel *bc = &b->bcs[k];
+        if (bc->kind != kind || !bc->comps)
+            continue;
+        if (bc->has_window && !E->cuda)
+            window_open(E, bc, k, at_middle, "    ");
+        if (!vel)
+            force_scale(E, bc, k);
+        any_whole |= !bc->has_near;
+    }
+    if (vel || any_whole) {
+        fputs(E->cuda ? "    SPH_FOR(i, b->n, {\n"
+                      : "#pragma omp parallel for schedule(static)\n    for (int i = 0; i < b->n; i++) {\n",
+              out);
+        if (E->cuda)
+            windows_open(E, b, kind, "        ");
+        /* Without a whole-body BC, the velocity pass's loop only clears the fix bits. */
+        if (any_whole)
+            fputs("        sph_pt p;\n        sph_point(b, i, D, t, dt, &p);\n        double val;\n", out);
+        if (vel)
+            fputs("        uint8_t fix = 0;\n", out);
+        for (int k = 0; k < b->nbcs; k++) {
+            const BcModel *bc = &b->bcs[k];
+            if (!bc_in_pass(bc, kind, 0))
+                continue;
+            if (bc->has_window)
+                fprintf(out, "        if (on%d)\n", k);
+            fputs(bc->has_window ? "        {\n" : "", out);
+            bc_apply(E, b, k, bc->has_window ? "            " : "        ");
+            fputs(bc->has_window ? "        }\n" : "", out);
+        }
+        if (vel)
+            fputs("        b->fix[i] = fix;\n", out);
+        fputs(E->cuda ? "    });\n" : "    }\n", out);
+    }
+    bc_near_loops(E, b, kind);
     fputs("    (void)t;\n    (void)dt;\n}\n\n", out);
 }
 
@@ -375,10 +405,10 @@ void emit_step_update(Emitter *E, int i)
     const char *n = E->m->bodies[i].name;
     const BodyPlan *p = &E->plans[i];
     if (p->force_bcs)
-        fprintf(E->out, "        %s_force_bcs(b, t%s, dt);\n", n, p->symplectic ? " + 0.5 * dt" : "");
+        fprintf(E->out, "        %s_force_bcs(b, %s, dt);\n", n, p->symplectic ? "t_half" : "t");
     fprintf(E->out, "        %s_update(b, dt);\n", n);
     if (p->restrict_phase)
-        fprintf(E->out, "        %s_restrict(b, t + dt, dt);\n", n);
+        fprintf(E->out, "        %s_restrict(b, t_next, dt);\n", n);
 }
 
 void emit_step_bodies(Emitter *E, const char *body, const char *contact)
@@ -419,10 +449,11 @@ static void scene_step(Emitter *E)
             fprintf(out, "    %s_velocity_bcs(&s->bodies[%d], t, s->dt);\n", m->bodies[i].name, i);
     fputs("    (void)s;\n    (void)t;\n}\n\n", out);
     fprintf(out, "/* One time step of every body: %s. */\n"
-                 "static void model_step(sph_sim *s, double dt)\n{\n    const double t = s->t;\n",
+                 "static void model_step(sph_sim *s, double dt)\n{\n"
+                 "    const double t = s->t, t_half = t + 0.5 * dt, t_next = t + dt;\n",
             sym ? "symplectic predictor-corrector (Alg. 2)" : "Verlet (Alg. 1)");
     emit_step_bodies(E, "&s->bodies[%d]", "sph_contact_forces(s, dt)");
-    fputs("    (void)t;\n}\n\n", out);
+    fputs("    (void)t, (void)t_half, (void)t_next;\n}\n\n", out);
     fputs("/* Cauchy stress of every particle, for output. */\n"
           "static void model_stress_output(sph_sim *s)\n{\n", out);
     for (int i = 0; i < m->nbodies; i++)
@@ -688,7 +719,9 @@ void emit_model_desc(Emitter *E)
             m->nexpects ? "EXPECTS" : "NULL", m->nexpects, m->compat_outputs,
             lambda_on,
             model_has_contact(m) ? "    .contact = &CONTACT,\n" : "",
-            E->cuda ? "    .sync_host = model_sync_host,\n    .monitor = model_monitor,\n" : "");
+            E->cuda ? "    .sync_host = model_sync_host,\n    .monitor = model_monitor,\n"
+                      "    .advance = model_advance,\n"
+                    : "");
 }
 
 void emit_bc_passes(Emitter *E, const BodyModel *b, const BodyPlan *p)

@@ -36,18 +36,39 @@ static void scene_step_cuda(Emitter *E)
     for (int i = 0; i < m->nbodies; i++)
         fprintf(out, "    sph_cuda_to_host(&s->bodies[%d], DEV[%d]);\n", i, i);
     fputs("    (void)t;\n}\n\n", out);
-    fprintf(out, "/* One time step of every body on the device: %s.  The host waits at its end for\n"
-                 " * the sums the next time step needs (eq. 64-66), its one wait per step. */\n"
-                 "static void model_step(sph_sim *s, double dt)\n{\n    const double t = s->t;\n",
+    fprintf(out, "/* One time step of every body on the device: %s, from t, of dt (values, or\n"
+                 " * the device clock's: sph_cuda.h). */\n"
+                 "static void model_passes(sph_time t, sph_time dt, sph_time t_half, sph_time t_next)\n{\n",
             m->integrator == INTEGRATOR_SYMPLECTIC ? "symplectic predictor-corrector (Alg. 2)"
                                                     : "Verlet (Alg. 1)");
     emit_step_bodies(E, "DEV[%d]", "sph_cuda_contact_forces(&CONTACT_DEV, DEV, dt)");
-    fputs("    SPH_CUDA_CHECK(cudaGetLastError());\n", out);
+    fputs("    (void)t, (void)t_half, (void)t_next;\n}\n\n", out);
+    fputs("/* The step's sums into the host bodies: the time step, energies and output read them. */\n"
+          "static void model_sums_to_host(sph_sim *s)\n{\n", out);
     for (int i = 0; i < m->nbodies; i++)
         fprintf(out, "    sph_cuda_reductions(&s->bodies[%d], DEV[%d]);\n", i, i);
     if (contact)
         fputs("    sph_cuda_contact_to_host(&CONTACT_DEV, s);\n", out);
-    fputs("    (void)t;\n}\n\n", out);
+    fputs("    (void)s;\n}\n\n", out);
+    fputs("/* One time step of dt, which the host chose (sph_sim_step); the host waits at its end\n"
+          " * for the sums the next time step needs (eq. 64-66). */\n"
+          "static void model_step(sph_sim *s, double dt)\n{\n"
+          "    model_passes(s->t, dt, s->t + 0.5 * dt, s->t + dt);\n"
+          "    SPH_CUDA_CHECK(cudaGetLastError());\n    model_sums_to_host(s);\n}\n\n", out);
+    fprintf(out, "/* Up to a->steps steps on the device until a->t_stop (sph_sim_advance): the device\n"
+                 " * chooses each time step itself (its clock, sph_cuda.h), so the host queues them\n"
+                 " * all and waits once, at the end. */\n"
+                 "static void model_advance(sph_sim *s, sph_advance *a)\n{\n"
+                 "    sph_cuda_clock_start(s, a, DEV, %s);\n"
+                 "    const sph_time t = sph_time::clock(SPH_CLOCK_T), dt = sph_time::clock(SPH_CLOCK_DT);\n"
+                 "    const sph_time t_half = sph_time::clock(SPH_CLOCK_T_HALF);\n"
+                 "    const sph_time t_next = sph_time::clock(SPH_CLOCK_T_NEXT);\n"
+                 "    for (int k = 0; k < a->steps; k++) {\n"
+                 "        sph_cuda_clock_choose();\n"
+                 "        model_passes(t, dt, t_half, t_next);\n"
+                 "        sph_cuda_clock_tick();\n    }\n"
+                 "    sph_cuda_clock_finish(s, a);\n    model_sums_to_host(s);\n}\n\n",
+            contact ? "sph_cuda_contact_w2(&CONTACT_DEV), CONTACT_DEV.w2ref" : "NULL, 0.0");
     fputs("/* The device state into the host bodies, for the runtime to read. */\n"
           "static void model_sync_host(sph_sim *s)\n{\n", out);
     for (int i = 0; i < m->nbodies; i++)

@@ -45,7 +45,7 @@ void emit_fracture_restrict(FILE *out, const Model *m, const BodyModel *b, int c
             source_line_trimmed(f->restrict_loc.file, f->restrict_loc.line));
     emit_value_function(out, m, fname, f->restrict_expr);
     fprintf(out, "\n/* The restriction of body %s's phase field at time t (after its update). */\n"
-                 "static void %s_restrict(sph_body *b, double t, double dt)\n{\n"
+                 "static void %s_restrict(sph_body *b, sph_time t, sph_time dt)\n{\n"
                  "    enum { D = %d };\n%s"
                  "        sph_pt p;\n        sph_point(b, i, D, t, dt, &p);\n"
                  "        double smin;\n"

@@ -386,19 +386,17 @@ static int time_loop(run_state *r)
     const double floor_dt = dt_floor(r), eps = 1e-9 * r->t_out;
     double next_out = r->t_out;
     while (s->t < r->t_end - eps) {
-        double dt = sph_sim_stable_dt(s);
-        /* where a body is compressed the bound follows the current spacing, and so does
-         * dtmin, down to a hundredth of it (a stretch below 0.005 is a collapse too) */
-        const double floor_now = floor_dt * fmax(s->dt_factor, 0.01);
-        if (!(dt >= floor_now)) {
+        /* the steps to the next check (every 20 steps) or output time, whichever is first */
+        sph_advance a = {.steps = 20 - (int)(s->step % 20), .t_stop = fmin(next_out, r->t_end),
+                         .eps = eps, .floor_dt = floor_dt};
+        double w0 = sph_wall_time();
+        sph_sim_advance(s, &a);
+        r->step_seconds += sph_wall_time() - w0;
+        if (a.collapsed) {
             sync_host(r);
-            dt_collapse_report(r, dt, floor_now);
+            dt_collapse_report(r, a.dt_bad, a.floor_bad);
             break;
         }
-        dt = fmin(dt, fmin(next_out, r->t_end) - s->t); /* land on output times */
-        double w0 = sph_wall_time();
-        sph_sim_step(s, dt);
-        r->step_seconds += sph_wall_time() - w0;
         const int output = s->t >= next_out - eps;
         w0 = sph_wall_time();
         if ((output || s->step % 20 == 0) && check_now(r, output))
@@ -412,7 +410,7 @@ static int time_loop(run_state *r)
             r->output_seconds += sph_wall_time() - w0;
         else
             r->check_seconds += sph_wall_time() - w0;
-        sph_progress_update(&prog, s->t, dt, s->step);
+        sph_progress_update(&prog, s->t, s->dt, s->step);
     }
     sph_progress_finish(&prog);
     return r->unstable[0] ? 1 : 0;

@@ -62,18 +62,6 @@ double sph_sim_stretch(const sph_sim *s)
     return lam;
 }
 
-/* The factor on eq. 65 of body b: where it is compressed to a smallest principal stretch
- * lambda below dt_lambda_on, the bound follows the current spacing lambda h (the reference
- * wave speed of total-Lagrangian SPH grows like 1/lambda), scaled so that it is continuous:
- * lambda / dt_lambda_on (docs/stability.md). */
-static double stretch_factor(const sph_model *m, const sph_body *b)
-{
-    if (!(m->dt_lambda_on > 0) || !b->lam2 || !(b->lam2min >= 0))
-        return 1.0; /* (a non-finite state is the monitor's to report) */
-    const double lam = sqrt(b->lam2min);
-    return lam < m->dt_lambda_on ? lam / m->dt_lambda_on : 1.0;
-}
-
 double sph_sim_stable_dt(sph_sim *s)
 {
     const sph_model *m = s->m;
@@ -83,11 +71,9 @@ double sph_sim_stable_dt(sph_sim *s)
     s->dt_factor = 1.0;
     for (int i = 0; i < s->nbodies; i++) {
         const sph_body *b = &s->bodies[i];
-        const double f = stretch_factor(m, b);
+        const double f = sph_stretch_factor(m->dt_lambda_on, b->lam2 != NULL, b->lam2min);
         s->dt_factor = fmin(s->dt_factor, f);
-        double dtv = f * b->h / (b->c0 + sqrt(b->vmax2));                    /* eq. 65 */
-        double dta = b->amax2 > 0 ? sqrt(b->h / sqrt(b->amax2)) : INFINITY;  /* eq. 66 */
-        dt = fmin(dt, fmin(dtv, dta));
+        dt = fmin(dt, sph_body_dt(f, b->h, b->c0, b->vmax2, b->amax2));
     }
     dt = fmin(dt, sph_contact_dt(s)); /* the stiffest contact */
     return m->cfl * dt; /* eq. 64 */
@@ -99,6 +85,26 @@ void sph_sim_step(sph_sim *s, double dt)
     s->m->step(s, dt);
     s->t += dt;
     s->step++;
+}
+
+int sph_sim_advance(sph_sim *s, sph_advance *a)
+{
+    const long step0 = s->step;
+    a->collapsed = 0;
+    if (s->m->advance) { /* the device chooses the time steps (runtime/sph_cuda.h) */
+        s->m->advance(s, a);
+        return (int)(s->step - step0);
+    }
+    while (s->step - step0 < a->steps && s->t < a->t_stop - a->eps) {
+        const double dt = sph_sim_stable_dt(s);
+        const double floor_now = sph_dt_floor_now(a->floor_dt, s->dt_factor);
+        if (!(dt >= floor_now)) {
+            a->collapsed = 1, a->dt_bad = dt, a->floor_bad = floor_now;
+            break;
+        }
+        sph_sim_step(s, fmin(dt, a->t_stop - s->t)); /* land on output times */
+    }
+    return (int)(s->step - step0);
 }
 
 void sph_sim_free(sph_sim *s)

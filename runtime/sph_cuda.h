@@ -55,12 +55,23 @@ static inline cudaError_t cudaMemset(void *d, int v, size_t n)
     return cudaSuccess;
 }
 static inline cudaError_t cudaDeviceSynchronize() { return cudaSuccess; }
+template <class T> static inline cudaError_t cudaMemcpyToSymbol(T &sym, const void *s, size_t n)
+{
+    memcpy(&sym, s, n);
+    return cudaSuccess;
+}
+template <class T> static inline cudaError_t cudaMemcpyFromSymbol(void *d, const T &sym, size_t n)
+{
+    memcpy(d, &sym, n);
+    return cudaSuccess;
+}
 static inline cudaError_t cudaGetLastError() { return cudaSuccess; }
 static inline void atomicAdd(double *a, double v) { *a += v; }
 #endif
 
 /* Q and Cv entry by entry on the device (sphrt.h): particle i's entry e at e*n + i. */
 #define SPH_AT(i, e, m, n) ((size_t)(e) * (size_t)(n) + (size_t)(i))
+#define SPH_TIME_DEFINED /* sph_time: below, a value or the device clock's */
 #include "sphrt.h"
 
 #define SPH_CUDA_CHECK(call)                                                                   \
@@ -82,6 +93,57 @@ enum {
     SPH_NRED
 };
 
+/* ---- the device's clock ----------------------------------------------------------------
+ * The time loop's state that the passes read (t and dt) when the device runs a batch of
+ * steps by itself (sph_model.advance, sph_sim_advance): before each step it chooses the time
+ * step from the last step's sums as sph_sim_stable_dt does (sph_cuda_clock_choose, with
+ * sphrt.h's helpers), after it adds it to t (sph_cuda_clock_tick), so the host queues the
+ * batch's steps without waiting between them.  Once the batch reaches its stop time, or its
+ * time step collapses, `skip` makes every pass of the steps left return at once. */
+enum { SPH_CLOCK_T, SPH_CLOCK_DT, SPH_CLOCK_T_HALF, SPH_CLOCK_T_NEXT };
+
+struct sph_cuda_clock {
+    double t, dt;              /* the step: from t, of dt */
+    long step;
+    int skip;                  /* 1: the passes return at once (until the batch ends) */
+    double t_stop, eps;        /* the batch (sph_advance): no step from t >= t_stop - eps */
+    double floor_dt;
+    int collapsed;             /* the time step fell below its floor: it and the floor */
+    double dt_bad, floor_bad;
+    double dt_factor;          /* sph_sim.dt_factor */
+    double cfl, dt_fixed, lambda_on; /* the scene's (sph_model) */
+    int nbodies;
+    sph_body *const *bodies;   /* the device views (managed) */
+    const double *contact_w2;  /* the contact's largest omega^2 this step (device), and */
+    double contact_w2ref;      /* the laws' reference one: the contact's bound (contact.c) */
+};
+
+__device__ static sph_cuda_clock sph_clock;
+
+/* A time the passes read (sphrt.h): a value, or a field of the device's clock, read where
+ * the passes use it, on the device. */
+struct sph_time {
+    double value;
+    int field; /* SPH_CLOCK_*, or -1: value */
+    SPH_HD sph_time(double v) : value(v), field(-1) {}
+    static sph_time clock(int f)
+    {
+        sph_time c(0.0);
+        c.field = f;
+        return c;
+    }
+    __device__ operator double() const
+    {
+        switch (field) {
+        case SPH_CLOCK_T: return sph_clock.t;
+        case SPH_CLOCK_DT: return sph_clock.dt;
+        case SPH_CLOCK_T_HALF: return sph_clock.t + 0.5 * sph_clock.dt;
+        case SPH_CLOCK_T_NEXT: return sph_clock.t + sph_clock.dt;
+        default: return value;
+        }
+    }
+};
+
 /* What an SPH_FOR_MAX3 body returns: three non-negative values to take the maxima of. */
 struct sph_max3 {
     double x, y, z;
@@ -96,6 +158,8 @@ static inline int sph_blocks(int n) { return (n + SPH_CUDA_BLOCK - 1) / SPH_CUDA
 #ifndef SPH_CUDA_EMULATE
 template <class F> __global__ void sph_for_kernel(int n, F f)
 {
+    if (sph_clock.skip) /* a step past the batch's end (the clock) */
+        return;
     for (int i = blockIdx.x * blockDim.x + threadIdx.x; i < n; i += blockDim.x * gridDim.x)
         f(i);
 }
@@ -127,6 +191,8 @@ __device__ static inline sph_max3 sph_warp_max3(sph_max3 m)
  * maxima, then one atomic per block. */
 template <class F> __global__ void sph_for_max3_kernel(int n, double *out, F f)
 {
+    if (sph_clock.skip)
+        return;
     sph_max3 m = {0, 0, 0};
     for (int i = blockIdx.x * blockDim.x + threadIdx.x; i < n; i += blockDim.x * gridDim.x) {
         const sph_max3 r = f(i);
@@ -167,6 +233,8 @@ __device__ static inline double sph_warp_sum(double x)
  * per thread on one address serialises a million threads). */
 template <class F> __global__ void sph_for_sum_kernel(int n, double *out, F f)
 {
+    if (sph_clock.skip)
+        return;
     double x = 0;
     for (int i = blockIdx.x * blockDim.x + threadIdx.x; i < n; i += blockDim.x * gridDim.x)
         x += f(i);
@@ -191,7 +259,7 @@ template <class F> static void sph_for_sum(int n, double *out, F f)
 #else
 template <class F> static void sph_for(int n, F f)
 {
-    for (int i = 0; i < n; i++)
+    for (int i = 0; i < n && !sph_clock.skip; i++)
         f(i);
 }
 
@@ -199,13 +267,13 @@ static inline void sph_atomic_max_pos(double *a, double v) { *a = v > *a ? v : *
 
 template <class F> static void sph_for_sum(int n, double *out, F f)
 {
-    for (int i = 0; i < n; i++)
+    for (int i = 0; i < n && !sph_clock.skip; i++)
         *out += f(i);
 }
 
 template <class F> static void sph_for_max3(int n, double *out, F f)
 {
-    for (int i = 0; i < n; i++) {
+    for (int i = 0; i < n && !sph_clock.skip; i++) {
         const sph_max3 r = f(i);
         out[0] = r.x > out[0] ? r.x : out[0];
         out[1] = r.y > out[1] ? r.y : out[1];
@@ -398,10 +466,14 @@ static sph_body *sph_cuda_body(const sph_body *h)
     return b;
 }
 
-/* n doubles of device memory to zero, in stream order. */
+/* n doubles of device memory to zero, in stream order (a pass, so that a step past the
+ * batch's end leaves the sums of the last one). */
 static void sph_cuda_zero(double *d, int n)
 {
-    SPH_CUDA_CHECK(cudaMemset(d, 0, (size_t)n * sizeof(double)));
+    SPH_ONCE({
+        for (int k = 0; k < n; k++)
+            d[k] = 0;
+    });
 }
 
 /* The sums of device view d's last step into host body h: the one wait of a step. */
@@ -412,6 +484,105 @@ static void sph_cuda_reductions(sph_body *h, const sph_body *d)
     h->vmax2 = red[SPH_RED_VMAX2], h->amax2 = red[SPH_RED_AMAX2];
     h->lam2min = red[SPH_RED_CRUSH] > 0 ? 1.0 / red[SPH_RED_CRUSH] : 1.0;
     h->visc_rate = red[SPH_RED_VISC_RATE], h->visc_dissipated = red[SPH_RED_VISC_DISSIPATED];
+}
+
+/* ---- the device's clock: a batch of steps (sph_model.advance) ----------------------------- */
+
+/* The time step of the next step from the last step's sums, as sph_sim_stable_dt and
+ * sph_sim_advance choose it on the host; or the end of the batch. */
+__device__ static inline void sph_clock_choose_on(sph_cuda_clock *c)
+{
+    if (c->skip)
+        return;
+    if (!(c->t < c->t_stop - c->eps)) {
+        c->skip = 1;
+        return;
+    }
+    double dt = c->dt_fixed;
+    if (!(dt > 0)) {
+        dt = INFINITY;
+        c->dt_factor = 1.0;
+        for (int i = 0; i < c->nbodies; i++) {
+            const sph_body *b = c->bodies[i];
+            const double *red = b->red, crush = red[SPH_RED_CRUSH];
+            const double f = sph_stretch_factor(c->lambda_on, b->lam2 != NULL,
+                                                crush > 0 ? 1.0 / crush : 1.0);
+            c->dt_factor = fmin(c->dt_factor, f);
+            dt = fmin(dt, sph_body_dt(f, b->h, b->c0, red[SPH_RED_VMAX2], red[SPH_RED_AMAX2]));
+        }
+        if (c->contact_w2) /* the stiffest contact */
+            dt = fmin(dt, 1.0 / sqrt(fmax(*c->contact_w2, c->contact_w2ref)));
+        dt *= c->cfl; /* eq. 64 */
+    }
+    const double floor_now = sph_dt_floor_now(c->floor_dt, c->dt_factor);
+    if (!(dt >= floor_now)) {
+        c->collapsed = 1, c->dt_bad = dt, c->floor_bad = floor_now, c->skip = 1;
+        return;
+    }
+    c->dt = fmin(dt, c->t_stop - c->t);
+}
+
+__device__ static inline void sph_clock_tick_on(sph_cuda_clock *c)
+{
+    if (c->skip)
+        return;
+    c->t += c->dt;
+    c->step++;
+}
+
+#ifndef SPH_CUDA_EMULATE
+__global__ void sph_clock_choose_kernel() { sph_clock_choose_on(&sph_clock); }
+__global__ void sph_clock_tick_kernel() { sph_clock_tick_on(&sph_clock); }
+__global__ void sph_clock_resume_kernel() { sph_clock.skip = 0; }
+static void sph_cuda_clock_choose() { sph_clock_choose_kernel<<<1, 1>>>(); }
+static void sph_cuda_clock_tick() { sph_clock_tick_kernel<<<1, 1>>>(); }
+static void sph_cuda_clock_resume() { sph_clock_resume_kernel<<<1, 1>>>(); }
+#else
+static void sph_cuda_clock_choose() { sph_clock_choose_on(&sph_clock); }
+static void sph_cuda_clock_tick() { sph_clock_tick_on(&sph_clock); }
+static void sph_cuda_clock_resume() { sph_clock.skip = 0; }
+#endif
+
+/* The clock at the start of a batch: the host's time, the batch and the scene.  At the first
+ * step the host's sums (sph_sim_init's initial speeds) go to the device, where the first time
+ * step is chosen from them. */
+static void sph_cuda_clock_start(const sph_sim *s, const sph_advance *a, sph_body *const *dev,
+                                 const double *contact_w2, double contact_w2ref)
+{
+    if (s->step == 0)
+        for (int i = 0; i < s->nbodies; i++) {
+            const sph_body *h = &s->bodies[i];
+            const double red[3] = {h->vmax2, h->amax2, 1.0 / h->lam2min};
+            SPH_CUDA_CHECK(cudaMemcpy(dev[i]->red + SPH_RED_VMAX2, red, sizeof red,
+                                      cudaMemcpyHostToDevice));
+        }
+    static sph_body **views; /* the device views, where the device's clock reads them */
+    if (!views) {
+        SPH_CUDA_CHECK(cudaMallocManaged(&views, (size_t)s->nbodies * sizeof *views));
+        for (int i = 0; i < s->nbodies; i++)
+            views[i] = dev[i];
+        sph_read_mostly(views, (size_t)s->nbodies * sizeof *views);
+    }
+    const sph_model *m = s->m;
+    sph_cuda_clock c = {};
+    c.t = s->t, c.dt = s->dt, c.step = s->step, c.dt_factor = s->dt_factor;
+    c.t_stop = a->t_stop, c.eps = a->eps, c.floor_dt = a->floor_dt;
+    c.cfl = m->cfl, c.dt_fixed = m->dt_fixed, c.lambda_on = m->dt_lambda_on;
+    c.nbodies = s->nbodies, c.bodies = views;
+    c.contact_w2 = contact_w2, c.contact_w2ref = contact_w2ref;
+    SPH_CUDA_CHECK(cudaMemcpyToSymbol(sph_clock, &c, sizeof c));
+}
+
+/* The end of a batch: the passes run again (skip cleared), and the host waits for the clock:
+ * its time, step and time step, and whether the time step collapsed. */
+static void sph_cuda_clock_finish(sph_sim *s, sph_advance *a)
+{
+    sph_cuda_clock_resume();
+    SPH_CUDA_CHECK(cudaGetLastError());
+    sph_cuda_clock c;
+    SPH_CUDA_CHECK(cudaMemcpyFromSymbol(&c, sph_clock, sizeof c));
+    s->t = c.t, s->dt = c.dt, s->step = c.step, s->dt_factor = c.dt_factor;
+    a->collapsed = c.collapsed, a->dt_bad = c.dt_bad, a->floor_bad = c.floor_bad;
 }
 
 /* The stability monitor's sums of device view d, after its monitor pass: a few numbers

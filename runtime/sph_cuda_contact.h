@@ -46,6 +46,7 @@ typedef struct {
     void *tmp;            /* the sort's scratch */
     size_t tmp_bytes;
     double *sum;          /* SPH_NCSUM */
+    double w2ref;         /* the largest reference omega^2 of two bodies' law (contact.c) */
 } sph_cuda_contact;
 
 /* The cell of position x (D components; the third is 0 in 2D). */
@@ -81,9 +82,12 @@ static void sph_cuda_contact_init(sph_cuda_contact *c, sph_sim *s)
             body[p] = i;
     }
     const sph_pair_law *law = sph_contact_laws(s);
-    c->cell = 0;
-    for (int k = 0; k < nb * nb; k++)
+    c->cell = 0, c->w2ref = 0;
+    for (int k = 0; k < nb * nb; k++) {
         c->cell = fmax(c->cell, law[k].dc);
+        if (k / nb != k % nb) /* as sph_contact_dt */
+            c->w2ref = fmax(c->w2ref, law[k].w2ref);
+    }
     c->body = (int *)sph_dev_copy(body.data(), (size_t)n * sizeof(int));
     c->mass = (double *)sph_dev_copy(mass.data(), (size_t)nb * sizeof(double));
     c->law = (sph_pair_law *)sph_dev_copy(law, (size_t)nb * nb * sizeof *law);
@@ -148,7 +152,7 @@ static void sph_cuda_contact_sort(sph_cuda_contact *c)
 }
 
 /* Step 3: the contact acceleration of every particle (the pairs of contact_law.h). */
-static void sph_cuda_contact_pairs(sph_cuda_contact *c, double dt)
+static void sph_cuda_contact_pairs(sph_cuda_contact *c, sph_time dt)
 {
     const int D = c->dim, nb = c->nbodies;
     const double *x = c->x, *v = c->v, *mass = c->mass, cell = c->cell;
@@ -197,7 +201,7 @@ static void sph_cuda_contact_pairs(sph_cuda_contact *c, double dt)
 }
 
 /* Contact between the bodies (device views dev[]) for a step of dt: adds to their a. */
-static void sph_cuda_contact_forces(sph_cuda_contact *c, sph_body *const *dev, double dt)
+static void sph_cuda_contact_forces(sph_cuda_contact *c, sph_body *const *dev, sph_time dt)
 {
     const int D = c->dim;
     double *x = c->x, *v = c->v, *acc = c->acc;
@@ -221,6 +225,12 @@ static void sph_cuda_contact_forces(sph_cuda_contact *c, sph_body *const *dev, d
                 b->a[(size_t)p * D + k] += acc[base + (size_t)p * D + k];
         });
     }
+}
+
+/* Where the device's clock finds the contact's largest omega^2 of the step. */
+static const double *sph_cuda_contact_w2(const sph_cuda_contact *c)
+{
+    return c->sum + SPH_CSUM_W2;
 }
 
 /* The device's contact sums into the host runtime (time step, energies). */

@@ -149,6 +149,7 @@ typedef struct {
 typedef struct sph_body sph_body;
 typedef struct sph_sim sph_sim;
 struct sph_monitor_sums;
+struct sph_advance;
 
 typedef struct {
     const char *name;
@@ -247,7 +248,21 @@ typedef struct {
      * to the host (sph_monitor_sums, one per body); NULL on the CPU.  The runtime copies the
      * state and looks itself only when these show something wrong (runtime/monitor.c). */
     void (*monitor)(sph_sim *s, struct sph_monitor_sums *out);
+    /* Device targets: steps on the device, which chooses each time step itself as
+     * sph_sim_stable_dt would (sph_advance); NULL on the CPU.  See sph_sim_advance. */
+    void (*advance)(sph_sim *s, struct sph_advance *a);
 } sph_model;
+
+/* Steps until the next output or check (sph_sim_advance, sph_model.advance). */
+typedef struct sph_advance {
+    int steps;          /* at most this many steps, */
+    double t_stop, eps; /* and none that starts at t >= t_stop - eps; each ends at t_stop at
+                           the latest (the next output time, or the end) */
+    double floor_dt;    /* the floor of the time step, dtmin h/c0 (sph_dt_floor) */
+    /* out: the time step chosen fell below its floor (the step was not taken), the two */
+    int collapsed;
+    double dt_bad, floor_bad;
+} sph_advance;
 
 /* What a device target's monitor pass sums over a body, for sph_model.monitor. */
 typedef struct sph_monitor_sums {
@@ -270,6 +285,12 @@ typedef struct sph_monitor_sums {
  * the pair passes' working arrays Q and Cv, which only generated code reads. */
 #ifndef SPH_AT
 #define SPH_AT(i, e, m, n) ((size_t)(i) * (m) + (e))
+#endif
+
+/* A time the passes read, t or dt: a double on the CPU; in the CUDA target (sph_cuda.h defines
+ * it first) a reference to the device's clock, which the device advances itself. */
+#ifndef SPH_TIME_DEFINED
+typedef double sph_time;
 #endif
 
 #ifdef SPH_SINGLE
@@ -374,6 +395,12 @@ double sph_sim_stable_dt(sph_sim *s);
  * F: what `timestep stretch` bounds the step with. */
 double sph_sim_stretch(const sph_sim *s);
 void sph_sim_step(sph_sim *s, double dt);
+/* Up to a->steps steps, each of the stable time step (eq. 64-66) cut to end at a->t_stop at
+ * the latest, none starting at t >= t_stop - eps: stops early at t_stop, or before a step
+ * whose time step falls below its floor (a->collapsed).  A device target runs them on the
+ * device, which then chooses each time step itself (sph_model.advance), and the host waits
+ * once, at the end; on the CPU sph_sim_stable_dt and sph_sim_step.  Returns the steps taken. */
+int sph_sim_advance(sph_sim *s, sph_advance *a);
 void sph_sim_free(sph_sim *s);
 /* Energies of a body: strain (sum V psi) and kinetic (sum m |v|^2 / 2). */
 void sph_body_energies(const sph_body *b, double *strain, double *kinetic);
@@ -402,6 +429,38 @@ void sph_contact_free(sph_sim *s);
 
 /* Component k (0..dim-1) of a compact vector -> 3D axis (0 = x, 1 = y, 2 = z). */
 SPH_HD static inline int sph_axis(int dim, int k) { return dim == 2 ? 2 * k : k; }
+
+/* ------------------------------------------------------------------ the time step
+ * One source for the host (sim.c, run.c) and a device target's own choice (sph_cuda.h). */
+
+/* The factor on eq. 65 of a body whose smallest squared principal stretch is lam2min: where it
+ * is compressed below lambda_on (the scene's `timestep`, 0 for `undeformed`) the bound follows
+ * the current spacing lambda h (the reference wave speed of total-Lagrangian SPH grows like
+ * 1/lambda), scaled so that it is continuous: lambda / lambda_on (docs/stability.md).  crush:
+ * whether the body follows its compression at all. */
+SPH_HD static inline double sph_stretch_factor(double lambda_on, int crush, double lam2min)
+{
+    if (!(lambda_on > 0) || !crush || !(lam2min >= 0))
+        return 1.0; /* (a non-finite state is the monitor's to report) */
+    const double lam = sqrt(lam2min);
+    return lam < lambda_on ? lam / lambda_on : 1.0;
+}
+
+/* A body's bound on the time step before eq. 64's CFL: eq. 65 on its factor f and eq. 66. */
+SPH_HD static inline double sph_body_dt(double f, double h, double c0, double vmax2, double amax2)
+{
+    const double dtv = f * h / (c0 + sqrt(vmax2));                      /* eq. 65 */
+    const double dta = amax2 > 0 ? sqrt(h / sqrt(amax2)) : INFINITY;   /* eq. 66 */
+    return fmin(dtv, dta);
+}
+
+/* Where a body is compressed the bound follows the current spacing, and so does dtmin, down
+ * to a hundredth of it (a stretch below 0.005 is a collapse too): the floor of a step whose
+ * smallest factor is `factor`. */
+SPH_HD static inline double sph_dt_floor_now(double floor_dt, double factor)
+{
+    return floor_dt * fmax(factor, 0.01);
+}
 
 /* ------------------------------------------------------------------ per-particle helpers
  * Shared by generated code and the runtime (3×3 row-major). */

@@ -131,7 +131,7 @@ SPH_FN double @B@_free_acc(const sph_body *b, int i, int k)
 
 //@if SYMPLECTIC
 /* Symplectic predictor (Alg. 2, step 1), as templates/body_update.c. */
-static void @B@_predict(sph_body *b, double dt)
+static void @B@_predict(sph_body *b, sph_time dt)
 {
     enum { D = @DIM@ };
     SPH_FOR(i, b->n, {
@@ -151,7 +151,7 @@ static void @B@_predict(sph_body *b, double dt)
 
 /* The update that ends a step (Alg. 1 step 4 or the corrector of Alg. 2), with the max
  * |v|^2 and |a|^2 of eq. 65-66 over free components, reduced on the device. */
-static void @B@_update(sph_body *b, double dt)
+static void @B@_update(sph_body *b, sph_time dt)
 {
     enum { D = @DIM@ };
     sph_cuda_zero(b->red + SPH_RED_VMAX2, 3);

@@ -1,5 +1,5 @@
 # The CUDA target's passes run without a GPU (SPH_CUDA_EMULATE, runtime/sph_cuda.h):
-#   -DSPHC= -DCXX= -DMODEL= -DINCLUDE= -DLIB= -DWORKDIR= -DEND=
+#   -DSPHC= -DCXX= -DMODEL= -DINCLUDE= -DLIB= -DWORKDIR= -DEND= [-DHOSTSTEP=ON]
 # The model is built for both targets: the CPU program, and model.cu compiled by the host
 # C++ compiler with the device passes run serially on host memory (full pair lists, device
 # views, reductions, sync to the host).  Both run to END; every value of the measurement
@@ -74,3 +74,32 @@ if(NOT looks EQUAL outputs)
                       "expected only the ${outputs} before outputs")
 endif()
 message(STATUS "${stem}: ${device_checks} of the monitor's ${checks} checks on the device")
+
+# HOSTSTEP: the device's clock chooses the host's time steps to the bit.  The same model.cu
+# without its `advance` hook (the host chooses every time step from the sums it reads back
+# after each step, and waits for them) must write byte for byte the same files.
+if(HOSTSTEP)
+  file(READ ${WORKDIR}/${stem}.cu source)
+  string(REPLACE "    .advance = model_advance,\n" "" hoststep "${source}")
+  if(hoststep STREQUAL source)
+    message(FATAL_ERROR "model.cu has no `.advance = model_advance,`")
+  endif()
+  file(WRITE ${WORKDIR}/hoststep.cu "${hoststep}")
+  execute_process(COMMAND ${CXX} -std=c++20 -O2 -DSPH_CUDA_EMULATE -fopenmp -I${INCLUDE} -x c++
+                          ${WORKDIR}/hoststep.cu -x none ${LIB} -lm -o ${WORKDIR}/hoststep
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "the emulated build without the device's clock failed:\n${out}\n${err}")
+  endif()
+  execute_process(COMMAND ${WORKDIR}/hoststep --quiet --threads 1 --end ${END}
+                          --out ${WORKDIR}/hoststep_out RESULT_VARIABLE rc)
+  file(GLOB files RELATIVE ${WORKDIR}/emulated_out ${WORKDIR}/emulated_out/*.csv)
+  foreach(f ${files})
+    file(SHA256 ${WORKDIR}/emulated_out/${f} a)
+    file(SHA256 ${WORKDIR}/hoststep_out/${f} b)
+    if(NOT a STREQUAL b)
+      message(FATAL_ERROR "${f} differs between the device's clock and the host's time steps")
+    endif()
+  endforeach()
+  message(STATUS "${stem}: the device's clock and the host's time steps write the same ${files}")
+endif()
