@@ -271,9 +271,9 @@ static void force_scale(Emitter *E, const BcModel *bc, int k)
  * step already (at_middle); the other passes at its start (the initial conditions with
  * dt = 0, i.e. at t = 0).  `const int onK = ...;` with the given indent: in the function on
  * the CPU; inside the loops in the CUDA target, where t and dt are read on the device. */
-static void window_open(Emitter *E, const BcModel *bc, int k, int at_middle, const char *indent)
+static void window_open(Emitter *E, const BcModel *bc, int k, int middle, const char *indent)
 {
-    const char *tm = at_middle ? "t" : "(t + 0.5 * dt)";
+    const char *tm = middle ? "t" : "(t + 0.5 * dt)";
     fprintf(E->out, "%sconst int on%d = ", indent, k);
     if (isfinite(bc->t0))
         fprintf(E->out, "%s >= %.17g%s", tm, bc->t0, isfinite(bc->t1) ? " && " : "");
@@ -284,19 +284,24 @@ static void window_open(Emitter *E, const BcModel *bc, int k, int at_middle, con
     fputs(";\n", E->out);
 }
 
-/* Whether BC k of body b is one of the pass's: kind, components, and with or without `near`. */
+/* Whether a BC is one of the pass's: its kind, with components, with or without `near`. */
 static int bc_in_pass(const BcModel *bc, BcKind kind, int near)
 {
     return bc->kind == kind && bc->comps && bc->has_near == near;
 }
 
+/* Whether the pass is called at the middle of the step (the symplectic force pass). */
+static int at_middle(const Emitter *E, BcKind kind)
+{
+    return kind == BC_FORCE && E->m->integrator == INTEGRATOR_SYMPLECTIC;
+}
+
 /* The windows of the pass's BCs without `near`, at the top of the CUDA target's loop. */
 static void windows_open(Emitter *E, const BodyModel *b, BcKind kind, const char *indent)
 {
-    const int at_middle = kind == BC_FORCE && E->m->integrator == INTEGRATOR_SYMPLECTIC;
     for (int k = 0; k < b->nbcs; k++)
         if (bc_in_pass(&b->bcs[k], kind, 0) && b->bcs[k].has_window)
-            window_open(E, &b->bcs[k], k, at_middle, indent);
+            window_open(E, &b->bcs[k], k, at_middle(E, kind), indent);
 }
 
 /* The loop over the BCs with `near`, one per BC: over its particle list. */
@@ -317,8 +322,7 @@ static void bc_near_loops(Emitter *E, const BodyModel *b, BcKind kind)
                                "        for (int q = 0; q < b->bc_count[%d]; q++) {\n",
                 k);
         if (bc->has_window && E->cuda) {
-            window_open(E, bc, k, kind == BC_FORCE && E->m->integrator == INTEGRATOR_SYMPLECTIC,
-                        "            ");
+            window_open(E, bc, k, at_middle(E, kind), "            ");
             fprintf(out, "            if (!on%d)\n                return;\n", k);
         }
         fprintf(out, "            const int i = b->bc_list[%d][q];\n"
@@ -344,14 +348,13 @@ void emit_bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
     fprintf(out, "static void %s_%s_bcs(sph_body *b, sph_time t, sph_time dt)\n{\n"
                  "    enum { D = %d };\n",
             b->name, vel ? "velocity" : "force", E->m->dim);
-    const int at_middle = !vel && E->m->integrator == INTEGRATOR_SYMPLECTIC;
     int any_whole = 0;
     for (int k = 0; k < b->nbcs; k++) {
         const BcModel *bc = &b->bcs[k];
         if (bc->kind != kind || !bc->comps)
             continue;
         if (bc->has_window && !E->cuda)
-            window_open(E, bc, k, at_middle, "    ");
+            window_open(E, bc, k, at_middle(E, kind), "    ");
         if (!vel)
             force_scale(E, bc, k);
         any_whole |= !bc->has_near;

@@ -405,11 +405,10 @@ static int time_loop(run_state *r)
             if (write_output(r))
                 return -1;
             next_out += r->t_out;
-        }
-        if (output)
             r->output_seconds += sph_wall_time() - w0;
-        else
+        } else {
             r->check_seconds += sph_wall_time() - w0;
+        }
         sph_progress_update(&prog, s->t, s->dt, s->step);
     }
     sph_progress_finish(&prog);

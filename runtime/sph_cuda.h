@@ -16,9 +16,12 @@
  *    arrays (its sums go to b->red).  The set-up (particles, pairs, kernel gradients,
  *    selections) stays on the host and is copied once; full pair lists (fb_*) replace the half
  *    lists, so that every thread sums the pairs of its own particle without atomics.
- *  - sph_cuda_reductions: the step's sums back into the host body, the one wait of a step;
- *    sph_cuda_monitor_sums: the stability monitor's sums (every 20 steps); sph_cuda_to_host:
- *    the state too, when the runtime reads it (outputs, or a monitor's closer look).
+ *  - The device's clock (sph_clock): a batch of steps runs without the host, which chooses
+ *    none of their time steps; the passes read t and dt from it (sph_time).
+ *  - sph_cuda_reductions: the last step's sums back into the host body, the one wait of a
+ *    batch; sph_cuda_monitor_sums: the stability monitor's sums (every 20 steps);
+ *    sph_cuda_to_host: the state too, when the runtime reads it (outputs, or a monitor's
+ *    closer look).
  *  - With SPH_CUDA_EMULATE the host compiler builds model.cu as C++ with the passes run
  *    serially on host memory: how the tests check the target's code without a GPU. */
 #ifndef SPH_CUDA_H
@@ -476,7 +479,8 @@ static void sph_cuda_zero(double *d, int n)
     });
 }
 
-/* The sums of device view d's last step into host body h: the one wait of a step. */
+/* The sums of device view d's last step into host body h (the time step of sph_sim_step,
+ * the energies; after a batch, the clock's copy has waited already). */
 static void sph_cuda_reductions(sph_body *h, const sph_body *d)
 {
     double red[SPH_NRED];
