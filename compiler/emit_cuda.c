@@ -55,19 +55,17 @@ static void scene_step_cuda(Emitter *E)
           "static void model_step(sph_sim *s, double dt)\n{\n"
           "    model_passes(s->t, dt, s->t + 0.5 * dt, s->t + dt);\n"
           "    SPH_CUDA_CHECK(cudaGetLastError());\n    model_sums_to_host(s);\n}\n\n", out);
-    fprintf(out, "/* Up to a->steps steps on the device until a->t_stop (sph_sim_advance): the device\n"
-                 " * chooses each time step itself (its clock, sph_cuda.h), so the host queues them\n"
-                 " * all and waits once, at the end. */\n"
+    fprintf(out, "/* One time step of every body, of the time step the device's clock chooses. */\n"
+                 "static void model_clock_step()\n{\n"
+                 "    model_passes(sph_time::clock(SPH_CLOCK_T), sph_time::clock(SPH_CLOCK_DT),\n"
+                 "                 sph_time::clock(SPH_CLOCK_T_HALF), sph_time::clock(SPH_CLOCK_T_NEXT));\n"
+                 "}\n\n"
+                 "/* Up to a->steps steps until a->t_stop (sph_sim_advance): the device chooses each\n"
+                 " * time step itself (its clock, sph_cuda.h), so the host queues them without waiting\n"
+                 " * for the sums. */\n"
                  "static void model_advance(sph_sim *s, sph_advance *a)\n{\n"
-                 "    sph_cuda_clock_start(s, a, DEV, %s);\n"
-                 "    const sph_time t = sph_time::clock(SPH_CLOCK_T), dt = sph_time::clock(SPH_CLOCK_DT);\n"
-                 "    const sph_time t_half = sph_time::clock(SPH_CLOCK_T_HALF);\n"
-                 "    const sph_time t_next = sph_time::clock(SPH_CLOCK_T_NEXT);\n"
-                 "    for (int k = 0; k < a->steps; k++) {\n"
-                 "        sph_cuda_clock_choose();\n"
-                 "        model_passes(t, dt, t_half, t_next);\n"
-                 "        sph_cuda_clock_tick();\n    }\n"
-                 "    sph_cuda_clock_finish(s, a);\n    model_sums_to_host(s);\n}\n\n",
+                 "    sph_cuda_advance(s, a, DEV, %s, model_clock_step);\n"
+                 "    model_sums_to_host(s);\n}\n\n",
             contact ? "sph_cuda_contact_w2(&CONTACT_DEV), CONTACT_DEV.w2ref" : "NULL, 0.0");
     fputs("/* The device state into the host bodies, for the runtime to read. */\n"
           "static void model_sync_host(sph_sim *s)\n{\n", out);

@@ -589,6 +589,43 @@ static void sph_cuda_clock_finish(sph_sim *s, sph_advance *a)
     a->collapsed = c.collapsed, a->dt_bad = c.dt_bad, a->floor_bad = c.floor_bad;
 }
 
+/* Whether the clock stopped the batch (one small copy: the host waits for the steps queued). */
+static int sph_cuda_clock_stopped()
+{
+    sph_cuda_clock c;
+    SPH_CUDA_CHECK(cudaMemcpyFromSymbol(&c, sph_clock, sizeof c));
+    return c.skip;
+}
+
+/* Steps the host queues before it looks whether the clock stopped the batch. */
+#ifndef SPH_CLOCK_CHUNK
+#define SPH_CLOCK_CHUNK 20
+#endif
+
+/* A batch of steps (sph_model.advance): up to a->steps steps, each of the passes that
+ * `step` queues (reading t and dt from the clock) between the clock's choice and tick.  The
+ * host queues them SPH_CLOCK_CHUNK at a time and, where steps are left after a chunk, looks
+ * whether the clock has stopped, so that a batch asked for many steps (up to its stop time)
+ * queues only a chunk more than it takes.  contact_w2, contact_w2ref: the contact's bound
+ * (NULL, 0 without contact). */
+static void sph_cuda_advance(sph_sim *s, sph_advance *a, sph_body *const *dev,
+                             const double *contact_w2, double contact_w2ref, void (*step)())
+{
+    sph_cuda_clock_start(s, a, dev, contact_w2, contact_w2ref);
+    for (int done = 0; done < a->steps;) {
+        const int chunk = a->steps - done < SPH_CLOCK_CHUNK ? a->steps - done : SPH_CLOCK_CHUNK;
+        for (int k = 0; k < chunk; k++) {
+            sph_cuda_clock_choose();
+            step();
+            sph_cuda_clock_tick();
+        }
+        done += chunk;
+        if (done < a->steps && sph_cuda_clock_stopped())
+            break;
+    }
+    sph_cuda_clock_finish(s, a);
+}
+
 /* The stability monitor's sums of device view d, after its monitor pass: a few numbers
  * instead of the state (runtime/monitor.c). */
 static void sph_cuda_monitor_sums(const sph_body *d, sph_monitor_sums *out)
