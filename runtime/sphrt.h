@@ -258,8 +258,9 @@ typedef struct sph_advance {
     int steps;          /* at most this many steps, */
     double t_stop, eps; /* and none that starts at t >= t_stop - eps; each ends at t_stop at
                            the latest (the next output time, or the end) */
-    double floor_dt;    /* the floor of the time step, dtmin h/c0 (sph_dt_floor) */
-    /* out: the time step chosen fell below its floor (the step was not taken), the two */
+    double floor_dt;    /* the floor of the time step: dtmin times the smallest h/c0 */
+    /* out: 1 when a time step chosen fell below its floor (sph_dt_floor_now), and was not
+     * taken; then that time step and that floor */
     int collapsed;
     double dt_bad, floor_bad;
 } sph_advance;
