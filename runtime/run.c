@@ -12,6 +12,9 @@
 #include "compat.h"
 #include "internal.h"
 
+/* The stability monitor's periodic check: every this many steps (and before every output). */
+enum { CHECK_EVERY = 20 };
+
 typedef struct {
     const sph_model *m;
     sph_options opt;
@@ -333,7 +336,7 @@ static int glance(run_state *r)
     return look;
 }
 
-/* The stability monitor, every 20 steps and before every output. */
+/* The stability monitor, every CHECK_EVERY steps and before every output. */
 static int check_now(run_state *r, int output)
 {
     r->checks++;
@@ -386,8 +389,9 @@ static int time_loop(run_state *r)
     const double floor_dt = dt_floor(r), eps = 1e-9 * r->t_out;
     double next_out = r->t_out;
     while (s->t < r->t_end - eps) {
-        /* the steps to the next check (every 20 steps) or output time, whichever is first */
-        sph_advance a = {.steps = 20 - (int)(s->step % 20), .t_stop = fmin(next_out, r->t_end),
+        /* the steps to the next check or output time, whichever is first */
+        sph_advance a = {.steps = CHECK_EVERY - (int)(s->step % CHECK_EVERY),
+                         .t_stop = fmin(next_out, r->t_end),
                          .eps = eps, .floor_dt = floor_dt};
         double w0 = sph_wall_time();
         sph_sim_advance(s, &a);
@@ -399,7 +403,7 @@ static int time_loop(run_state *r)
         }
         const int output = s->t >= next_out - eps;
         w0 = sph_wall_time();
-        if ((output || s->step % 20 == 0) && check_now(r, output))
+        if ((output || s->step % CHECK_EVERY == 0) && check_now(r, output))
             break;
         if (output) {
             if (write_output(r))

@@ -44,9 +44,13 @@ int sph_sim_init(sph_sim *s, const sph_model *m, int verbose)
     return 0;
 }
 
-/* The smallest principal stretch of body b: min over particles of sqrt(eigmin(F^T F)). */
+/* The smallest principal stretch of body b: min over particles of sqrt(eigmin(F^T F)).  A
+ * body whose time step follows its compression (lam2) has it from its last stress and update
+ * passes already, from the same F. */
 static double stretch_min(const sph_body *b)
 {
+    if (b->lam2)
+        return sqrt(fmax(b->lam2min, 0.0));
     double l2 = INFINITY;
 #pragma omp parallel for reduction(min : l2)
     for (int i = 0; i < b->n; i++)

@@ -147,6 +147,13 @@ struct sph_time {
     }
 };
 
+/* A body's smallest squared principal stretch from its sums (SPH_RED_CRUSH holds the largest
+ * 1 / lambda^2; 0 before the first step of a body that does not track it). */
+SPH_HD static inline double sph_red_lam2min(const double *red)
+{
+    return red[SPH_RED_CRUSH] > 0 ? 1.0 / red[SPH_RED_CRUSH] : 1.0;
+}
+
 /* What an SPH_FOR_MAX3 body returns: three non-negative values to take the maxima of. */
 struct sph_max3 {
     double x, y, z;
@@ -486,7 +493,7 @@ static void sph_cuda_reductions(sph_body *h, const sph_body *d)
     double red[SPH_NRED];
     SPH_CUDA_CHECK(cudaMemcpy(red, d->red, sizeof red, cudaMemcpyDeviceToHost));
     h->vmax2 = red[SPH_RED_VMAX2], h->amax2 = red[SPH_RED_AMAX2];
-    h->lam2min = red[SPH_RED_CRUSH] > 0 ? 1.0 / red[SPH_RED_CRUSH] : 1.0;
+    h->lam2min = sph_red_lam2min(red);
     h->visc_rate = red[SPH_RED_VISC_RATE], h->visc_dissipated = red[SPH_RED_VISC_DISSIPATED];
 }
 
@@ -508,9 +515,8 @@ __device__ static inline void sph_clock_choose_on(sph_cuda_clock *c)
         c->dt_factor = 1.0;
         for (int i = 0; i < c->nbodies; i++) {
             const sph_body *b = c->bodies[i];
-            const double *red = b->red, crush = red[SPH_RED_CRUSH];
-            const double f = sph_stretch_factor(c->lambda_on, b->lam2 != NULL,
-                                                crush > 0 ? 1.0 / crush : 1.0);
+            const double *red = b->red;
+            const double f = sph_stretch_factor(c->lambda_on, b->lam2 != NULL, sph_red_lam2min(red));
             c->dt_factor = fmin(c->dt_factor, f);
             dt = fmin(dt, sph_body_dt(f, b->h, b->c0, red[SPH_RED_VMAX2], red[SPH_RED_AMAX2]));
         }

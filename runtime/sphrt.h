@@ -393,7 +393,7 @@ int sph_main(const sph_model *m, int argc, char **argv);
 int sph_sim_init(sph_sim *s, const sph_model *m, int verbose);
 double sph_sim_stable_dt(sph_sim *s);
 /* The smallest principal stretch of any particle (finite ones; capped at 1), from the host's
- * F: what `timestep stretch` bounds the step with. */
+ * F (or, for a body that tracks it for its time step, its lam2min of the same F). */
 double sph_sim_stretch(const sph_sim *s);
 void sph_sim_step(sph_sim *s, double dt);
 /* Up to a->steps steps, each of the stable time step (eq. 64-66) cut to end at a->t_stop at

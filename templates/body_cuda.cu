@@ -212,8 +212,13 @@ static void @B@_monitor(sph_body *b)
         const double *F = b->F + 9 * (size_t)i;
         if (!(sph_det3(F) > 0) || v2 > 100.0 * b->c0 * b->c0)
             bad = 1;
-        const double l2 = sph_stretch2_min(F, D); /* at most 1: 1 - l2 >= 0 */
-        return sph_max3{bad, l2 < 1 ? 1 - l2 : 0.0, 0.0};
+//@if CRUSH
+        const double l2 = b->lam2[i]; /* the stress pass's, of the same F */
+//@endif
+//@if NO_CRUSH
+        const double l2 = sph_stretch2_min(F, D);
+//@endif
+        return sph_max3{bad, l2 < 1 ? 1 - l2 : 0.0, 0.0}; /* l2 <= 1: 1 - l2 >= 0 */
     });
     SPH_FOR_SUM(i, b->n, b->red + SPH_RED_ENERGY, {
         double v2 = 0;
