@@ -32,12 +32,26 @@ typedef struct {
     long nk[3], nt[3], ntiles, tile_pts;
 } lattice;
 
-/* Sets up the lattice of region r; returns 0 when it is empty or too large. */
-static int lattice_init(lattice *L, const sph_region *r, int dim, double dx, double y_plane)
+/* The most lattice points a body's bounding box may hold (particle indices are ints). */
+#define MAX_LATTICE_POINTS 2e9
+
+/* Sets up the lattice of region r; returns 0 when it is empty or invalid, -1 when it holds
+ * more than MAX_LATTICE_POINTS points (about *total). */
+static int lattice_init(lattice *L, const sph_region *r, int dim, double dx, double y_plane,
+                        double *total)
 {
-    double lo[3], hi[3], total = 1.0;
+    double lo[3], hi[3];
+    *total = 1.0;
     if (dx <= 0.0 || (dim != 2 && dim != 3) || !sph_region_bbox_dim(r, dim, lo, hi))
         return 0;
+    for (int c = 0; c < dim; c++) { /* before the counts below become longs */
+        const double ext = (hi[sph_axis(dim, c)] - lo[sph_axis(dim, c)]) / dx;
+        if (!(ext >= 0.0))
+            return 0;
+        *total *= fmax(ext, 1.0);
+    }
+    if (!(*total < MAX_LATTICE_POINTS))
+        return -1;
     L->dim = dim;
     L->dx = dx;
     L->y_plane = y_plane;
@@ -47,8 +61,6 @@ static int lattice_init(lattice *L, const sph_region *r, int dim, double dx, dou
     for (int c = 0; c < 3; c++) {
         int ax = sph_axis(dim, c);
         double ext = c < dim ? (hi[ax] - lo[ax]) / dx : 0.0;
-        if (!(ext >= 0.0) || ext > 1e8)
-            return 0;
         L->lo[c] = c < dim ? lo[ax] : 0.0;
         L->nk[c] = 1;
         if (c >= dim)
@@ -68,13 +80,14 @@ static int lattice_init(lattice *L, const sph_region *r, int dim, double dx, dou
         if (L->nk[c] < 1)
             L->nk[c] = 1;
     }
+    *total = 1.0;
     for (int c = 0; c < 3; c++) {
         L->nt[c] = c < dim ? (L->nk[c] + L->tile - 1) / L->tile : 1;
         L->ntiles *= L->nt[c];
         L->tile_pts *= c < dim ? L->tile : 1;
-        total *= (double)L->nk[c];
+        *total *= (double)L->nk[c];
     }
-    return total < 2e9;
+    return *total < MAX_LATTICE_POINTS ? 1 : -1;
 }
 
 /* Lattice point number l of tile t: sets p (3D coordinates); 0 when outside the lattice. */
@@ -112,16 +125,22 @@ static long tile_fill(const lattice *L, const sph_region *r, long t, double *X)
 int sph_fill_region(const sph_region *r, int dim, double dx, double y_plane, double **X)
 {
     lattice L;
+    double total;
     *X = NULL;
-    if (!lattice_init(&L, r, dim, dx, y_plane)) {
-        if (r->n > 0)
-            fprintf(stderr, "sph: error: cannot fill region (dim %d, dx %g): empty or too "
-                            "many lattice points\n", dim, dx);
-        return 0;
+    const int ok = lattice_init(&L, r, dim, dx, y_plane, &total);
+    if (ok < 0) {
+        fprintf(stderr, "sph: error: at spacing dx = %g the region's bounding box holds some "
+                        "%.3g lattice points, more than %.0e: raise dp or lower refine\n",
+                dx, total, MAX_LATTICE_POINTS);
+        return -1;
     }
-    long *first = malloc((size_t)(L.ntiles + 1) * sizeof *first);
-    if (!first)
+    if (!ok)
         return 0;
+    long *first = malloc((size_t)(L.ntiles + 1) * sizeof *first);
+    if (!first) {
+        fprintf(stderr, "sph: error: out of memory for %ld lattice tiles\n", L.ntiles);
+        return -1;
+    }
     first[0] = 0;
 #pragma omp parallel for schedule(dynamic, 16)
     for (long t = 0; t < L.ntiles; t++)
@@ -133,10 +152,9 @@ int sph_fill_region(const sph_region *r, int dim, double dx, double y_plane, dou
 #pragma omp parallel for schedule(dynamic, 16)
         for (long t = 0; t < L.ntiles; t++)
             tile_fill(&L, r, t, *X + first[t] * dim);
-    } else {
-        if (n > 0)
-            fprintf(stderr, "sph: error: cannot allocate %ld particles\n", n);
-        n = 0;
+    } else if (n > 0) {
+        fprintf(stderr, "sph: error: cannot allocate %ld particles\n", n);
+        n = -1;
     }
     free(first);
     return (int)n;

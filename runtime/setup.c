@@ -5,10 +5,16 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include "internal.h"
 #include "notch.h"
 #include "select.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
 
 static void *zalloc(size_t n, size_t size)
 {
@@ -368,6 +374,51 @@ static void check_restrict(const sph_body *b, const sph_fracture_desc *f, double
             f->restrict_where, b->desc->name, b->dx);
 }
 
+/* The memory a run may use, in bytes (0 when unknown): the machine's, or the process's
+ * address-space limit (ulimit -v) when that is smaller; *what names which. */
+static double memory_limit(const char **what)
+{
+    const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
+    double mem = pages > 0 && size > 0 ? (double)pages * (double)size : 0.0;
+    struct rlimit lim;
+    *what = "this machine's";
+    if (getrlimit(RLIMIT_AS, &lim) == 0 && lim.rlim_cur != RLIM_INFINITY &&
+        (mem == 0.0 || (double)lim.rlim_cur < mem)) {
+        mem = (double)lim.rlim_cur;
+        *what = "the process's limit (ulimit -v) of";
+    }
+    return mem;
+}
+
+/* Refuses, before the neighbour search, a body whose pair lists cannot be held: clearly more
+ * than 2^31 pairs (int offsets; the search counts them exactly when it is close) or more
+ * memory than the machine has, instead of a search that runs for minutes and then fails or
+ * is killed.  A particle has about as many neighbours as lattice points lie within 2h (a
+ * sphere or a disc of radius 2h / dx: 174 in 3D and 13 in 2D at coefh 1, a few more than
+ * interior particles have), and the run keeps some 32 bytes per neighbour and 1 KB per
+ * particle (the plate at dp 1 mm: 1.26 GB for 242 400 particles of 157 neighbours). */
+static int check_size(const sph_body *b)
+{
+    const double r = 2.0 * b->h / b->dx, n = (double)b->n;
+    const double per = b->dim == 3 ? 4.0 / 3.0 * M_PI * r * r * r : M_PI * r * r;
+    const char *what;
+    const double bytes = n * (32.0 * per + 1024.0), mem = memory_limit(&what);
+    if (n * per > 1.25 * 0x7fffffffL) {
+        fprintf(stderr, "sph: error: body '%s' would have some %.3g neighbour pairs (%d particles "
+                        "with about %.0f neighbours each), more than 2^31: raise dp or lower "
+                        "refine or coefh\n", b->desc->name, n * per, b->n, per);
+        return -1;
+    }
+    if (mem > 0 && bytes > mem) {
+        fprintf(stderr, "sph: error: body '%s' would need some %.3g GB of memory (%d particles "
+                        "with about %.0f neighbours each), more than %s %.3g GB: raise dp or "
+                        "lower refine or coefh\n", b->desc->name, bytes / 1e9, b->n, per, what,
+                mem / 1e9);
+        return -1;
+    }
+    return 0;
+}
+
 int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
 {
     memset(b, 0, sizeof *b);
@@ -381,11 +432,18 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
     b->c0 = d->c0;
     b->y_plane = d->y_plane;
     b->n = sph_fill_region(&d->region, m->dim, b->dx, d->y_plane, &b->X);
-    if (b->n <= 0) {
+    if (b->n < 0) {
+        fprintf(stderr, "sph: error: body '%s' cannot be filled with particles of spacing %g\n",
+                d->name, b->dx);
+        return -1;
+    }
+    if (b->n == 0) {
         fprintf(stderr, "sph: error: body '%s' has no particles (its shape is smaller than the "
                         "particle spacing %g)\n", d->name, b->dx);
         return -1;
     }
+    if (check_size(b))
+        return -1;
     order_particles(b);
     sph_neighbours(b->X, b->n, b->dim, 2.0 * b->h, d->nbsrange, b->dx, &b->nb_start, &b->nb);
     b->npairs = b->nb_start[b->n];

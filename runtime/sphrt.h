@@ -72,7 +72,8 @@ double sph_region_distance(const sph_region *r, const double p[3]);
  * box; when r->has_corner, the cells have a corner at r->corner instead.  A point is kept
  * when it lies inside the region or within 1e-9 dx of it (on its surface).  In 2D only x
  * and z vary and every particle gets y = y_plane.  Returns the number of particles and sets
- * *X to a malloc'ed array of n*dim coordinates (x,z in 2D; x,y,z in 3D). */
+ * *X to a malloc'ed array of n*dim coordinates (x,z in 2D; x,y,z in 3D); 0 for an empty
+ * region, -1 (with a message) when the lattice is too large or memory runs out. */
 int sph_fill_region(const sph_region *r, int dim, double dx, double y_plane, double **X);
 
 /* ------------------------------------------------------------------ kernels */

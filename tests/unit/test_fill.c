@@ -209,6 +209,26 @@ static void test_lattice(void)
     free(X);
 }
 
+/* A lattice beyond 2e9 points is refused (-1, with a message) without filling it, also when
+ * one axis alone exceeds what a long counts; an empty region gives 0. */
+static void test_too_large(void)
+{
+    char what[200];
+    double *X = NULL;
+    sph_shape cube = { SPH_BOX, { 0, 0, 0 }, { 1, 1, 1 }, 0, 0, NULL };
+    int n = fill(&cube, 1, 3, 1e-4, 0.0, &X);
+    snprintf(what, sizeof what, "unit cube at dx 1e-4 (1e12 points): %d (expected -1)", n);
+    check(n == -1 && !X, what);
+    sph_shape bar = { SPH_BOX, { 0, 0, 0 }, { 1, 0, 1e-30 }, 0, 0, NULL };
+    n = fill(&bar, 1, 2, 1e-25, 0.0, &X);
+    snprintf(what, sizeof what, "2D bar 1 x 1e-30 at dx 1e-25 (1e25 points along x): %d "
+             "(expected -1)", n);
+    check(n == -1 && !X, what);
+    n = fill(&cube, 0, 3, 0.1, 0.0, &X);
+    snprintf(what, sizeof what, "a region of no shape: %d (expected 0)", n);
+    check(n == 0, what);
+}
+
 int main(void)
 {
     test_region();
@@ -217,6 +237,7 @@ int main(void)
     test_volumes();
     test_csg();
     test_order();
+    test_too_large();
     printf("%s: %d failure(s)\n", failures ? "FAILED" : "PASSED", failures);
     return failures != 0;
 }
