@@ -72,7 +72,7 @@ void sph_gradients(const double *X, int n, int dim, const int *start, const int 
     *L = malloc((size_t)(n > 0 ? n : 0) * dim * dim * sizeof **L + 1);
     if (!*w || !*L) {
         fprintf(stderr, "sph: error: out of memory for kernel gradients (%zu pairs)\n", npairs);
-        exit(1);
+        exit(SPH_EXIT_SETUP);
     }
 #pragma omp parallel for schedule(dynamic, 256)
     for (int i = 0; i < n; i++) {

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "mesh.h"
+#include "sphrt.h"
 
 enum { MAX_MESHES = 256 };
 
@@ -40,11 +41,11 @@ const sph_mesh *sph_mesh_get(const char *file)
             char err[1024];
             if (n == MAX_MESHES) {
                 fprintf(stderr, "sph: error: more than %d surface files\n", MAX_MESHES);
-                exit(4);
+                exit(SPH_EXIT_SETUP);
             }
             if (sph_mesh_load(file, &table[n].mesh, err, sizeof err)) {
                 fprintf(stderr, "sph: error: %s\n", err);
-                exit(4);
+                exit(SPH_EXIT_SETUP);
             }
             sph_mesh_index(&table[n].mesh);
             table[n].file = strdup(file);

@@ -48,7 +48,7 @@ static void *xmalloc(size_t size)
     void *p = malloc(size ? size : 1);
     if (!p) {
         fprintf(stderr, "sph: error: out of memory in the neighbour search (%zu bytes)\n", size);
-        exit(1);
+        exit(SPH_EXIT_SETUP);
     }
     return p;
 }
@@ -237,7 +237,7 @@ static void build_csr(const search *s, int **start, int **nb)
         total += st[i + 1];
         if (total > 0x7fffffffL) {
             fprintf(stderr, "sph: error: too many neighbour pairs (> 2^31)\n");
-            exit(1);
+            exit(SPH_EXIT_SETUP);
         }
         st[i + 1] = (int)total;
     }

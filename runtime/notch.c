@@ -33,6 +33,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "notch.h"
+#include "sphrt.h"
 
 #define NOTCH_TOL 1e-9
 
@@ -68,7 +69,7 @@ static void *xmalloc(size_t size)
     void *p = malloc(size ? size : 1);
     if (!p) {
         fprintf(stderr, "sph: error: out of memory cutting notch pairs (%zu bytes)\n", size);
-        exit(1);
+        exit(SPH_EXIT_SETUP);
     }
     return p;
 }

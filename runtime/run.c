@@ -457,7 +457,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
     r.stretch_seen = 1.0;
     int rc = sph_parse_options(&r.opt, m->name, argc, argv);
     if (rc)
-        return rc < 0 ? 2 : 0;
+        return rc < 0 ? SPH_EXIT_OPTIONS : 0;
     if (r.opt.threads > 0)
         omp_set_num_threads(r.opt.threads);
     r.t_end = r.opt.t_end > 0 ? r.opt.t_end : m->t_end;
@@ -466,19 +466,19 @@ int sph_main(const sph_model *m, int argc, char **argv)
     double wall0 = sph_wall_time();
     long particles = 0, pairs = 0;
     if (setup(&r, &particles, &pairs) || open_outputs(&r))
-        return 4;
+        return SPH_EXIT_SETUP;
     sync_host(&r);
     r.setup_seconds = sph_wall_time() - wall0;
     if (write_output(&r))
-        return 4;
+        return SPH_EXIT_SETUP;
     int state = time_loop(&r);
     if (state < 0)
-        return 4;
+        return SPH_EXIT_SETUP;
     int failed = 0;
     double wall = sph_wall_time() - wall0;
     sync_host(&r);
     if (write_summary(&r, wall, particles, pairs, &failed))
-        return 4;
+        return SPH_EXIT_SETUP;
     sph_csv_close(&r.energies);
     for (int q = 0; q < r.nmeasures; q++)
         sph_csv_close(&r.measure_csv[q]);
@@ -491,7 +491,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
                         "%s/ (t = %g s)\n",
                 m->name, r.unstable, m->name, r.opt.out_dir, r.frame_times[r.nframes - 1]);
         stretch_hint(&r);
-        return 3;
+        return SPH_EXIT_UNSTABLE;
     }
     if (!r.opt.quiet)
         printf("%s: %ld particles, %ld steps to t = %g s in %.2f s (%.1f ns per particle-step)"
@@ -499,5 +499,5 @@ int sph_main(const sph_model *m, int argc, char **argv)
                m->name, particles, r.sim.step, r.sim.t, wall,
                ps > 0 ? 1e9 * r.step_seconds / ps : 0.0, r.errors[0] ? "; errors: " : "",
                r.errors, m->name, r.opt.out_dir, m->bodies[0].name, r.opt.out_dir);
-    return failed ? 1 : 0;
+    return failed ? SPH_EXIT_EXPECT : 0;
 }

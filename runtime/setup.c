@@ -21,7 +21,7 @@ static void *zalloc(size_t n, size_t size)
     void *p = calloc(n ? n : 1, size);
     if (!p) {
         fprintf(stderr, "sph: error: out of memory\n");
-        exit(3);
+        exit(SPH_EXIT_SETUP);
     }
     return p;
 }

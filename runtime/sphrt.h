@@ -41,6 +41,10 @@ extern "C" {
 #endif
 #define SPH_FN SPH_HD static inline
 
+/* The exit codes of a generated program (README): a declared expectation failed, bad
+ * options, the run went unstable, set-up or output failed (5: a CUDA call failed). */
+enum { SPH_EXIT_EXPECT = 1, SPH_EXIT_OPTIONS = 2, SPH_EXIT_UNSTABLE = 3, SPH_EXIT_SETUP = 4 };
+
 /* ------------------------------------------------------------------ geometry */
 
 typedef enum { SPH_BOX, SPH_CYLINDER, SPH_SPHERE, SPH_MESH } sph_shape_kind;
