@@ -46,6 +46,16 @@ static Expr *ast_expr(ExprKind kind, SrcLoc loc)
     Expr *e = ast_alloc(sizeof *e);
     e->kind = kind;
     e->loc = loc;
+    e->depth = 1;
+    return e;
+}
+
+/* Sets e->depth from its arguments; returns e. */
+static Expr *ast_deepen(Expr *e)
+{
+    for (int i = 0; i < e->nargs; i++)
+        if (e->args[i] && e->args[i]->depth >= e->depth)
+            e->depth = e->args[i]->depth + 1;
     return e;
 }
 
@@ -68,7 +78,7 @@ Expr *ast_unary(SrcLoc loc, OpKind op, Expr *a)
     Expr *e = ast_expr(EX_UNARY, loc);
     e->op = op;
     ast_push_expr(&e->args, &e->nargs, a);
-    return e;
+    return ast_deepen(e);
 }
 
 Expr *ast_binary(SrcLoc loc, OpKind op, Expr *a, Expr *b)
@@ -77,7 +87,7 @@ Expr *ast_binary(SrcLoc loc, OpKind op, Expr *a, Expr *b)
     e->op = op;
     ast_push_expr(&e->args, &e->nargs, a);
     ast_push_expr(&e->args, &e->nargs, b);
-    return e;
+    return ast_deepen(e);
 }
 
 /* Takes ownership of args (an array of nargs elements, or NULL). */
@@ -87,7 +97,7 @@ Expr *ast_call(SrcLoc loc, const char *name, Expr **args, int nargs)
     e->name = ast_strdup(name);
     e->args = args;
     e->nargs = nargs;
-    return e;
+    return ast_deepen(e);
 }
 
 /* Takes ownership of args. */
@@ -96,7 +106,7 @@ Expr *ast_vec(SrcLoc loc, Expr **args, int nargs)
     Expr *e = ast_expr(EX_VEC, loc);
     e->args = args;
     e->nargs = nargs;
-    return e;
+    return ast_deepen(e);
 }
 
 Expr *ast_skip(SrcLoc loc)
@@ -173,6 +183,7 @@ ShapeExpr *ast_shape_prim(NamedCall call)
     s->op = 0;
     s->loc = call.loc;
     s->prim = call;
+    s->depth = 1;
     return s;
 }
 
@@ -183,6 +194,8 @@ ShapeExpr *ast_shape_op(SrcLoc loc, char op, ShapeExpr *lhs, ShapeExpr *rhs)
     s->loc = loc;
     s->lhs = lhs;
     s->rhs = rhs;
+    int dl = lhs ? lhs->depth : 0, dr = rhs ? rhs->depth : 0;
+    s->depth = 1 + (dl > dr ? dl : dr);
     return s;
 }
 

@@ -42,7 +42,12 @@ struct Expr {
     OpKind op;      /* EX_UNARY, EX_BINARY */
     Expr **args;    /* EX_VEC, EX_UNARY (1), EX_BINARY (2), EX_CALL */
     int nargs;
+    int depth;      /* levels of nodes from here down: 1 for a leaf */
 };
+
+/* The deepest expression or shape the front ends accept: later stages walk the tree
+ * recursively, and a chain such as 1 + 1 + ... + 1 parses into one level per operator. */
+#define AST_MAX_DEPTH 1000
 
 /* "key value" pair: scene settings, body settings, named arguments of a call
  * such as box(from [..] to [..]) or svk(density 1000, shear 0.7e6).  A named argument may
@@ -113,6 +118,7 @@ struct ShapeExpr {
     SrcLoc loc;
     NamedCall prim;    /* op == 0: box(...), cylinder(...), sphere(...), surface(...) */
     ShapeExpr *lhs, *rhs;
+    int depth;         /* levels of nodes from here down: 1 for a primitive */
 };
 
 typedef enum { BC_VELOCITY, BC_FORCE } BcKind;

@@ -319,7 +319,8 @@ static int setting_int(const Model *m, const Setting *s, int lo, int *out)
     if (check_const_expr(m, s->values[0], s->key, &v))
         return -1;
     if (v != floor(v) || v < lo || v > 1000) {
-        diag_error(s->values[0]->loc, "'%s' must be an integer >= %d (got %g)", s->key, lo, v);
+        diag_error(s->values[0]->loc, "'%s' must be an integer from %d to 1000 (got %g)", s->key,
+                   lo, v);
         return -1;
     }
     *out = (int)v;

@@ -1,4 +1,5 @@
 /* check_expr.c — checking scalar expressions: names, functions, arity, types, `skip`. */
+#include <math.h>
 #include <string.h>
 
 #include "check.h"
@@ -87,6 +88,10 @@ int check_const_expr(const Model *m, const Expr *e, const char *what, double *ou
     int r = eval_expr(m, e, NULL, out);
     if (r != EVAL_OK) {
         diag_error(e->loc, "%s must be a constant", what);
+        return -1;
+    }
+    if (!isfinite(*out)) {
+        diag_error(e->loc, "%s must be a finite number (got %g)", what, *out);
         return -1;
     }
     return 0;

@@ -14,6 +14,10 @@
 
 #include "diag.h"
 
+/* The run stops after this many errors: a broken construct can make the parser report
+ * an error every few tokens, each with its source line, which may be very long. */
+enum { MAX_ERRORS = 50 };
+
 static int n_errors;
 static int n_warnings;
 
@@ -112,7 +116,10 @@ void diag_error(SrcLoc loc, const char *fmt, ...)
     va_start(ap, fmt);
     report(loc, "error", fmt, ap);
     va_end(ap);
-    n_errors++;
+    if (++n_errors < MAX_ERRORS)
+        return;
+    fprintf(stderr, "sphc: error: too many errors (%d), stopping\n", n_errors);
+    exit(1);
 }
 
 void diag_warning(SrcLoc loc, const char *fmt, ...)

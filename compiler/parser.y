@@ -84,6 +84,22 @@ static SrcLoc mkloc(const ParseState *ps, const YYLTYPE *l)
 
 void yyerror(YYLTYPE *loc, yyscan_t scanner, ParseState *ps, const char *msg);
 
+/* A node nested deeper than AST_MAX_DEPTH is reported once, where its chain passes the
+ * limit; after errors in parsing, no stage walks the tree. */
+static Expr *depth_limited(Expr *e)
+{
+    if (e->depth == AST_MAX_DEPTH + 1)
+        diag_error(e->loc, "expression nested too deeply (more than %d levels)", AST_MAX_DEPTH);
+    return e;
+}
+
+static ShapeExpr *shape_depth_limited(ShapeExpr *s)
+{
+    if (s->depth == AST_MAX_DEPTH + 1)
+        diag_error(s->loc, "shape nested too deeply (more than %d levels)", AST_MAX_DEPTH);
+    return s;
+}
+
 static Item new_item(ItemKind kind, SrcLoc loc)
 {
     Item it = { 0 };
@@ -456,8 +472,10 @@ bcopts
 
 shape
     : primshape
-    | shape '+' primshape               { $$ = ast_shape_op(LOC(@2), '+', $1, $3); }
-    | shape '-' primshape               { $$ = ast_shape_op(LOC(@2), '-', $1, $3); }
+    | shape '+' primshape               { $$ = shape_depth_limited(
+                                                  ast_shape_op(LOC(@2), '+', $1, $3)); }
+    | shape '-' primshape               { $$ = shape_depth_limited(
+                                                  ast_shape_op(LOC(@2), '-', $1, $3)); }
     ;
 
 primshape
@@ -493,7 +511,7 @@ argkey
     ;
 
 vec
-    : '[' exprs ']'                     { $$ = ast_vec(LOC(@1), $2.items, $2.n); }
+    : '[' exprs ']'                     { $$ = depth_limited(ast_vec(LOC(@1), $2.items, $2.n)); }
     ;
 
 /* ---------------------------------------------------------------- expressions */
@@ -514,53 +532,55 @@ expr
 
 or_e
     : and_e
-    | or_e OR and_e                     { $$ = ast_binary(LOC(@2), OP_OR, $1, $3); }
+    | or_e OR and_e                     { $$ = depth_limited(ast_binary(LOC(@2), OP_OR, $1, $3)); }
     ;
 
 and_e
     : cmp_e
-    | and_e AND cmp_e                   { $$ = ast_binary(LOC(@2), OP_AND, $1, $3); }
+    | and_e AND cmp_e                   { $$ = depth_limited(ast_binary(LOC(@2), OP_AND, $1, $3)); }
     ;
 
 cmp_e
     : add_e
-    | cmp_e '<' add_e                   { $$ = ast_binary(LOC(@2), OP_LT, $1, $3); }
-    | cmp_e '>' add_e                   { $$ = ast_binary(LOC(@2), OP_GT, $1, $3); }
-    | cmp_e LE add_e                    { $$ = ast_binary(LOC(@2), OP_LE, $1, $3); }
-    | cmp_e GE add_e                    { $$ = ast_binary(LOC(@2), OP_GE, $1, $3); }
-    | cmp_e EQ add_e                    { $$ = ast_binary(LOC(@2), OP_EQ, $1, $3); }
-    | cmp_e NE add_e                    { $$ = ast_binary(LOC(@2), OP_NE, $1, $3); }
+    | cmp_e '<' add_e                   { $$ = depth_limited(ast_binary(LOC(@2), OP_LT, $1, $3)); }
+    | cmp_e '>' add_e                   { $$ = depth_limited(ast_binary(LOC(@2), OP_GT, $1, $3)); }
+    | cmp_e LE add_e                    { $$ = depth_limited(ast_binary(LOC(@2), OP_LE, $1, $3)); }
+    | cmp_e GE add_e                    { $$ = depth_limited(ast_binary(LOC(@2), OP_GE, $1, $3)); }
+    | cmp_e EQ add_e                    { $$ = depth_limited(ast_binary(LOC(@2), OP_EQ, $1, $3)); }
+    | cmp_e NE add_e                    { $$ = depth_limited(ast_binary(LOC(@2), OP_NE, $1, $3)); }
     ;
 
 add_e
     : mul_e
-    | add_e '+' mul_e                   { $$ = ast_binary(LOC(@2), OP_ADD, $1, $3); }
-    | add_e '-' mul_e                   { $$ = ast_binary(LOC(@2), OP_SUB, $1, $3); }
+    | add_e '+' mul_e                   { $$ = depth_limited(ast_binary(LOC(@2), OP_ADD, $1, $3)); }
+    | add_e '-' mul_e                   { $$ = depth_limited(ast_binary(LOC(@2), OP_SUB, $1, $3)); }
     ;
 
 mul_e
     : unary_e
-    | mul_e '*' unary_e                 { $$ = ast_binary(LOC(@2), OP_MUL, $1, $3); }
-    | mul_e '/' unary_e                 { $$ = ast_binary(LOC(@2), OP_DIV, $1, $3); }
+    | mul_e '*' unary_e                 { $$ = depth_limited(ast_binary(LOC(@2), OP_MUL, $1, $3)); }
+    | mul_e '/' unary_e                 { $$ = depth_limited(ast_binary(LOC(@2), OP_DIV, $1, $3)); }
     ;
 
 unary_e
-    : '-' unary_e                       { $$ = ast_unary(LOC(@1), OP_NEG, $2); }
-    | NOT unary_e                       { $$ = ast_unary(LOC(@1), OP_NOT, $2); }
+    : '-' unary_e                       { $$ = depth_limited(ast_unary(LOC(@1), OP_NEG, $2)); }
+    | NOT unary_e                       { $$ = depth_limited(ast_unary(LOC(@1), OP_NOT, $2)); }
     | pow_e
     ;
 
 /* right associative, and tighter than unary minus: -2^2 = -(2^2), 2^-1 is fine */
 pow_e
     : primary
-    | primary '^' unary_e               { $$ = ast_binary(LOC(@2), OP_POW, $1, $3); }
+    | primary '^' unary_e               { $$ = depth_limited(ast_binary(LOC(@2), OP_POW, $1, $3)); }
     ;
 
 primary
     : NUMBER                            { $$ = ast_num(LOC(@1), $1); }
     | IDENT                             { $$ = ast_name(LOC(@1), $1); }
-    | IDENT '(' args_opt ')'            { $$ = ast_call(LOC(@1), $1, $3.items, $3.n); }
-    | IF '(' args_opt ')'               { $$ = ast_call(LOC(@1), "if", $3.items, $3.n); }
+    | IDENT '(' args_opt ')'            { $$ = depth_limited(
+                                                  ast_call(LOC(@1), $1, $3.items, $3.n)); }
+    | IF '(' args_opt ')'               { $$ = depth_limited(
+                                                  ast_call(LOC(@1), "if", $3.items, $3.n)); }
     | '(' expr ')'                      { $$ = $2; }
     | vec
     | SKIP                              { $$ = ast_skip(LOC(@1)); }

@@ -26,6 +26,7 @@ typedef struct {
     char op[3];
     double num;
     char name[128];
+    int nesting;         /* parse_unary calls under way: every nested operand is one */
     int failed;
 } Parser;
 
@@ -216,7 +217,28 @@ static Expr *parse_pow(Parser *ps)
     return b ? ast_binary(ps->loc, OP_POW, a, b) : NULL;
 }
 
+static Expr *parse_unary_op(Parser *ps);
+
+/* Each level of nesting (parentheses, arguments, unary operators, the right of '^') goes
+ * through here: the parser recurses once per level, and the later stages once per level
+ * of the tree. */
 static Expr *parse_unary(Parser *ps)
+{
+    if (ps->nesting >= AST_MAX_DEPTH) {
+        fail(ps, "expression nested too deeply");
+        return NULL;
+    }
+    ps->nesting++;
+    Expr *e = parse_unary_op(ps);
+    ps->nesting--;
+    if (e && e->depth > AST_MAX_DEPTH) {
+        fail(ps, "expression nested too deeply");
+        return NULL;
+    }
+    return e;
+}
+
+static Expr *parse_unary_op(Parser *ps)
 {
     OpKind op;
     if (is_op(ps, "-"))
@@ -249,6 +271,10 @@ static Expr *parse_level(Parser *ps, Expr *(*sub)(Parser *), const char *const *
             return NULL;
         Expr *b = sub(ps);
         a = b ? ast_binary(ps->loc, kinds[k], a, b) : NULL;
+        if (a && a->depth > AST_MAX_DEPTH) {
+            fail(ps, "expression nested too deeply");
+            return NULL;
+        }
     }
     return NULL;
 }

@@ -27,9 +27,22 @@
 #include "source.h"
 #include "xml_internal.h"
 
+/* Node indices stay well inside the range of long: the conversion of a coordinate far
+ * outside the domain would overflow it; results are clipped to the domain anyway. */
+#define NODE_LIMIT 1e15
+
+static long to_node(double v)
+{
+    if (!(v > -NODE_LIMIT))
+        return (long)-NODE_LIMIT;
+    if (v > NODE_LIMIT)
+        return (long)NODE_LIMIT;
+    return (long)v;
+}
+
 static long gc_round(double v)
 {
-    return (long)floor(v + 0.5);
+    return to_node(floor(v + 0.5));
 }
 
 /* ------------------------------------------------------------------ <definition> */
@@ -60,7 +73,13 @@ static int definition(XmlCtx *x, const xmlNode *n)
                        x->pmax[a], x->pmin[a]);
             return -1;
         }
-        x->nodes[a] = (long)floor((x->pmax[a] - x->pmin[a]) / x->dp + 1e-9);
+        double span = floor((x->pmax[a] - x->pmin[a]) / x->dp + 1e-9);
+        if (!(span < NODE_LIMIT)) {
+            diag_error(xml_loc(x, n), "<definition> attribute 'dp': %g is too small for the "
+                       "domain (%g nodes along %c)", x->dp, span, "xyz"[a]);
+            return -1;
+        }
+        x->nodes[a] = (long)span;
     }
     x->dim = x->pmin[1] == x->pmax[1] ? 2 : 3;
     x->has_domain = 1;
@@ -210,8 +229,8 @@ static int is_accepted(const xmlNode *n)
 /* Nodes of axis a spanned by [lo, hi], clipped to the domain; 0 when some lie in it. */
 static int node_span(const XmlCtx *x, int a, double lo, double hi, long *klo, long *khi)
 {
-    *klo = (long)ceil((lo - x->pmin[a]) / x->dp - 1e-9);
-    *khi = (long)floor((hi - x->pmin[a]) / x->dp + 1e-9);
+    *klo = to_node(ceil((lo - x->pmin[a]) / x->dp - 1e-9));
+    *khi = to_node(floor((hi - x->pmin[a]) / x->dp + 1e-9));
     if (*klo < 0)
         *klo = 0;
     if (*khi > x->nodes[a])
