@@ -7,6 +7,8 @@
  * ("#Lyf + 0.5e-3"), which is dropped.  libxml2 has already undone the XML escapes, and
  * newlines inside attribute values arrive as blanks. */
 #include <ctype.h>
+#include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -58,15 +60,18 @@ static int lex_number(Parser *ps)
         while (isdigit((unsigned char)*s))
             s++;
     }
-    char buf[64];
-    size_t len = (size_t)(s - ps->p);
-    if (len >= sizeof buf || isalpha((unsigned char)*s) || *s == '_') {
+    if (isalpha((unsigned char)*s) || *s == '_') {
         fail(ps, "invalid number");
         return -1;
     }
-    memcpy(buf, ps->p, len);
-    buf[len] = 0;
-    ps->num = strtod(buf, NULL);
+    /* a plain decimal ends at s, so strtod reads exactly it */
+    errno = 0;
+    ps->num = strtod(ps->p, NULL);
+    if (errno == ERANGE) {
+        fail(ps, fabs(ps->num) > 1.0 ? "number out of range"
+                                     : "number too small (write 0 for zero)");
+        return -1;
+    }
     ps->kind = T_NUM;
     ps->p = s;
     return 0;
