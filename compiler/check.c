@@ -166,6 +166,15 @@ static int scene_setting(Model *m, const Setting *s)
     return -1;
 }
 
+/* Where the scene sets KEY (its value), or NULL when it keeps the default. */
+static const SrcLoc *setting_loc(const Item *scene, const char *key)
+{
+    for (int i = 0; i < scene->scene.n; i++)
+        if (!strcmp(scene->scene.items[i].key, key))
+            return &scene->scene.items[i].values[0]->loc;
+    return NULL;
+}
+
 static int check_scene(Model *m, const Item *scene)
 {
     int bad = 0;
@@ -180,8 +189,27 @@ static int check_scene(Model *m, const Item *scene)
     }
     if (!(m->t_out > 0))
         m->t_out = m->t_end / 100.0;
+    /* The program reaches its output times by adding the interval, which stalls where it is
+     * below the spacing of doubles near t (runtime/run.c, too_many_outputs). */
+    if (m->t_end / m->t_out > 1e9) {
+        const SrcLoc *at = setting_loc(scene, "output");
+        diag_error(at ? *at : scene->loc, "the output interval %g s gives %.3g outputs up "
+                   "to the end time %g s, more than 10^9", m->t_out, m->t_end / m->t_out,
+                   m->t_end);
+        return -1;
+    }
     if (m->cfl > 1.0)
         diag_warning(scene->loc, "cfl %g is above 1: the run is likely to be unstable", m->cfl);
+    /* The adaptive step is at most cfl h/c0 (eq. 64, 65) and the run stops as unstable below
+     * dtmin h/c0: with cfl < dtmin the very first step would. */
+    if (!(m->dt > 0) && m->cfl < m->dtmin) {
+        const SrcLoc *at = setting_loc(scene, "cfl");
+        at = at ? at : setting_loc(scene, "dtmin");
+        diag_error(at ? *at : scene->loc, "cfl %g is below dtmin %g: every time step (at most "
+                   "cfl h/c0, eq. 64) would be below the floor dtmin h/c0, and the run would "
+                   "stop at its first step", m->cfl, m->dtmin);
+        return -1;
+    }
     return 0;
 }
 

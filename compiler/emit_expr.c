@@ -68,6 +68,17 @@ static void call(FILE *out, const EmitScope *s, const Expr *e)
     fputs(")", out);
 }
 
+/* A number as a C double literal: %.17g writes whole numbers without a point (2, 1e+16 is
+ * 10000000000000000), which C would read as integers, so that 1/2 became the integer
+ * division 0 and 1/0 undefined behaviour instead of infinity. */
+static void number(FILE *out, double v)
+{
+    char buf[40];
+    snprintf(buf, sizeof buf, "%.17g", v);
+    int whole = strspn(buf, "-0123456789") == strlen(buf);
+    fprintf(out, v < 0 ? "(%s%s)" : "%s%s", buf, whole ? ".0" : "");
+}
+
 static const char *c_operator(OpKind op)
 {
     switch (op) {
@@ -81,7 +92,7 @@ void emit_expr(FILE *out, const EmitScope *s, const Expr *e)
 {
     switch (e->kind) {
     case EX_NUM:
-        fprintf(out, e->num < 0 ? "(%.17g)" : "%.17g", e->num);
+        number(out, e->num);
         return;
     case EX_NAME:
         name(out, s, e->name);

@@ -114,6 +114,26 @@ int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len)
     return 0;
 }
 
+int sph_monitor_finite(const sph_sim *s, char *msg, size_t len)
+{
+    for (int ib = 0; ib < s->nbodies; ib++) {
+        const sph_body *b = &s->bodies[ib];
+        for (size_t i = 0; i < (size_t)b->n * b->dim; i++) {
+            const double u = b->u[i], v = b->v[i];
+            if (isfinite(u) && isfinite(v))
+                continue;
+            const int particle = (int)(i / b->dim);
+            const double *X = b->X + (size_t)particle * b->dim;
+            snprintf(msg, len, "body '%s', particle %d (reference position x = %g, %s = %g): %s "
+                               "is not finite (value %g)",
+                     b->desc->name, particle, X[0], b->dim == 2 ? "z" : "y", X[1],
+                     isfinite(u) ? "velocity" : "displacement", isfinite(u) ? v : u);
+            return 1;
+        }
+    }
+    return 0;
+}
+
 int sph_monitor_glance(sph_monitor *mon, const sph_sim *s, const sph_monitor_sums *sums,
                        double *stretch)
 {

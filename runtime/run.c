@@ -355,18 +355,36 @@ static int check_now(run_state *r, int output)
 static void dt_collapse_report(run_state *r, double dt, double floor_dt)
 {
     const sph_sim *s = &r->sim;
-    int body = 0, particle = 0;
-    double worst = -1;
+    int n = snprintf(r->unstable, sizeof r->unstable, "step %ld, t = %.6g s, ", s->step, s->t);
+    /* A speed that is not finite (a velocity condition dividing by zero at a particle) makes
+     * eq. 65 zero: name it, not the time step. */
+    if (n > 0 && (size_t)n < sizeof r->unstable &&
+        sph_monitor_finite(s, r->unstable + n, sizeof r->unstable - (size_t)n))
+        return;
+    int body = 0, particle = 0, fast_body = 0, fast = 0;
+    double worst = -1, v2max = -1, dta = INFINITY, dtv = INFINITY;
     for (int ib = 0; ib < s->nbodies; ib++) {
         const sph_body *b = &s->bodies[ib];
+        double a2b = 0, v2b = 0;
         for (int i = 0; i < b->n; i++) {
-            double a2 = 0;
-            for (int k = 0; k < b->dim; k++)
+            double a2 = 0, v2 = 0;
+            for (int k = 0; k < b->dim; k++) {
                 a2 += b->a[(size_t)i * b->dim + k] * b->a[(size_t)i * b->dim + k];
+                v2 += b->v[(size_t)i * b->dim + k] * b->v[(size_t)i * b->dim + k];
+            }
             if (b->fix[i] == 0 && a2 > worst)
                 worst = a2, body = ib, particle = i;
+            if (v2 > v2max)
+                v2max = v2, fast_body = ib, fast = i;
+            a2b = fmax(a2b, b->fix[i] == 0 ? a2 : 0), v2b = fmax(v2b, v2);
         }
+        dta = fmin(dta, sph_body_dt(INFINITY, b->h, b->c0, 0, a2b));       /* eq. 66 */
+        dtv = fmin(dtv, sph_body_dt(s->dt_factor, b->h, b->c0, v2b, 0));  /* eq. 65 */
     }
+    /* the speed's bound (eq. 65) below the acceleration's (eq. 66): name the fastest particle */
+    const int by_speed = dtv < dta && v2max > 0;
+    if (by_speed)
+        body = fast_body, particle = fast;
     const sph_body *b = &s->bodies[body];
     const double *X = b->X + (size_t)particle * b->dim;
     char crushed[96] = "";
@@ -375,9 +393,10 @@ static void dt_collapse_report(run_state *r, double dt, double floor_dt)
                  s->dt_factor * r->m->dt_lambda_on);
     snprintf(r->unstable, sizeof r->unstable,
              "step %ld, t = %.6g s, body '%s', particle %d (reference position x = %g, %s = %g): "
-             "time step collapsed to %g s, below dtmin = %g s (acceleration %g m/s^2%s)",
+             "time step collapsed to %g s, below dtmin = %g s (%s %g %s%s)",
              s->step, s->t, b->desc->name, particle, X[0], b->dim == 2 ? "z" : "y", X[1], dt,
-             floor_dt, sqrt(fmax(worst, 0)), crushed);
+             floor_dt, by_speed ? "speed" : "acceleration",
+             sqrt(fmax(by_speed ? v2max : worst, 0)), by_speed ? "m/s" : "m/s^2", crushed);
 }
 
 /* Runs until t_end or instability; returns 0, or 1 when the monitor stopped it. */
@@ -435,6 +454,21 @@ static int setup(run_state *r, long *particles, long *pairs)
     return 0;
 }
 
+/* The velocity conditions at t = 0 give the initial state; one that is not finite (an
+ * expression that divides by zero at a particle) must not reach the first output, and no step
+ * could start from it. */
+static int initial_state_bad(run_state *r)
+{
+    char msg[512];
+    if (!sph_monitor_finite(&r->sim, msg, sizeof msg))
+        return 0;
+    fprintf(stderr, "%s: error: the initial state is not finite at %s; the velocity conditions "
+                    "at t = 0 give it (does an expression divide by zero, or take the root or "
+                    "logarithm of a negative number, there?)\n",
+            r->m->name, msg);
+    return 1;
+}
+
 /* After an unstable run under `timestep undeformed`: when bodies were crushed far, say that
  * the default bound, which follows the current spacing, would not be fooled
  * (docs/stability.md). */
@@ -447,6 +481,24 @@ static void stretch_hint(const run_state *r)
                     "time step follows the undeformed spacing (`timestep undeformed`); the "
                     "default, `timestep auto`, bounds it by the current one (docs/stability.md)\n",
             r->m->name, lam);
+}
+
+/* The output and frame times are reached by adding the interval: beyond some 10^9 intervals
+ * to the end (an interval below the spacing of doubles near t, at worst) the run would never
+ * get there, stepping or writing outputs forever.  The model's own end and output interval
+ * are checked when it compiles, so only the options can ask for it. */
+static int too_many_outputs(const run_state *r)
+{
+    static const double most = 1e9;
+    const double n_out = r->t_end / r->t_out, n_frames = r->t_end / r->t_frames;
+    if (n_out <= most && n_frames <= most)
+        return 0;
+    fprintf(stderr, "%s: error: %s interval %g s gives %.3g %s up to the end time %g s, more "
+                    "than 10^9 (see --end, --every and --frames)\n",
+            r->m->name, n_out > most ? "the output" : "the particle files'",
+            n_out > most ? r->t_out : r->t_frames, n_out > most ? n_out : n_frames,
+            n_out > most ? "outputs" : "frames", r->t_end);
+    return 1;
 }
 
 int sph_main(const sph_model *m, int argc, char **argv)
@@ -463,11 +515,15 @@ int sph_main(const sph_model *m, int argc, char **argv)
     r.t_end = r.opt.t_end > 0 ? r.opt.t_end : m->t_end;
     r.t_out = r.opt.t_out > 0 ? r.opt.t_out : m->t_out;
     r.t_frames = r.opt.t_frames > 0 ? r.opt.t_frames : r.t_out;
+    if (too_many_outputs(&r))
+        return SPH_EXIT_OPTIONS;
     double wall0 = sph_wall_time();
     long particles = 0, pairs = 0;
-    if (setup(&r, &particles, &pairs) || open_outputs(&r))
+    if (setup(&r, &particles, &pairs))
         return SPH_EXIT_SETUP;
     sync_host(&r);
+    if (initial_state_bad(&r) || open_outputs(&r))
+        return SPH_EXIT_SETUP;
     r.setup_seconds = sph_wall_time() - wall0;
     if (write_output(&r))
         return SPH_EXIT_SETUP;
