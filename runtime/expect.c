@@ -88,6 +88,22 @@ static void reference_error(const sph_series *s, int q, double (*ref)(double), d
 
 static const char *const KIND[] = {"period", "amplitude", "energy", "reference"};
 
+/* Why an expectation has no error (it is NaN), for its line: what the run did not record. */
+static const char *no_error_reason(const sph_expect_desc *x)
+{
+    switch (x->kind) {
+    case SPH_EXPECT_PERIOD:
+        return "no period: the quantity crossed its mid-line fewer than twice in the outputs "
+               "(run longer, or output more often)";
+    case SPH_EXPECT_ENERGY:
+        return "no energy drift: the initial energy is zero";
+    case SPH_EXPECT_REFERENCE:
+        return "no error: the reference has no finite value at any output time";
+    default:
+        return "no error: the quantity is not finite";
+    }
+}
+
 int sph_expect_evaluate(const sph_model *m, const sph_record *r, sph_json *j, int quiet,
                         char *errors, size_t len)
 {
@@ -131,12 +147,17 @@ int sph_expect_evaluate(const sph_model *m, const sph_record *r, sph_json *j, in
         sph_json_bool(j, "pass", pass);
         sph_json_end_object(j);
         if (errors && used < len)
-            used += (size_t)snprintf(errors + used, len - used, "%s%s %.3g %%", used ? ", " : "",
-                                     KIND[x->kind], 100.0 * error);
-        if (!quiet || !pass)
-            fprintf(pass ? stdout : stderr, "%s: relative error %.3g %%%s%s\n", x->text,
-                    100.0 * error, x->tolerance >= 0 ? (pass ? " (ok)" : " (FAILED)") : "",
-                    x->kind == SPH_EXPECT_PERIOD || x->kind == SPH_EXPECT_AMPLITUDE ? "" : "");
+            used += (size_t)(isfinite(error)
+                                 ? snprintf(errors + used, len - used, "%s%s %.3g %%",
+                                            used ? ", " : "", KIND[x->kind], 100.0 * error)
+                                 : snprintf(errors + used, len - used, "%s%s none",
+                                            used ? ", " : "", KIND[x->kind]));
+        if ((!quiet || !pass) && !isfinite(error))
+            fprintf(pass ? stdout : stderr, "%s: %s%s\n", x->text, no_error_reason(x),
+                    x->tolerance >= 0 ? " (FAILED)" : "");
+        else if (!quiet || !pass)
+            fprintf(pass ? stdout : stderr, "%s: relative error %.3g %%%s\n", x->text,
+                    100.0 * error, x->tolerance >= 0 ? (pass ? " (ok)" : " (FAILED)") : "");
     }
     sph_json_end_array(j);
     return failed;
