@@ -128,6 +128,14 @@ void ast_push_setting(SettingList *l, Setting s)
     l->items[l->n++] = s;
 }
 
+const Setting *ast_find_setting(const SettingList *l, const char *key)
+{
+    for (int i = 0; i < l->n; i++)
+        if (!strcmp(l->items[i].key, key))
+            return &l->items[i];
+    return NULL;
+}
+
 void ast_push_matstmt(MatStmtList *l, MatStmt s)
 {
     l->items = ast_grow(l->items, (size_t)l->n, sizeof *l->items);

@@ -232,6 +232,8 @@ Expr *ast_skip(SrcLoc loc);
 /* Append helpers for the growable arrays (ast.c). */
 void ast_push_expr(Expr ***arr, int *n, Expr *e);
 void ast_push_setting(SettingList *l, Setting s);
+/* The first setting of l named key, or NULL. */
+const Setting *ast_find_setting(const SettingList *l, const char *key);
 void ast_push_matstmt(MatStmtList *l, MatStmt s);
 void ast_push_bodyitem(BodyDecl *b, BodyItem it);
 void ast_push_item(Program *p, Item it);

@@ -169,10 +169,8 @@ static int scene_setting(Model *m, const Setting *s)
 /* Where the scene sets KEY (its value), or NULL when it keeps the default. */
 static const SrcLoc *setting_loc(const Item *scene, const char *key)
 {
-    for (int i = 0; i < scene->scene.n; i++)
-        if (!strcmp(scene->scene.items[i].key, key))
-            return &scene->scene.items[i].values[0]->loc;
-    return NULL;
+    const Setting *s = ast_find_setting(&scene->scene, key);
+    return s ? &s->values[0]->loc : NULL;
 }
 
 static int check_scene(Model *m, const Item *scene)

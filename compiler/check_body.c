@@ -16,10 +16,7 @@
 
 static const Setting *find_arg(const NamedCall *c, const char *key)
 {
-    for (int i = 0; i < c->args.n; i++)
-        if (strcmp(c->args.items[i].key, key) == 0)
-            return &c->args.items[i];
-    return NULL;
+    return ast_find_setting(&c->args, key);
 }
 
 /* Every argument must be one of `allowed`, given once, with one value: a string for

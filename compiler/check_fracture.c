@@ -19,10 +19,7 @@
 
 static const Setting *find(const NamedCall *c, const char *key)
 {
-    for (int i = 0; i < c->args.n; i++)
-        if (!strcmp(c->args.items[i].key, key))
-            return &c->args.items[i];
-    return NULL;
+    return ast_find_setting(&c->args, key);
 }
 
 static int arg_names(const NamedCall *c)

@@ -1,6 +1,7 @@
 /* contact_law.h — the contact force of one particle pair (the law is described at the top of
- * runtime/contact.c).  One source for both targets: runtime/contact.c calls it on the CPU and
- * runtime/sph_cuda_contact.h on the device (SPH_HD: __host__ __device__ under nvcc). */
+ * runtime/contact.c), and the search's cell of a coordinate.  One source for both targets:
+ * runtime/contact.c and contact_search.c call them on the CPU and runtime/sph_cuda_contact.h on
+ * the device (SPH_HD: __host__ __device__ under nvcc). */
 #ifndef SPHRT_CONTACT_LAW_H
 #define SPHRT_CONTACT_LAW_H
 
@@ -17,6 +18,15 @@ typedef struct {
     double mstar;  /* reduced mass of a particle pair */
     double w2ref;  /* omega^2 at an overlap of 0.1 dc */
 } sph_pair_law;
+
+/* The cell coordinate of x on a grid of cells `cell` wide.  A coordinate that is not finite
+ * or beyond 2^62 cells (a run going unstable, which the monitor stops at its next check) goes
+ * to the last cell on its side instead of a conversion that C leaves undefined. */
+SPH_HD static inline long long sph_contact_cell_of(double x, double cell)
+{
+    const double q = floor(x / cell), lim = 0x1p62;
+    return q < lim ? (q > -lim ? (long long)q : -(long long)lim) : (long long)lim;
+}
 
 /* F_e ~ delta^hertz: 3/2 in 3D (Hertz), 1 in 2D (linear). */
 SPH_HD static inline double sph_contact_hertz(int dim) { return dim == 3 ? 1.5 : 1.0; }

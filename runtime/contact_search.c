@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "contact_law.h"
 #include "contact_search.h"
 
 typedef struct {
@@ -26,15 +27,6 @@ static uint64_t hash3(const int64_t c[3])
     return h ^ (h >> 29);
 }
 
-/* The cell coordinate of x.  A position that is not finite or beyond 2^62 cells (a run going
- * unstable, which the monitor stops at its next check) goes to the last cell on its side
- * instead of a conversion that C leaves undefined. */
-static int64_t cell_of(double x, double cell)
-{
-    const double q = floor(x / cell), lim = 0x1p62;
-    return q < lim ? (q > -lim ? (int64_t)q : -(int64_t)lim) : (int64_t)lim;
-}
-
 static void grid_build(grid *g, const double *x, int n, int dim)
 {
     size_t buckets = 1;
@@ -48,7 +40,7 @@ static void grid_build(grid *g, const double *x, int n, int dim)
         int64_t *c = g->key + (size_t)i * 3;
         c[1] = c[2] = 0;
         for (int k = 0; k < dim; k++)
-            c[k] = cell_of(x[(size_t)i * dim + k], g->cell);
+            c[k] = sph_contact_cell_of(x[(size_t)i * dim + k], g->cell);
         g->head[(hash3(c) & g->mask) + 1]++;
     }
     for (size_t b = 0; b < buckets; b++)

@@ -35,8 +35,8 @@ typedef struct {
     double e_ref;     /* largest total energy seen (for runaway detection) */
 } sph_monitor;
 int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len);
-/* 0 when every displacement and velocity is finite, otherwise 1 with msg naming the body,
- * the particle and what is not finite (the initial state, a collapsed time step). */
+/* 0 when every displacement, velocity and acceleration is finite, otherwise 1 with msg as
+ * sph_monitor_check's (step, time, body, particle, what; the initial state, a collapsed step). */
 int sph_monitor_finite(const sph_sim *s, char *msg, size_t len);
 /* The same checks from a device target's per-body sums (sph_model.monitor): 0 when they show
  * a sane state (*stretch then gets the smallest principal stretch), 1 when the state must be

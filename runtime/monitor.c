@@ -19,24 +19,33 @@ typedef struct {
     double value;
 } finding;
 
+/* Whether particle i's displacement, velocity or acceleration is not finite (f says which). */
+static int not_finite(const sph_body *b, int i, finding *f)
+{
+    for (int k = 0; k < b->dim; k++) {
+        const size_t e = (size_t)i * b->dim + k;
+        const double u = b->u[e], v = b->v[e], a = b->a[e];
+        if (!isfinite(u) || !isfinite(v) || !isfinite(a)) {
+            *f = (finding){i, !isfinite(u) ? "displacement is not finite"
+                              : !isfinite(v) ? "velocity is not finite"
+                                             : "acceleration is not finite",
+                           !isfinite(u) ? u : !isfinite(v) ? v : a};
+            return 1;
+        }
+    }
+    return 0;
+}
+
 static int scan_body(const sph_body *b, finding *f)
 {
     const int D = b->dim;
     const double vlim2 = 100.0 * b->c0 * b->c0;
     for (int i = 0; i < b->n; i++) {
+        if (not_finite(b, i, f))
+            return 1;
         double v2 = 0;
-        for (int k = 0; k < D; k++) {
-            const double u = b->u[(size_t)i * D + k], v = b->v[(size_t)i * D + k];
-            const double a = b->a[(size_t)i * D + k];
-            if (!isfinite(u) || !isfinite(v) || !isfinite(a)) {
-                *f = (finding){i, !isfinite(u) ? "displacement is not finite"
-                                  : !isfinite(v) ? "velocity is not finite"
-                                                 : "acceleration is not finite",
-                               !isfinite(u) ? u : !isfinite(v) ? v : a};
-                return 1;
-            }
-            v2 += v * v;
-        }
+        for (int k = 0; k < D; k++)
+            v2 += b->v[(size_t)i * D + k] * b->v[(size_t)i * D + k];
         const double J = sph_det3(b->F + (size_t)i * 9);
         if (!(J > 0)) {
             *f = (finding){i, "det F <= 0 (particle inverted)", J};
@@ -76,6 +85,14 @@ static int where(char *msg, size_t len, const sph_sim *s, const sph_body *b, int
                     s->step, s->t, b->desc->name, particle, X[0], b->dim == 2 ? "z" : "y", X[1]);
 }
 
+/* A finding as msg: where, what, and its value. */
+static void report(char *msg, size_t len, const sph_sim *s, const sph_body *b, const finding *f)
+{
+    const int n = where(msg, len, s, b, f->particle);
+    if (n >= 0 && (size_t)n < len)
+        snprintf(msg + n, len - (size_t)n, ": %s (value %g)", f->what, f->value);
+}
+
 int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len)
 {
     double e_total = 0, e_most = -1;
@@ -84,9 +101,7 @@ int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len)
         const sph_body *b = &s->bodies[ib];
         finding f;
         if (scan_body(b, &f)) {
-            int n = where(msg, len, s, b, f.particle);
-            if (n >= 0 && (size_t)n < len)
-                snprintf(msg + n, len - (size_t)n, ": %s (value %g)", f.what, f.value);
+            report(msg, len, s, b, &f);
             return 1;
         }
         double es, ek;
@@ -116,21 +131,14 @@ int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len)
 
 int sph_monitor_finite(const sph_sim *s, char *msg, size_t len)
 {
-    for (int ib = 0; ib < s->nbodies; ib++) {
-        const sph_body *b = &s->bodies[ib];
-        for (size_t i = 0; i < (size_t)b->n * b->dim; i++) {
-            const double u = b->u[i], v = b->v[i];
-            if (isfinite(u) && isfinite(v))
-                continue;
-            const int particle = (int)(i / b->dim);
-            const double *X = b->X + (size_t)particle * b->dim;
-            snprintf(msg, len, "body '%s', particle %d (reference position x = %g, %s = %g): %s "
-                               "is not finite (value %g)",
-                     b->desc->name, particle, X[0], b->dim == 2 ? "z" : "y", X[1],
-                     isfinite(u) ? "velocity" : "displacement", isfinite(u) ? v : u);
-            return 1;
+    for (int ib = 0; ib < s->nbodies; ib++)
+        for (int i = 0; i < s->bodies[ib].n; i++) {
+            finding f;
+            if (not_finite(&s->bodies[ib], i, &f)) {
+                report(msg, len, s, &s->bodies[ib], &f);
+                return 1;
+            }
         }
-    }
     return 0;
 }
 

@@ -364,36 +364,30 @@ static int check_now(run_state *r, int output)
 static void dt_collapse_report(run_state *r, double dt, double floor_dt)
 {
     const sph_sim *s = &r->sim;
-    int n = snprintf(r->unstable, sizeof r->unstable, "step %ld, t = %.6g s, ", s->step, s->t);
-    /* A speed that is not finite (a velocity condition dividing by zero at a particle) makes
-     * eq. 65 zero: name it, not the time step. */
-    if (n > 0 && (size_t)n < sizeof r->unstable &&
-        sph_monitor_finite(s, r->unstable + n, sizeof r->unstable - (size_t)n))
+    /* a state that is not finite (a velocity condition dividing by zero at a particle) makes
+     * eq. 65 or 66 zero: name it, not the time step */
+    if (sph_monitor_finite(s, r->unstable, sizeof r->unstable))
         return;
-    int body = 0, particle = 0, fast_body = 0, fast = 0;
-    double worst = -1, v2max = -1, dta = INFINITY, dtv = INFINITY;
+    /* the particle whose own bound is the smallest, by its speed (eq. 65) or its
+     * acceleration (eq. 66, free particles) */
+    int body = 0, particle = 0, by_speed = 0;
+    double lowest = INFINITY, value = 0;
     for (int ib = 0; ib < s->nbodies; ib++) {
         const sph_body *b = &s->bodies[ib];
-        double a2b = 0, v2b = 0;
         for (int i = 0; i < b->n; i++) {
             double a2 = 0, v2 = 0;
             for (int k = 0; k < b->dim; k++) {
                 a2 += b->a[(size_t)i * b->dim + k] * b->a[(size_t)i * b->dim + k];
                 v2 += b->v[(size_t)i * b->dim + k] * b->v[(size_t)i * b->dim + k];
             }
-            if (b->fix[i] == 0 && a2 > worst)
-                worst = a2, body = ib, particle = i;
-            if (v2 > v2max)
-                v2max = v2, fast_body = ib, fast = i;
-            a2b = fmax(a2b, b->fix[i] == 0 ? a2 : 0), v2b = fmax(v2b, v2);
+            a2 = b->fix[i] == 0 ? a2 : 0;
+            const double dtv = sph_body_dt(s->dt_factor, b->h, b->c0, v2, 0);
+            const double dta = sph_body_dt(INFINITY, b->h, b->c0, 0, a2);
+            if (fmin(dtv, dta) < lowest)
+                lowest = fmin(dtv, dta), body = ib, particle = i, by_speed = dtv < dta,
+                value = sqrt(dtv < dta ? v2 : a2);
         }
-        dta = fmin(dta, sph_body_dt(INFINITY, b->h, b->c0, 0, a2b));       /* eq. 66 */
-        dtv = fmin(dtv, sph_body_dt(s->dt_factor, b->h, b->c0, v2b, 0));  /* eq. 65 */
     }
-    /* the speed's bound (eq. 65) below the acceleration's (eq. 66): name the fastest particle */
-    const int by_speed = dtv < dta && v2max > 0;
-    if (by_speed)
-        body = fast_body, particle = fast;
     const sph_body *b = &s->bodies[body];
     const double *X = b->X + (size_t)particle * b->dim;
     char crushed[96] = "";
@@ -404,8 +398,8 @@ static void dt_collapse_report(run_state *r, double dt, double floor_dt)
              "step %ld, t = %.6g s, body '%s', particle %d (reference position x = %g, %s = %g): "
              "time step collapsed to %g s, below dtmin = %g s (%s %g %s%s)",
              s->step, s->t, b->desc->name, particle, X[0], b->dim == 2 ? "z" : "y", X[1], dt,
-             floor_dt, by_speed ? "speed" : "acceleration",
-             sqrt(fmax(by_speed ? v2max : worst, 0)), by_speed ? "m/s" : "m/s^2", crushed);
+             floor_dt, by_speed ? "speed" : "acceleration", value, by_speed ? "m/s" : "m/s^2",
+             crushed);
 }
 
 /* Runs until t_end or instability; returns 0, or 1 when the monitor stopped it. */
@@ -471,7 +465,7 @@ static int initial_state_bad(run_state *r)
     char msg[512];
     if (!sph_monitor_finite(&r->sim, msg, sizeof msg))
         return 0;
-    fprintf(stderr, "%s: error: the initial state is not finite at %s; the velocity conditions "
+    fprintf(stderr, "%s: error: the initial state is not finite: %s; the velocity conditions "
                     "at t = 0 give it (does an expression divide by zero, or take the root or "
                     "logarithm of a negative number, there?)\n",
             r->m->name, msg);

@@ -49,17 +49,12 @@ typedef struct {
     double w2ref;         /* the largest reference omega^2 of two bodies' law (contact.c) */
 } sph_cuda_contact;
 
-/* The cell of position x (D components; the third is 0 in 2D).  A position that is not
- * finite or beyond 2^62 cells (a run going unstable) goes to the last cell on its side, as in
- * contact_search.c. */
+/* The cell of position x (D components; the third is 0 in 2D). */
 SPH_HD static inline void sph_contact_cell(const double *x, int D, double cell, long long c[3])
 {
-    const double lim = 0x1p62;
     c[1] = c[2] = 0;
-    for (int k = 0; k < D; k++) {
-        const double q = floor(x[k] / cell);
-        c[k] = q < lim ? (q > -lim ? (long long)q : -(long long)lim) : (long long)lim;
-    }
+    for (int k = 0; k < D; k++)
+        c[k] = sph_contact_cell_of(x[k], cell);
 }
 
 SPH_HD static inline unsigned sph_contact_bucket(const long long c[3], unsigned mask)
