@@ -86,8 +86,8 @@ static int options(XmlCtx *x, const xmlNode *n, int mk, BcDecl *opt)
                    xml_name(n), v);
         return -1;
     }
-    if (r)
-        opt->near = xml_mk_shape(x, (int)v, loc);
+    if (r && !(opt->near = xml_mk_shape(x, (int)v, loc)))
+        return -1;
     if (xml_is(n, "bcforce")) {
         static const ForceKind kinds[] = {FORCE_POINT, FORCE_SURFACE, FORCE_ACCEL};
         if ((r = xml_integer(x, n, "type", 0, 1, 3, &v)) < 0) {

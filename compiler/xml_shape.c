@@ -18,6 +18,7 @@
  * (docs/xml.md): a lattice with a cell corner on the axis across it and a layer on the first
  * end point along it, filled within dp / sqrt(2) of the cylinder. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "diag.h"
@@ -109,19 +110,44 @@ static int takes_over(const XmlCtx *x, int i, int mk)
     return 0;
 }
 
+/* The union of shapes p[0..n-1] as a balanced tree (union is associative), so that an mk
+ * of thousands of drawings nests some log2 levels, not thousands; for n <= 3 it is the
+ * left-to-right union ((p0 + p1) + p2). */
+static ShapeExpr *union_of(SrcLoc loc, ShapeExpr **p, int n)
+{
+    if (n == 1)
+        return p[0];
+    const int left = (n + 1) / 2;
+    return ast_shape_op(loc, '+', union_of(loc, p, left), union_of(loc, p + left, n - left));
+}
+
 /* mk's drawings in order, less the overlapping later drawings of other mks; `own` (may be
- * NULL) replaces mk's own drawing number `which` (-1: none). */
+ * NULL) replaces mk's own drawing number `which` (-1: none).  A run of drawings of one kind
+ * (mk's own, or others' taking nodes over) is joined first: ((a + b) - c) - d is
+ * (a + b) - (c + d). */
 static ShapeExpr *combine(const XmlCtx *x, int mk, SrcLoc loc, int which, ShapeExpr *own)
 {
-    ShapeExpr *s = NULL;
-    for (int i = 0; i < x->ndraws; i++) {
-        const XmlDraw *d = &x->draws[i];
-        if (d->mk == mk) {
-            ShapeExpr *p = i == which ? own : draw_shape(x, d);
-            s = s ? ast_shape_op(loc, '+', s, p) : p;
-        } else if (s && takes_over(x, i, mk)) {
-            s = ast_shape_op(loc, '-', s, draw_shape(x, d));
+    ShapeExpr *s = NULL, **run = calloc((size_t)x->ndraws + 1, sizeof *run);
+    int nrun = 0, adding = 1;
+    for (int i = 0; i <= x->ndraws; i++) {
+        const XmlDraw *d = i < x->ndraws ? &x->draws[i] : NULL;
+        const int mine = d && d->mk == mk, other = d && !mine && takes_over(x, i, mk);
+        if (nrun && (!d || (mine && !adding) || (other && adding))) {
+            ShapeExpr *u = union_of(loc, run, nrun);
+            s = !s ? u : ast_shape_op(loc, adding ? '+' : '-', s, u);
+            nrun = 0;
         }
+        if (mine || other) {
+            adding = mine;
+            run[nrun++] = !mine ? draw_shape(x, d) : i == which ? own : draw_shape(x, d);
+        }
+    }
+    free(run);
+    if (s && s->depth > AST_MAX_DEPTH) { /* thousands of alternations: walks would overflow */
+        diag_error(loc, "the drawings of mk %d and the later drawings of other mks that take "
+                        "nodes over from them alternate more than %d times",
+                   mk, AST_MAX_DEPTH / 2);
+        return NULL;
     }
     return s;
 }
