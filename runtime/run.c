@@ -360,7 +360,14 @@ static int check_now(run_state *r, int output)
     return 0;
 }
 
-/* The particle whose acceleration (eq. 66) or speed (eq. 65) limits the time step. */
+/* |x| of a D-vector without overflow in its square (a runaway state). */
+static double magnitude(const double *x, int D)
+{
+    return D == 3 ? hypot(hypot(x[0], x[1]), x[2]) : hypot(x[0], x[1]);
+}
+
+/* The particle whose acceleration (eq. 66) or speed (eq. 65) limits the time step, or the
+ * stiffest contact. */
 static void dt_collapse_report(run_state *r, double dt, double floor_dt)
 {
     const sph_sim *s = &r->sim;
@@ -375,18 +382,23 @@ static void dt_collapse_report(run_state *r, double dt, double floor_dt)
     for (int ib = 0; ib < s->nbodies; ib++) {
         const sph_body *b = &s->bodies[ib];
         for (int i = 0; i < b->n; i++) {
-            double a2 = 0, v2 = 0;
-            for (int k = 0; k < b->dim; k++) {
-                a2 += b->a[(size_t)i * b->dim + k] * b->a[(size_t)i * b->dim + k];
-                v2 += b->v[(size_t)i * b->dim + k] * b->v[(size_t)i * b->dim + k];
-            }
-            a2 = b->fix[i] == 0 ? a2 : 0;
-            const double dtv = sph_body_dt(s->dt_factor, b->h, b->c0, v2, 0);
-            const double dta = sph_body_dt(INFINITY, b->h, b->c0, 0, a2);
-            if (fmin(dtv, dta) < lowest)
-                lowest = fmin(dtv, dta), body = ib, particle = i, by_speed = dtv < dta,
-                value = sqrt(dtv < dta ? v2 : a2);
+            const double vn = magnitude(b->v + (size_t)i * b->dim, b->dim);
+            const double an = b->fix[i] == 0 ? magnitude(b->a + (size_t)i * b->dim, b->dim) : 0;
+            const double dtv = sph_body_dt(s->dt_factor, b->h, b->c0, vn * vn, 0);
+            const double dta = sph_body_dt(INFINITY, b->h, b->c0, 0, an * an);
+            const double own = fmin(dtv, dta), what = dtv < dta ? vn : an;
+            if (own < lowest || (own == lowest && what > value)) /* (ties at 0: the largest) */
+                lowest = own, body = ib, particle = i, by_speed = dtv < dta, value = what;
         }
+    }
+    const double contact = sph_contact_dt(s);
+    if (contact < lowest) { /* the stiffest contact between bodies set it */
+        snprintf(r->unstable, sizeof r->unstable,
+                 "step %ld, t = %.6g s: time step collapsed to %g s, below dtmin = %g s (the "
+                 "stiffest contact between bodies bounds it: 1/omega = %g s; is the scene's "
+                 "`contact` stiffness too high?)",
+                 s->step, s->t, dt, floor_dt, contact);
+        return;
     }
     const sph_body *b = &s->bodies[body];
     const double *X = b->X + (size_t)particle * b->dim;
@@ -394,12 +406,17 @@ static void dt_collapse_report(run_state *r, double dt, double floor_dt)
     if (s->dt_factor < 1) /* the bound followed a compression: factor lambda / lambda_on */
         snprintf(crushed, sizeof crushed, "; compressed to a principal stretch of %.3g",
                  s->dt_factor * r->m->dt_lambda_on);
+    char what[256];
+    if (r->m->dt_fixed > 0) /* a bound of 0: |v|^2 or |a|^2 beyond the largest double */
+        snprintf(what, sizeof what, "runaway under the fixed time step %g s", r->m->dt_fixed);
+    else
+        snprintf(what, sizeof what, "time step collapsed to %g s, below dtmin = %g s", dt,
+                 floor_dt);
     snprintf(r->unstable, sizeof r->unstable,
              "step %ld, t = %.6g s, body '%s', particle %d (reference position x = %g, %s = %g): "
-             "time step collapsed to %g s, below dtmin = %g s (%s %g %s%s)",
-             s->step, s->t, b->desc->name, particle, X[0], b->dim == 2 ? "z" : "y", X[1], dt,
-             floor_dt, by_speed ? "speed" : "acceleration", value, by_speed ? "m/s" : "m/s^2",
-             crushed);
+             "%s (%s %g %s%s)",
+             s->step, s->t, b->desc->name, particle, X[0], b->dim == 2 ? "z" : "y", X[1], what,
+             by_speed ? "speed" : "acceleration", value, by_speed ? "m/s" : "m/s^2", crushed);
 }
 
 /* Runs until t_end or instability; returns 0, or 1 when the monitor stopped it. */

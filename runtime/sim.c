@@ -69,8 +69,6 @@ double sph_sim_stretch(const sph_sim *s)
 double sph_sim_stable_dt(sph_sim *s)
 {
     const sph_model *m = s->m;
-    if (m->dt_fixed > 0)
-        return m->dt_fixed;
     double dt = INFINITY;
     s->dt_factor = 1.0;
     for (int i = 0; i < s->nbodies; i++) {
@@ -80,7 +78,7 @@ double sph_sim_stable_dt(sph_sim *s)
         dt = fmin(dt, sph_body_dt(f, b->h, b->c0, b->vmax2, b->amax2));
     }
     dt = fmin(dt, sph_contact_dt(s)); /* the stiffest contact */
-    return m->cfl * dt; /* eq. 64 */
+    return sph_chosen_dt(m->dt_fixed, m->cfl, dt);
 }
 
 void sph_sim_step(sph_sim *s, double dt)

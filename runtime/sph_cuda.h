@@ -163,7 +163,51 @@ struct sph_max3 {
 #ifndef SPH_CUDA_BLOCK
 #define SPH_CUDA_BLOCK 256
 #endif
+static_assert(SPH_CUDA_BLOCK % 32 == 0 && SPH_CUDA_BLOCK >= 32 && SPH_CUDA_BLOCK <= 1024,
+              "SPH_CUDA_BLOCK: the reductions take whole warps, and a block holds 1024 threads");
 static inline int sph_blocks(int n) { return (n + SPH_CUDA_BLOCK - 1) / SPH_CUDA_BLOCK; }
+
+/* Whether the host waits for every kernel and checks it (-1: not decided yet).  A batch of
+ * steps is queued without waiting, and the host reads the bodies' views (managed memory) for
+ * each launch while earlier kernels run, which needs a GPU with concurrent managed access
+ * (Linux on Pascal and later).  Without it (some virtual machines, WSL) the host must wait
+ * for each kernel before it reads; and with SPH_CUDA_SYNC=1 in the environment it does so
+ * too, so that a kernel that fails is named by its pass. */
+static int sph_cuda_sync_each = -1;
+
+static int sph_cuda_sync_mode(void)
+{
+    if (sph_cuda_sync_each >= 0)
+        return sph_cuda_sync_each;
+    int concurrent = 1;
+#ifndef SPH_CUDA_EMULATE
+    int dev;
+    SPH_CUDA_CHECK(cudaGetDevice(&dev));
+    SPH_CUDA_CHECK(cudaDeviceGetAttribute(&concurrent, cudaDevAttrConcurrentManagedAccess, dev));
+#endif
+    const char *env = getenv("SPH_CUDA_SYNC");
+    sph_cuda_sync_each = !concurrent || (env && *env && strcmp(env, "0") != 0);
+    if (!concurrent)
+        fprintf(stderr, "sph cuda: note: this GPU has no concurrent managed access (the host "
+                        "may not read managed memory while a kernel runs): the host waits for "
+                        "every pass, which is slower\n");
+    return sph_cuda_sync_each;
+}
+
+/* After a launch (or an asynchronous call) of `pass`: in the waiting mode, wait for it and
+ * stop with its name if it failed. */
+static void sph_cuda_launched(const char *pass)
+{
+    if (sph_cuda_sync_each <= 0)
+        return;
+    cudaError_t err = cudaDeviceSynchronize();
+    if (err == cudaSuccess)
+        err = cudaGetLastError();
+    if (err != cudaSuccess) {
+        fprintf(stderr, "sph cuda: %s failed: %s\n", pass, cudaGetErrorString(err));
+        exit(5);
+    }
+}
 
 #ifndef SPH_CUDA_EMULATE
 template <class F> __global__ void sph_for_kernel(int n, F f)
@@ -174,16 +218,20 @@ template <class F> __global__ void sph_for_kernel(int n, F f)
         f(i);
 }
 
-template <class F> static void sph_for(int n, F f)
+template <class F> static void sph_for(int n, const char *pass, F f)
 {
-    if (n > 0)
-        sph_for_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, f);
+    if (n <= 0)
+        return;
+    sph_for_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, f);
+    sph_cuda_launched(pass);
 }
 
-/* *a = max(*a, v) for v >= 0: non-negative doubles order like their bit patterns. */
+/* *a = max(*a, v) for *a >= 0: positive doubles order like their bit patterns (v = -0, which
+ * has the largest pattern, and 0 leave *a as it is). */
 __device__ static inline void sph_atomic_max_pos(double *a, double v)
 {
-    atomicMax((unsigned long long *)a, (unsigned long long)__double_as_longlong(v));
+    if (v > 0)
+        atomicMax((unsigned long long *)a, (unsigned long long)__double_as_longlong(v));
 }
 
 /* The maxima of a warp's values, in every lane. */
@@ -205,8 +253,10 @@ template <class F> __global__ void sph_for_max3_kernel(int n, double *out, F f)
         return;
     sph_max3 m = {0, 0, 0};
     for (int i = blockIdx.x * blockDim.x + threadIdx.x; i < n; i += blockDim.x * gridDim.x) {
-        const sph_max3 r = f(i);
-        m.x = fmax(m.x, r.x), m.y = fmax(m.y, r.y), m.z = fmax(m.z, r.z);
+        const sph_max3 r = f(i); /* not a number: infinite (sph_max_bound, sphrt.h) */
+        m.x = sph_max_bound(m.x, r.x);
+        m.y = sph_max_bound(m.y, r.y);
+        m.z = sph_max_bound(m.z, r.z);
     }
     __shared__ sph_max3 warp[32];
     const int lane = threadIdx.x & 31, w = threadIdx.x >> 5;
@@ -225,10 +275,12 @@ template <class F> __global__ void sph_for_max3_kernel(int n, double *out, F f)
     }
 }
 
-template <class F> static void sph_for_max3(int n, double *out, F f)
+template <class F> static void sph_for_max3(int n, double *out, const char *pass, F f)
 {
-    if (n > 0)
-        sph_for_max3_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, out, f);
+    if (n <= 0)
+        return;
+    sph_for_max3_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, out, f);
+    sph_cuda_launched(pass);
 }
 
 /* The sum of a warp's values, in every lane. */
@@ -261,44 +313,50 @@ template <class F> __global__ void sph_for_sum_kernel(int n, double *out, F f)
         atomicAdd(out, x);
 }
 
-template <class F> static void sph_for_sum(int n, double *out, F f)
+template <class F> static void sph_for_sum(int n, double *out, const char *pass, F f)
 {
-    if (n > 0)
-        sph_for_sum_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, out, f);
+    if (n <= 0)
+        return;
+    sph_for_sum_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, out, f);
+    sph_cuda_launched(pass);
 }
 #else
-template <class F> static void sph_for(int n, F f)
+template <class F> static void sph_for(int n, const char *pass, F f)
 {
     for (int i = 0; i < n && !sph_clock.skip; i++)
         f(i);
+    sph_cuda_launched(pass);
 }
 
 static inline void sph_atomic_max_pos(double *a, double v) { *a = v > *a ? v : *a; }
 
-template <class F> static void sph_for_sum(int n, double *out, F f)
+template <class F> static void sph_for_sum(int n, double *out, const char *pass, F f)
 {
     for (int i = 0; i < n && !sph_clock.skip; i++)
         *out += f(i);
+    sph_cuda_launched(pass);
 }
 
-template <class F> static void sph_for_max3(int n, double *out, F f)
+template <class F> static void sph_for_max3(int n, double *out, const char *pass, F f)
 {
     for (int i = 0; i < n && !sph_clock.skip; i++) {
         const sph_max3 r = f(i);
-        out[0] = r.x > out[0] ? r.x : out[0];
-        out[1] = r.y > out[1] ? r.y : out[1];
-        out[2] = r.z > out[2] ? r.z : out[2];
+        out[0] = sph_max_bound(out[0], r.x);
+        out[1] = sph_max_bound(out[1], r.y);
+        out[2] = sph_max_bound(out[2], r.z);
     }
+    sph_cuda_launched(pass);
 }
 #endif
 
-#define SPH_FOR(i, n, ...) sph_for((n), [=] __device__(int i) __VA_ARGS__)
+/* (__func__: the pass that launches, for sph_cuda_launched) */
+#define SPH_FOR(i, n, ...) sph_for((n), __func__, [=] __device__(int i) __VA_ARGS__)
 #define SPH_FOR_MAX3(i, n, out, ...) \
-    sph_for_max3((n), (out), [=] __device__(int i) -> sph_max3 __VA_ARGS__)
+    sph_for_max3((n), (out), __func__, [=] __device__(int i) -> sph_max3 __VA_ARGS__)
 #define SPH_FOR_SUM(i, n, out, ...) \
-    sph_for_sum((n), (out), [=] __device__(int i) -> double __VA_ARGS__)
+    sph_for_sum((n), (out), __func__, [=] __device__(int i) -> double __VA_ARGS__)
 /* One thread: the body's scalars (reductions reset, sums advanced) in stream order. */
-#define SPH_ONCE(...) sph_for(1, [=] __device__(int) __VA_ARGS__)
+#define SPH_ONCE(...) sph_for(1, __func__, [=] __device__(int) __VA_ARGS__)
 
 /* `bytes` bytes of device memory (uninitialised). */
 static inline void *sph_dev_alloc(size_t bytes)
@@ -415,6 +473,7 @@ static void sph_full_lists(const sph_body *h, int **count, int **nb, int **k, in
 static sph_body *sph_cuda_body(const sph_body *h)
 {
     const size_t n = (size_t)h->n, d = (size_t)h->dim, nt = (size_t)h->ntab;
+    sph_cuda_sync_mode(); /* decided before the first pass */
     sph_body *b;
     SPH_CUDA_CHECK(cudaMallocManaged(&b, sizeof *b));
     *b = *h;
@@ -451,6 +510,8 @@ static sph_body *sph_cuda_body(const sph_body *h)
                                   h->visc_dissipated};
     b->red = (double *)sph_dev_copy(red, sizeof red);
     const int nbcs = h->desc->nbcs;
+    b->desc = NULL; /* host memory: the device view must not lead there (the host keeps h) */
+    b->bc_list = NULL, b->bc_count = NULL;
     if (nbcs) { /* the particles of each `near` BC: a managed table of device lists */
         SPH_CUDA_CHECK(cudaMallocManaged(&b->bc_list, nbcs * sizeof(int *)));
         SPH_CUDA_CHECK(cudaMallocManaged(&b->bc_count, nbcs * sizeof(int)));
@@ -509,21 +570,18 @@ __device__ static inline void sph_clock_choose_on(sph_cuda_clock *c)
         c->skip = 1;
         return;
     }
-    double dt = c->dt_fixed;
-    if (!(dt > 0)) {
-        dt = INFINITY;
-        c->dt_factor = 1.0;
-        for (int i = 0; i < c->nbodies; i++) {
-            const sph_body *b = c->bodies[i];
-            const double *red = b->red;
-            const double f = sph_stretch_factor(c->lambda_on, b->lam2 != NULL, sph_red_lam2min(red));
-            c->dt_factor = fmin(c->dt_factor, f);
-            dt = fmin(dt, sph_body_dt(f, b->h, b->c0, red[SPH_RED_VMAX2], red[SPH_RED_AMAX2]));
-        }
-        if (c->contact_w2) /* the stiffest contact */
-            dt = fmin(dt, 1.0 / sqrt(fmax(*c->contact_w2, c->contact_w2ref)));
-        dt *= c->cfl; /* eq. 64 */
+    double dt = INFINITY;
+    c->dt_factor = 1.0;
+    for (int i = 0; i < c->nbodies; i++) {
+        const sph_body *b = c->bodies[i];
+        const double *red = b->red;
+        const double f = sph_stretch_factor(c->lambda_on, b->lam2 != NULL, sph_red_lam2min(red));
+        c->dt_factor = fmin(c->dt_factor, f);
+        dt = fmin(dt, sph_body_dt(f, b->h, b->c0, red[SPH_RED_VMAX2], red[SPH_RED_AMAX2]));
     }
+    if (c->contact_w2) /* the stiffest contact */
+        dt = fmin(dt, 1.0 / sqrt(fmax(*c->contact_w2, c->contact_w2ref)));
+    dt = sph_chosen_dt(c->dt_fixed, c->cfl, dt);
     const double floor_now = sph_dt_floor_now(c->floor_dt, c->dt_factor);
     if (!(dt >= floor_now)) {
         c->collapsed = 1, c->dt_bad = dt, c->floor_bad = floor_now, c->skip = 1;
@@ -544,9 +602,21 @@ __device__ static inline void sph_clock_tick_on(sph_cuda_clock *c)
 __global__ void sph_clock_choose_kernel() { sph_clock_choose_on(&sph_clock); }
 __global__ void sph_clock_tick_kernel() { sph_clock_tick_on(&sph_clock); }
 __global__ void sph_clock_resume_kernel() { sph_clock.skip = 0; }
-static void sph_cuda_clock_choose() { sph_clock_choose_kernel<<<1, 1>>>(); }
-static void sph_cuda_clock_tick() { sph_clock_tick_kernel<<<1, 1>>>(); }
-static void sph_cuda_clock_resume() { sph_clock_resume_kernel<<<1, 1>>>(); }
+static void sph_cuda_clock_choose()
+{
+    sph_clock_choose_kernel<<<1, 1>>>();
+    sph_cuda_launched("the clock's choice of the time step");
+}
+static void sph_cuda_clock_tick()
+{
+    sph_clock_tick_kernel<<<1, 1>>>();
+    sph_cuda_launched("the clock's tick");
+}
+static void sph_cuda_clock_resume()
+{
+    sph_clock_resume_kernel<<<1, 1>>>();
+    sph_cuda_launched("the clock's resumption");
+}
 #else
 static void sph_cuda_clock_choose() { sph_clock_choose_on(&sph_clock); }
 static void sph_cuda_clock_tick() { sph_clock_tick_on(&sph_clock); }

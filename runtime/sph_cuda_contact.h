@@ -134,6 +134,7 @@ static void sph_cuda_contact_sort(sph_cuda_contact *c)
 #ifndef SPH_CUDA_EMULATE
     SPH_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(c->tmp, c->tmp_bytes, key, skey, c->idx, order,
                                                    n, 0, c->bits));
+    sph_cuda_launched("the contact search's sort");
 #else
     for (int g = 0; g < n; g++)
         order[g] = g;
@@ -142,6 +143,7 @@ static void sph_cuda_contact_sort(sph_cuda_contact *c)
         skey[g] = key[order[g]];
 #endif
     SPH_CUDA_CHECK(cudaMemset(bstart, 0, 2 * ((size_t)mask + 1) * sizeof(int))); /* and bend */
+    sph_cuda_launched("the contact search's buckets");
     SPH_FOR(p, n, {
         const unsigned k = skey[p];
         if (p == 0 || skey[p - 1] != k)

@@ -181,7 +181,8 @@ static void @B@_update(sph_body *b, sph_time dt)
             a2 += ak * ak;
         }
 //@if CRUSH
-        return sph_max3{v2, a2, 1.0 / b->lam2[i]}; /* the compression bound (runtime/sim.c) */
+        /* the compression bound (runtime/sim.c): 1 / lambda^2, infinite at lambda = 0 */
+        return sph_max3{v2, a2, 1.0 / sph_bound_stretch2(b->lam2[i])};
 //@endif
 //@if NO_CRUSH
         return sph_max3{v2, a2, 0.0};

@@ -78,7 +78,8 @@ static void @B@_update(sph_body *b, double dt)
     for (int i = 0; i < b->n; i++) {
         double v2 = 0, a2 = 0;
 //@if CRUSH
-        lam2min = b->lam2[i] < lam2min ? b->lam2[i] : lam2min;
+        const double l2 = sph_bound_stretch2(b->lam2[i]);
+        lam2min = l2 < lam2min ? l2 : lam2min;
 //@endif
 //@if FRACTURE
         sd[i] = @B@_phase_rate(sdn[i], sdd[i], H[i], dt);
@@ -91,8 +92,8 @@ static void @B@_update(sph_body *b, double dt)
             v2 += v[i * D + k] * v[i * D + k];
             a2 += ak * ak;
         }
-        vmax2 = v2 > vmax2 ? v2 : vmax2;
-        amax2 = a2 > amax2 ? a2 : amax2;
+        vmax2 = sph_max_bound(vmax2, v2); /* not a number: infinite */
+        amax2 = sph_max_bound(amax2, a2);
     }
     b->vmax2 = vmax2;
     b->amax2 = amax2;

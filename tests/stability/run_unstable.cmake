@@ -1,7 +1,8 @@
 # A run that goes unstable must be stopped by the stability monitor:
 #   -DPROGRAM= -DOUT=        the generated program and its output folder
 #   -DARGS=a,b               more options for the program (comma-separated)
-#   -DBODY=                  the body the message must name
+#   -DBODY=                  the body the message must name (none: a finding of the scene,
+#                            the stiffest contact, names step and time only)
 #   -DQUANTITY=              a regular expression the finding (after "...):") must match
 #   -DMAX_STEP=              the step it must have been stopped at, at the latest
 #   -DMIN_FRAMES=            frames (t = 0 included) that must have been written before
@@ -42,14 +43,21 @@ endif()
 
 # step, time, body, particle, quantity
 set(num "[-+0-9.eE]+")
-if(NOT err MATCHES "error: the run went unstable at (step ([0-9]+), t = (${num}) s, body '([A-Za-z0-9_]+)', particle ([0-9]+) \\(reference position x = ${num}, [yz] = ${num}\\): ([^\n]*))\n")
+if(BODY STREQUAL "none")
+  if(NOT err MATCHES "error: the run went unstable at (step ([0-9]+), t = (${num}) s: ([^\n]*))\n")
+    fail("the error message does not name step, time and quantity")
+  endif()
+  set(body none)
+  set(finding "${CMAKE_MATCH_4}")
+elseif(NOT err MATCHES "error: the run went unstable at (step ([0-9]+), t = (${num}) s, body '([A-Za-z0-9_]+)', particle ([0-9]+) \\(reference position x = ${num}, [yz] = ${num}\\): ([^\n]*))\n")
   fail("the error message does not name step, time, body, particle and quantity")
+else()
+  set(body ${CMAKE_MATCH_4})
+  set(finding "${CMAKE_MATCH_6}")
 endif()
 set(message "${CMAKE_MATCH_1}")
 set(step ${CMAKE_MATCH_2})
 set(time ${CMAKE_MATCH_3})
-set(body ${CMAKE_MATCH_4})
-set(finding "${CMAKE_MATCH_6}")
 if(NOT body STREQUAL BODY)
   fail("the message names body '${body}', expected '${BODY}'")
 endif()
@@ -77,7 +85,14 @@ if(NOT_FINITE AND NOT summary MATCHES "\"max_velocity\": null")
   fail("summary.json gives a finite largest speed for a state that is not finite")
 endif()
 
-# the last good output: the pvd lists frames that all exist, at least MIN_FRAMES of them
+# the last good output: the pvd lists frames that all exist, at least MIN_FRAMES of them (of
+# the body named, or of the first body for a finding of the scene)
+if(BODY STREQUAL "none")
+  file(GLOB pvds ${OUT}/particles/*.pvd)
+  list(SORT pvds)
+  list(GET pvds 0 first)
+  get_filename_component(BODY "${first}" NAME_WE)
+endif()
 file(READ ${OUT}/particles/${BODY}.pvd pvd)
 string(REGEX MATCHALL "file=\"[^\"]+\"" frames "${pvd}")
 list(LENGTH frames nframes)
