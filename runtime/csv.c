@@ -9,7 +9,7 @@
 
 static int write_error(const char *what, int err)
 {
-    fprintf(stderr, "sph: error: cannot write %s: %s\n", what, strerror(err ? err : EIO));
+    sph_error("cannot write %s: %s", what, strerror(err ? err : EIO));
     return -1;
 }
 

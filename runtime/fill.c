@@ -129,16 +129,16 @@ int sph_fill_region(const sph_region *r, int dim, double dx, double y_plane, dou
     *X = NULL;
     const int ok = lattice_init(&L, r, dim, dx, y_plane, &total);
     if (ok < 0) {
-        fprintf(stderr, "sph: error: at spacing dx = %g the region's bounding box holds some "
-                        "%.3g lattice points, more than %.0e: raise dp or lower refine\n",
-                dx, total, MAX_LATTICE_POINTS);
+        sph_error("at spacing dx = %g the region's bounding box holds some "
+                  "%.3g lattice points, more than %.0e: raise dp or lower refine",
+                  dx, total, MAX_LATTICE_POINTS);
         return -1;
     }
     if (!ok)
         return 0;
     long *first = malloc((size_t)(L.ntiles + 1) * sizeof *first);
     if (!first) {
-        fprintf(stderr, "sph: error: out of memory for %ld lattice tiles\n", L.ntiles);
+        sph_error("out of memory for %ld lattice tiles", L.ntiles);
         return -1;
     }
     first[0] = 0;
@@ -153,7 +153,7 @@ int sph_fill_region(const sph_region *r, int dim, double dx, double y_plane, dou
         for (long t = 0; t < L.ntiles; t++)
             tile_fill(&L, r, t, *X + first[t] * dim);
     } else if (n > 0) {
-        fprintf(stderr, "sph: error: cannot allocate %ld particles\n", n);
+        sph_error("cannot allocate %ld particles", n);
         n = -1;
     }
     free(first);

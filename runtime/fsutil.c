@@ -27,8 +27,8 @@ int sph_mkdirs(const char *path)
     size_t len = strlen(path);
     char *dir = len ? malloc(len + 1) : NULL;
     if (!dir) {
-        fprintf(stderr, "sph: error: cannot create %s: %s\n", path,
-                strerror(len ? ENOMEM : ENOENT));
+        sph_error("cannot create %s: %s", path,
+                  strerror(len ? ENOMEM : ENOENT));
         return -1;
     }
     memcpy(dir, path, len + 1);
@@ -44,7 +44,7 @@ int sph_mkdirs(const char *path)
         *p = c;
     }
     if (rc != 0)
-        fprintf(stderr, "sph: error: cannot create %s: %s\n", dir, strerror(errno));
+        sph_error("cannot create %s: %s", dir, strerror(errno));
     free(dir);
     return rc;
 }

@@ -71,7 +71,7 @@ void sph_gradients(const double *X, int n, int dim, const int *start, const int 
     *w = malloc(npairs * dim * sizeof **w + 1);
     *L = malloc((size_t)(n > 0 ? n : 0) * dim * dim * sizeof **L + 1);
     if (!*w || !*L) {
-        fprintf(stderr, "sph: error: out of memory for kernel gradients (%zu pairs)\n", npairs);
+        sph_error("out of memory for kernel gradients (%zu pairs)", npairs);
         exit(SPH_EXIT_SETUP);
     }
 #pragma omp parallel for schedule(dynamic, 256)

@@ -40,11 +40,11 @@ const sph_mesh *sph_mesh_get(const char *file)
         if (!m) {
             char err[1024];
             if (n == MAX_MESHES) {
-                fprintf(stderr, "sph: error: more than %d surface files\n", MAX_MESHES);
+                sph_error("more than %d surface files", MAX_MESHES);
                 exit(SPH_EXIT_SETUP);
             }
             if (sph_mesh_load(file, &table[n].mesh, err, sizeof err)) {
-                fprintf(stderr, "sph: error: %s\n", err);
+                sph_error("%s", err);
                 exit(SPH_EXIT_SETUP);
             }
             sph_mesh_index(&table[n].mesh);

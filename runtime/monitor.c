@@ -90,7 +90,8 @@ static void report(char *msg, size_t len, const sph_sim *s, const sph_body *b, c
 {
     const int n = where(msg, len, s, b, f->particle);
     if (n >= 0 && (size_t)n < len)
-        snprintf(msg + n, len - (size_t)n, ": %s (value %g)", f->what, f->value);
+        snprintf(msg + n, len - (size_t)n, ": %s (value %g)", f->what,
+                 isnan(f->value) ? fabs(f->value) : f->value); /* "nan", not "-nan" */
 }
 
 int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len)

@@ -47,7 +47,7 @@ static void *xmalloc(size_t size)
 {
     void *p = malloc(size ? size : 1);
     if (!p) {
-        fprintf(stderr, "sph: error: out of memory in the neighbour search (%zu bytes)\n", size);
+        sph_error("out of memory in the neighbour search (%zu bytes)", size);
         exit(SPH_EXIT_SETUP);
     }
     return p;
@@ -236,7 +236,7 @@ static void build_csr(const search *s, int **start, int **nb)
         maxc = st[i + 1] > maxc ? st[i + 1] : maxc;
         total += st[i + 1];
         if (total > 0x7fffffffL) {
-            fprintf(stderr, "sph: error: too many neighbour pairs (> 2^31)\n");
+            sph_error("too many neighbour pairs (> 2^31)");
             exit(SPH_EXIT_SETUP);
         }
         st[i + 1] = (int)total;

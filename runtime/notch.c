@@ -68,7 +68,7 @@ static void *xmalloc(size_t size)
 {
     void *p = malloc(size ? size : 1);
     if (!p) {
-        fprintf(stderr, "sph: error: out of memory cutting notch pairs (%zu bytes)\n", size);
+        sph_error("out of memory cutting notch pairs (%zu bytes)", size);
         exit(SPH_EXIT_SETUP);
     }
     return p;

@@ -526,6 +526,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
     run_state r;
     memset(&r, 0, sizeof r);
     r.m = m;
+    sph_message_program(m->name);
     r.stretch_seen = 1.0;
     int rc = sph_parse_options(&r.opt, m->name, argc, argv);
     if (rc)

@@ -20,7 +20,7 @@ static void *zalloc(size_t n, size_t size)
 {
     void *p = calloc(n ? n : 1, size);
     if (!p) {
-        fprintf(stderr, "sph: error: out of memory\n");
+        sph_error("out of memory");
         exit(SPH_EXIT_SETUP);
     }
     return p;
@@ -342,8 +342,8 @@ static void selections(sph_body *b, const sph_body_desc *d, double t_end)
         b->ms_count[k] = sph_select_plane(b->X, b->n, b->dim, b->dx, d->measures[k].p,
                                           &b->ms_list[k]);
         if (b->ms_count[k] == 0)
-            fprintf(stderr, "sph: warning: measurement '%s' of body '%s' selects no particle\n",
-                    d->measures[k].name, d->name);
+            sph_warning("measurement '%s' of body '%s' selects no particle",
+                        d->measures[k].name, d->name);
     }
 }
 
@@ -404,16 +404,16 @@ static int check_size(const sph_body *b)
     const char *what;
     const double bytes = n * (32.0 * per + 1024.0), mem = memory_limit(&what);
     if (n * per > 1.25 * 0x7fffffffL) {
-        fprintf(stderr, "sph: error: body '%s' would have some %.3g neighbour pairs (%d particles "
-                        "with about %.0f neighbours each), more than 2^31: raise dp or lower "
-                        "refine or coefh\n", b->desc->name, n * per, b->n, per);
+        sph_error("body '%s' would have some %.3g neighbour pairs (%d particles "
+                  "with about %.0f neighbours each), more than 2^31: raise dp or lower "
+                  "refine or coefh", b->desc->name, n * per, b->n, per);
         return -1;
     }
     if (mem > 0 && bytes > mem) {
-        fprintf(stderr, "sph: error: body '%s' would need some %.3g GB of memory (%d particles "
-                        "with about %.0f neighbours each), more than %s %.3g GB: raise dp or "
-                        "lower refine or coefh\n", b->desc->name, bytes / 1e9, b->n, per, what,
-                mem / 1e9);
+        sph_error("body '%s' would need some %.3g GB of memory (%d particles "
+                  "with about %.0f neighbours each), more than %s %.3g GB: raise dp or "
+                  "lower refine or coefh", b->desc->name, bytes / 1e9, b->n, per, what,
+                  mem / 1e9);
         return -1;
     }
     return 0;
@@ -433,13 +433,13 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
     b->y_plane = d->y_plane;
     b->n = sph_fill_region(&d->region, m->dim, b->dx, d->y_plane, &b->X);
     if (b->n < 0) {
-        fprintf(stderr, "sph: error: body '%s' cannot be filled with particles of spacing %g\n",
-                d->name, b->dx);
+        sph_error("body '%s' cannot be filled with particles of spacing %g",
+                  d->name, b->dx);
         return -1;
     }
     if (b->n == 0) {
-        fprintf(stderr, "sph: error: body '%s' has no particles (its shape is smaller than the "
-                        "particle spacing %g)\n", d->name, b->dx);
+        sph_error("body '%s' has no particles (its shape is smaller than the "
+                  "particle spacing %g)", d->name, b->dx);
         return -1;
     }
     if (check_size(b))

@@ -23,6 +23,7 @@ static void initial_speeds(sph_sim *s)
 
 int sph_sim_init(sph_sim *s, const sph_model *m, int verbose)
 {
+    sph_message_program(m->name);
     s->m = m;
     s->t = s->dt = 0;
     s->step = 0;

@@ -81,7 +81,7 @@ static inline void atomicAdd(double *a, double v) { *a += v; }
     do {                                                                                       \
         cudaError_t err_ = (call);                                                             \
         if (err_ != cudaSuccess) {                                                             \
-            fprintf(stderr, "sph cuda: %s failed: %s\n", #call, cudaGetErrorString(err_));   \
+            sph_error("CUDA: %s failed: %s", #call, cudaGetErrorString(err_));                 \
             exit(5);                                                                           \
         }                                                                                      \
     } while (0)
@@ -188,9 +188,8 @@ static int sph_cuda_sync_mode(void)
     const char *env = getenv("SPH_CUDA_SYNC");
     sph_cuda_sync_each = !concurrent || (env && *env && strcmp(env, "0") != 0);
     if (!concurrent)
-        fprintf(stderr, "sph cuda: note: this GPU has no concurrent managed access (the host "
-                        "may not read managed memory while a kernel runs): the host waits for "
-                        "every pass, which is slower\n");
+        sph_note("this GPU has no concurrent managed access (the host may not read managed "
+                 "memory while a kernel runs): the host waits for every pass, which is slower");
     return sph_cuda_sync_each;
 }
 
@@ -204,7 +203,7 @@ static void sph_cuda_launched(const char *pass)
     if (err == cudaSuccess)
         err = cudaGetLastError();
     if (err != cudaSuccess) {
-        fprintf(stderr, "sph cuda: %s failed: %s\n", pass, cudaGetErrorString(err));
+        sph_error("CUDA: %s failed: %s", pass, cudaGetErrorString(err));
         exit(5);
     }
 }

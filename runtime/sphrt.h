@@ -392,6 +392,18 @@ struct sph_sim {
 /* Entry point of a generated program. */
 int sph_main(const sph_model *m, int argc, char **argv);
 
+/* The runtime's messages on stderr, "NAME: error: ..." (a line each), NAME the program's
+ * model once sph_main or sph_sim_init has set it (message.c). */
+void sph_message_program(const char *name);
+#if defined(__GNUC__)
+#define SPH_PRINTF __attribute__((format(printf, 1, 2)))
+#else
+#define SPH_PRINTF
+#endif
+void sph_error(const char *fmt, ...) SPH_PRINTF;
+void sph_warning(const char *fmt, ...) SPH_PRINTF;
+void sph_note(const char *fmt, ...) SPH_PRINTF;
+
 /* The simulation without the program around it (used by sph_main and by tests):
  * build every body and apply the velocity boundary conditions at t = 0 (initial
  * conditions); the stable time step of eq. 64-66 (or the fixed one); one step. */

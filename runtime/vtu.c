@@ -46,7 +46,7 @@ static const array_info ARRAYS[A_COUNT] = {
 
 static int write_error(const char *path, int err)
 {
-    fprintf(stderr, "sph: error: cannot write %s: %s\n", path, strerror(err));
+    sph_error("cannot write %s: %s", path, strerror(err));
     return -1;
 }
 
