@@ -29,6 +29,18 @@ static void *ast_grow(void *arr, size_t n, size_t elem)
     return p;
 }
 
+void *ast_room(void *arr, size_t count, size_t elem)
+{
+    if (arr && count > 0 && (count & (count - 1)) != 0)
+        return arr; /* room left from the last doubling */
+    void *p = realloc(arr, (count ? 2 * count : 1) * elem);
+    if (!p) {
+        diag_fatal_noloc("out of memory");
+        exit(1);
+    }
+    return p;
+}
+
 char *ast_strdup(const char *s)
 {
     if (!s)

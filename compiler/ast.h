@@ -229,6 +229,12 @@ Expr *ast_call(SrcLoc loc, const char *name, Expr **args, int nargs);
 Expr *ast_vec(SrcLoc loc, Expr **args, int nargs);
 Expr *ast_skip(SrcLoc loc);
 
+/* arr, a list of count elements that grows one element at a time, with room for one more:
+ * the room doubles when count reaches a power of two, so that n appends copy O(n) elements;
+ * exits when memory runs out.  (The append helpers below instead keep arrays of exactly n
+ * elements, which may come from elsewhere.) */
+void *ast_room(void *arr, size_t count, size_t elem);
+
 /* Append helpers for the growable arrays (ast.c). */
 void ast_push_expr(Expr ***arr, int *n, Expr *e);
 void ast_push_setting(SettingList *l, Setting s);

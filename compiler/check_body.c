@@ -170,9 +170,7 @@ static int check_prim(const Model *m, const NamedCall *c, ShapePrim *p)
 
 static void push_prim(Region *r, ShapePrim p)
 {
-    if ((r->n & (r->n - 1)) == 0) /* n a power of two (or 0): double the room, so that a shape
-                                    * of 50 000 drawings is not copied 50 000 times */
-        r->prims = realloc(r->prims, (size_t)(r->n ? 2 * r->n : 1) * sizeof *r->prims);
+    r->prims = ast_room(r->prims, (size_t)r->n, sizeof *r->prims); /* 50 000 drawings, say */
     r->prims[r->n++] = p;
 }
 

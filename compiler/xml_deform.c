@@ -425,7 +425,7 @@ static int body(XmlCtx *x, const xmlNode *n)
             bad |= xml_measureplane(x, k, c.mk, (int)c.refine, &it.body) != 0;
         else if (is_bc_or_measure(k))
             bad |= xml_bc(x, k, c.mk, &it.body) != 0;
-    x->bodies = xml_grow(x->bodies, x->nbodies + 1, sizeof *x->bodies);
+    x->bodies = ast_room(x->bodies, (size_t)x->nbodies, sizeof *x->bodies);
     x->bodies[x->nbodies++] = it;
     return bad ? -1 : 0;
 }

@@ -53,7 +53,7 @@ static int notch(const XmlCtx *x, const xmlNode *n, XmlFracture *f)
     }
     if (bad)
         return -1;
-    f->notches = xml_grow(f->notches, f->nnotches + 1, sizeof *f->notches);
+    f->notches = ast_room(f->notches, (size_t)f->nnotches, sizeof *f->notches);
     f->notches[f->nnotches++] = it;
     return 0;
 }

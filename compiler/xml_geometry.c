@@ -97,8 +97,8 @@ static void set_var(XmlCtx *x, const char *name, double v)
             x->var_values[i] = v;
             return;
         }
-    x->var_names = xml_grow(x->var_names, x->nvars + 1, sizeof *x->var_names);
-    x->var_values = xml_grow(x->var_values, x->nvars + 1, sizeof *x->var_values);
+    x->var_names = ast_room(x->var_names, (size_t)x->nvars, sizeof *x->var_names);
+    x->var_values = ast_room(x->var_values, (size_t)x->nvars, sizeof *x->var_values);
     x->var_names[x->nvars] = ast_strdup(name);
     x->var_values[x->nvars++] = v;
 }
@@ -157,7 +157,7 @@ static int outside(const char *tag, int a, SrcLoc loc)
 
 static int add_draw(XmlCtx *x, const XmlDraw *d)
 {
-    x->draws = xml_grow(x->draws, x->ndraws + 1, sizeof *x->draws);
+    x->draws = ast_room(x->draws, (size_t)x->ndraws, sizeof *x->draws);
     x->draws[x->ndraws++] = *d;
     return 0;
 }

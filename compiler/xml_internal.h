@@ -116,9 +116,6 @@ int xml_card_bool(const XmlCtx *x, const xmlNode *n, int *out);
 /* x, y and z of a point element such as <point x=".." y=".." z=".."/> (all required). */
 int xml_point(const XmlCtx *x, const xmlNode *n, double out[3]);
 
-/* p with room for n elements of size bytes, for a list that grows one element at a time
- * (n = its count + 1; the room doubles at powers of two); exits when memory runs out. */
-void *xml_grow(void *p, int n, size_t size);
 /* A double as the shortest decimal within tol of it (geometry computed from the lattice,
  * so that -1.5e-3 - 0.5e-3 reads -0.002 again). */
 double xml_snap(double v, double tol);

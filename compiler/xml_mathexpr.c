@@ -62,9 +62,9 @@ typedef struct {
 
 static void push_local(Locals *l, const char *name, const char *let, double v)
 {
-    l->names = xml_grow(l->names, l->n + 1, sizeof *l->names);
-    l->lets = xml_grow(l->lets, l->n + 1, sizeof *l->lets);
-    l->values = xml_grow(l->values, l->n + 1, sizeof *l->values);
+    l->names = ast_room(l->names, (size_t)l->n, sizeof *l->names);
+    l->lets = ast_room(l->lets, (size_t)l->n, sizeof *l->lets);
+    l->values = ast_room(l->values, (size_t)l->n, sizeof *l->values);
     l->names[l->n] = ast_strdup(name);
     l->lets[l->n] = ast_strdup(let);
     l->values[l->n++] = v;
@@ -95,7 +95,7 @@ static const char *let_for(XmlCtx *x, long id, const char *name, double v, Expr 
     it.loc = loc;
     it.name = ast_strdup(buf);
     it.value = value->kind == EX_NUM ? value : ast_num(loc, v);
-    x->lets = xml_grow(x->lets, x->nlets + 1, sizeof *x->lets);
+    x->lets = ast_room(x->lets, (size_t)x->nlets, sizeof *x->lets);
     x->lets[x->nlets++] = it;
     return it.name;
 }
@@ -186,7 +186,7 @@ static int user_expression(XmlCtx *x, const xmlNode *n)
     for (int i = 0; i < l.n; i++)
         if (strcmp(l.names[i], l.lets[i]) != 0)
             xml_rename(e, l.names[i], l.lets[i]);
-    x->exprs = xml_grow(x->exprs, x->nexprs + 1, sizeof *x->exprs);
+    x->exprs = ast_room(x->exprs, (size_t)x->nexprs, sizeof *x->exprs);
     x->exprs[x->nexprs++] = (XmlUserExpr){(int)id, e, xml_loc(x, en)};
     return 0;
 }

@@ -127,7 +127,7 @@ static ShapeExpr *union_of(SrcLoc loc, ShapeExpr **p, int n)
  * (a + b) - (c + d). */
 static ShapeExpr *combine(const XmlCtx *x, int mk, SrcLoc loc, int which, ShapeExpr *own)
 {
-    ShapeExpr *s = NULL, **run = calloc((size_t)x->ndraws + 1, sizeof *run);
+    ShapeExpr *s = NULL, **run = ast_alloc(((size_t)x->ndraws + 1) * sizeof *run);
     int nrun = 0, adding = 1;
     for (int i = 0; i <= x->ndraws; i++) {
         const XmlDraw *d = i < x->ndraws ? &x->draws[i] : NULL;

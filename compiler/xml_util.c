@@ -257,21 +257,6 @@ int xml_point(const XmlCtx *x, const xmlNode *n, double out[3])
     return bad ? -1 : 0;
 }
 
-void *xml_grow(void *p, int n, size_t size)
-{
-    /* lists grow one at a time (n = count + 1): the room doubles when the count reaches a
-     * power of two, so that 50 000 drawings are not copied 50 000 times */
-    const int count = n - 1;
-    if (p && count > 0 && (count & (count - 1)) != 0)
-        return p;
-    void *q = realloc(p, (count > 0 ? 2 * (size_t)count : 1) * size);
-    if (!q) {
-        diag_fatal_noloc("out of memory");
-        exit(1);
-    }
-    return q;
-}
-
 double xml_snap(double v, double tol)
 {
     char buf[40];

@@ -468,9 +468,8 @@ static int setup(run_state *r, long *particles, long *pairs)
         *pairs += r->sim.bodies[i].npairs;
     }
     if (m->dt_fixed > 0 && m->dt_fixed > min_h_over_c0(r))
-        fprintf(stderr, "%s: warning: the fixed time step %g s exceeds h/c0 = %g s (CFL 1); the "
-                        "run is likely to be unstable\n",
-                m->name, m->dt_fixed, min_h_over_c0(r));
+        sph_warning("the fixed time step %g s exceeds h/c0 = %g s (CFL 1); the run is likely to "
+                    "be unstable", m->dt_fixed, min_h_over_c0(r));
     return 0;
 }
 
@@ -482,10 +481,9 @@ static int initial_state_bad(run_state *r)
     char msg[512];
     if (!sph_monitor_finite(&r->sim, msg, sizeof msg))
         return 0;
-    fprintf(stderr, "%s: error: the initial state is not finite: %s; the velocity conditions "
-                    "at t = 0 give it (does an expression divide by zero, or take the root or "
-                    "logarithm of a negative number, there?)\n",
-            r->m->name, msg);
+    sph_error("the initial state is not finite: %s; the velocity conditions at t = 0 give it "
+              "(does an expression divide by zero, or take the root or logarithm of a negative "
+              "number, there?)", msg);
     return 1;
 }
 
@@ -497,10 +495,9 @@ static void stretch_hint(const run_state *r)
     const double lam = r->stretch_seen;
     if (r->m->dt_lambda_on > 0 || r->m->dt_fixed > 0 || !(lam < 0.3))
         return;
-    fprintf(stderr, "%s: note: particles were compressed to a principal stretch of %.3g, and the "
-                    "time step follows the undeformed spacing (`timestep undeformed`); the "
-                    "default, `timestep auto`, bounds it by the current one (docs/stability.md)\n",
-            r->m->name, lam);
+    sph_note("particles were compressed to a principal stretch of %.3g, and the time step "
+             "follows the undeformed spacing (`timestep undeformed`); the default, `timestep "
+             "auto`, bounds it by the current one (docs/stability.md)", lam);
 }
 
 /* The output and frame times are reached by adding the interval: beyond some 10^9 intervals
@@ -513,11 +510,10 @@ static int too_many_outputs(const run_state *r)
     const double n_out = r->t_end / r->t_out, n_frames = r->t_end / r->t_frames;
     if (n_out <= most && n_frames <= most)
         return 0;
-    fprintf(stderr, "%s: error: %s interval %g s gives %.3g %s up to the end time %g s, more "
-                    "than 10^9 (see --end, --every and --frames)\n",
-            r->m->name, n_out > most ? "the output" : "the particle files'",
-            n_out > most ? r->t_out : r->t_frames, n_out > most ? n_out : n_frames,
-            n_out > most ? "outputs" : "frames", r->t_end);
+    sph_error("%s interval %g s gives %.3g %s up to the end time %g s, more than 10^9 (see "
+              "--end, --every and --frames)", n_out > most ? "the output" : "the particle files'",
+              n_out > most ? r->t_out : r->t_frames, n_out > most ? n_out : n_frames,
+              n_out > most ? "outputs" : "frames", r->t_end);
     return 1;
 }
 
@@ -564,9 +560,9 @@ int sph_main(const sph_model *m, int argc, char **argv)
     sph_sim_free(&r.sim);
     double ps = (double)particles * (double)r.sim.step;
     if (state == 1) {
-        fprintf(stderr, "%s: error: the run went unstable at %s\n%s: the last good output is in "
-                        "%s/ (t = %g s)\n",
-                m->name, r.unstable, m->name, r.opt.out_dir, r.frame_times[r.nframes - 1]);
+        sph_error("the run went unstable at %s", r.unstable);
+        sph_note("the last good output is in %s/ (t = %g s)", r.opt.out_dir,
+                 r.frame_times[r.nframes - 1]);
         stretch_hint(&r);
         return SPH_EXIT_UNSTABLE;
     }

@@ -82,7 +82,7 @@ static inline void atomicAdd(double *a, double v) { *a += v; }
         cudaError_t err_ = (call);                                                             \
         if (err_ != cudaSuccess) {                                                             \
             sph_error("CUDA: %s failed: %s", #call, cudaGetErrorString(err_));                 \
-            exit(5);                                                                           \
+            exit(SPH_EXIT_CUDA);                                                               \
         }                                                                                      \
     } while (0)
 
@@ -204,7 +204,7 @@ static void sph_cuda_launched(const char *pass)
         err = cudaGetLastError();
     if (err != cudaSuccess) {
         sph_error("CUDA: %s failed: %s", pass, cudaGetErrorString(err));
-        exit(5);
+        exit(SPH_EXIT_CUDA);
     }
 }
 

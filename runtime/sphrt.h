@@ -42,8 +42,11 @@ extern "C" {
 #define SPH_FN SPH_HD static inline
 
 /* The exit codes of a generated program (README): a declared expectation failed, bad
- * options, the run went unstable, set-up or output failed (5: a CUDA call failed). */
-enum { SPH_EXIT_EXPECT = 1, SPH_EXIT_OPTIONS = 2, SPH_EXIT_UNSTABLE = 3, SPH_EXIT_SETUP = 4 };
+ * options, the run went unstable, set-up or output failed, a CUDA call or kernel failed. */
+enum {
+    SPH_EXIT_EXPECT = 1, SPH_EXIT_OPTIONS = 2, SPH_EXIT_UNSTABLE = 3, SPH_EXIT_SETUP = 4,
+    SPH_EXIT_CUDA = 5
+};
 
 /* ------------------------------------------------------------------ geometry */
 
