@@ -390,28 +390,39 @@ void emit_bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
 
 /* ------------------------------------------------------------------ the scene */
 
+/* One pass of body i in the step: on the CPU through SPH_PASS, which times it when the
+ * program runs with --profile (sphrt.h); in CUDA the bare call, the device timing the
+ * kernels itself (sph_cuda.h). */
+static void emit_pass(Emitter *E, int i, const char *pass, const char *args)
+{
+    const char *n = E->m->bodies[i].name;
+    if (E->cuda)
+        fprintf(E->out, "        %s_%s(%s);\n", n, pass, args);
+    else
+        fprintf(E->out, "        SPH_PASS(%s_%s, (%s));\n", n, pass, args);
+}
+
 /* A body's part of the step up to its internal forces (Alg. 1-2)... */
 void emit_step_forces(Emitter *E, int i)
 {
-    const char *n = E->m->bodies[i].name;
     const BodyPlan *p = &E->plans[i];
     if (p->velocity_bcs)
-        fprintf(E->out, "        %s_velocity_bcs(b, t, dt);\n", n);
+        emit_pass(E, i, "velocity_bcs", "b, t, dt");
     if (p->symplectic)
-        fprintf(E->out, "        %s_predict(b, dt);\n", n);
-    fprintf(E->out, "        %s_forces(b);\n", n);
+        emit_pass(E, i, "predict", "b, dt");
+    /* (its stress and momentum passes each through SPH_PASS on the CPU) */
+    fprintf(E->out, "        %s_forces(b);\n", E->m->bodies[i].name);
 }
 
 /* ... and from its force boundary conditions to the end. */
 void emit_step_update(Emitter *E, int i)
 {
-    const char *n = E->m->bodies[i].name;
     const BodyPlan *p = &E->plans[i];
     if (p->force_bcs)
-        fprintf(E->out, "        %s_force_bcs(b, %s, dt);\n", n, p->symplectic ? "t_half" : "t");
-    fprintf(E->out, "        %s_update(b, dt);\n", n);
+        emit_pass(E, i, "force_bcs", p->symplectic ? "b, t_half, dt" : "b, t, dt");
+    emit_pass(E, i, "update", "b, dt");
     if (p->restrict_phase)
-        fprintf(E->out, "        %s_restrict(b, t_next, dt);\n", n);
+        emit_pass(E, i, "restrict", "b, t_next, dt");
 }
 
 void emit_step_bodies(Emitter *E, const char *body, const char *contact)
@@ -455,7 +466,7 @@ static void scene_step(Emitter *E)
                  "static void model_step(sph_sim *s, double dt)\n{\n"
                  "    const double t = s->t, t_half = t + 0.5 * dt, t_next = t + dt;\n",
             sym ? "symplectic predictor-corrector (Alg. 2)" : "Verlet (Alg. 1)");
-    emit_step_bodies(E, "&s->bodies[%d]", "sph_contact_forces(s, dt)");
+    emit_step_bodies(E, "&s->bodies[%d]", "SPH_PASS(sph_contact_forces, (s, dt))");
     fputs("    (void)t, (void)t_half, (void)t_next;\n}\n\n", out);
     fputs("/* Cauchy stress of every particle, for output. */\n"
           "static void model_stress_output(sph_sim *s)\n{\n", out);

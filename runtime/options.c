@@ -1,6 +1,6 @@
 /* options.c — the command line of a generated program.
  *
- *   --out DIR  --threads N  --end T  --every T  --frames T  --quiet  --help | -h
+ *   --out DIR  --threads N  --end T  --every T  --frames T  --quiet  --profile  --help | -h
  *
  * Options with a value also accept the spelling --opt=value. */
 #include "output.h"
@@ -11,7 +11,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-typedef enum { OPT_OUT, OPT_THREADS, OPT_END, OPT_EVERY, OPT_FRAMES, OPT_QUIET, OPT_HELP } opt_id;
+typedef enum {
+    OPT_OUT, OPT_THREADS, OPT_END, OPT_EVERY, OPT_FRAMES, OPT_QUIET, OPT_PROFILE, OPT_HELP
+} opt_id;
 
 typedef struct {
     const char *name;
@@ -22,8 +24,7 @@ typedef struct {
 static const opt_info OPTIONS[] = {
     {"--out", OPT_OUT, 1},     {"--threads", OPT_THREADS, 1}, {"--end", OPT_END, 1},
     {"--every", OPT_EVERY, 1}, {"--frames", OPT_FRAMES, 1},   {"--quiet", OPT_QUIET, 0},
-    {"--help", OPT_HELP, 0},
-    {"-h", OPT_HELP, 0},
+    {"--profile", OPT_PROFILE, 0}, {"--help", OPT_HELP, 0},       {"-h", OPT_HELP, 0},
 };
 #define NOPTIONS (int)(sizeof OPTIONS / sizeof OPTIONS[0])
 
@@ -49,6 +50,8 @@ static void usage(FILE *f, const char *prog, const char *model)
             "  --frames T    interval of the particle files (default: every output; the\n"
             "                energies and measurements are written at every output)\n"
             "  --quiet       no progress line\n"
+            "  --profile     the time each pass of the step takes, printed at the end and\n"
+            "                written to summary.json\n"
             "  -h, --help    show this help and exit\n",
             prog, model, model);
 }
@@ -150,7 +153,7 @@ int sph_parse_options(sph_options *o, const char *model_name, int argc, char **a
     const char *model = model_name && model_name[0] ? model_name : "sph";
     const char *prog = program_name(argc, argv, model);
     *o = (sph_options){.out_dir = NULL, .threads = 0, .t_end = -1, .t_out = -1, .t_frames = -1,
-                       .quiet = 0};
+                       .quiet = 0, .profile = 0};
     for (int i = 1; i < argc; i++) {
         const char *value;
         const opt_info *opt = find_option(argv[i], &value);
@@ -164,7 +167,10 @@ int sph_parse_options(sph_options *o, const char *model_name, int argc, char **a
         if (!opt->has_value) {
             if (value)
                 return fail(prog, model, "option takes no value: ", argv[i]);
-            o->quiet = 1; /* the only flag besides --help */
+            if (opt->id == OPT_QUIET)
+                o->quiet = 1;
+            else
+                o->profile = 1;
             continue;
         }
         const char *next_value;

@@ -66,6 +66,11 @@ void sph_progress_finish(sph_progress *p);
 /* Wall clock in seconds (monotonic). */
 double sph_wall_time(void);
 
+/* The profile (profile.c): the passes' times in summary.json ("profile"), and as a table. */
+void sph_profile_json(sph_json *j);
+void sph_profile_print(FILE *f, const char *model, long steps, double step_seconds,
+                       double check_seconds, double output_seconds);
+
 /* Command-line options of a generated program. */
 typedef struct {
     const char *out_dir;  /* --out DIR (default "<model>_out") */
@@ -74,6 +79,7 @@ typedef struct {
     double t_out;         /* --every T (< 0: model's) */
     double t_frames;      /* --frames T: particle files every T (< 0: every output) */
     int quiet;            /* --quiet */
+    int profile;          /* --profile: the time of each pass of the step */
 } sph_options;
 /* Parses argv; prints usage and returns -1 on a bad option (the caller exits 2);
  * returns 1 after printing --help, 0 otherwise. */

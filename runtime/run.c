@@ -303,6 +303,8 @@ static int write_summary(run_state *r, double wall, long particles, long pairs, 
     sph_json_num(&j, "ns_per_particle_step", ps > 0 ? 1e9 * r->step_seconds / ps : NAN);
     sph_json_num(&j, "pair_interactions_per_second",
                  r->step_seconds > 0 ? (double)pairs * (double)s->step / r->step_seconds : NAN);
+    if (r->opt.profile)
+        sph_profile_json(&j);
     sph_json_key_object(&j, "stability");
     sph_json_str(&j, "verdict", r->unstable[0] ? "unstable" : "stable");
     if (r->unstable[0])
@@ -433,7 +435,9 @@ static int time_loop(run_state *r)
                          .t_stop = fmin(next_out, r->t_end),
                          .eps = eps, .floor_dt = floor_dt};
         double w0 = sph_wall_time();
+        sph_profile_outside = 0; /* (--profile) the passes from here are the steps' */
         sph_sim_advance(s, &a);
+        sph_profile_outside = 1;
         r->step_seconds += sph_wall_time() - w0;
         if (a.collapsed) {
             sync_host(r);
@@ -529,6 +533,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
         return rc < 0 ? SPH_EXIT_OPTIONS : 0;
     if (r.opt.threads > 0)
         omp_set_num_threads(r.opt.threads);
+    sph_profile_on = r.opt.profile;
     r.t_end = r.opt.t_end > 0 ? r.opt.t_end : m->t_end;
     r.t_out = r.opt.t_out > 0 ? r.opt.t_out : m->t_out;
     r.t_frames = r.opt.t_frames > 0 ? r.opt.t_frames : r.t_out;
@@ -558,6 +563,9 @@ int sph_main(const sph_model *m, int argc, char **argv)
     if (m->compat_outputs)
         sph_compat_close(&r.compat);
     sph_sim_free(&r.sim);
+    if (r.opt.profile)
+        sph_profile_print(stdout, m->name, r.sim.step, r.step_seconds, r.check_seconds,
+                          r.output_seconds);
     double ps = (double)particles * (double)r.sim.step;
     if (state == 1) {
         sph_error("the run went unstable at %s", r.unstable);

@@ -193,10 +193,91 @@ static int sph_cuda_sync_mode(void)
     return sph_cuda_sync_each;
 }
 
-/* After a launch (or an asynchronous call) of `pass`: in the waiting mode, wait for it and
- * stop with its name if it failed. */
+/* ---- the profile (--profile): the passes' kernels timed on the device -----------------------
+ * An event follows every launch, and the kernel's time is the time from the event before it:
+ * the passes run one after the other in the default stream.  Where the host has waited (and
+ * the device may have idled), and where the steps begin or end, the chain starts again with
+ * an event just before the next launch.  The host reads the events where it waits anyway (the end of a batch, the sums,
+ * the state; sph_cuda_profile_collect) and adds each kernel's time to the pass that launched
+ * it (runtime/profile.c), in the steps or outside them as it was when it was launched. */
+#ifdef SPH_CUDA_EMULATE /* the host's clock at the event (the kernels have run by then) */
+typedef double *cudaEvent_t;
+static inline cudaError_t cudaEventCreate(cudaEvent_t *e)
+{
+    *e = (double *)calloc(1, sizeof(double));
+    return cudaSuccess;
+}
+static inline cudaError_t cudaEventRecord(cudaEvent_t e)
+{
+    *e = sph_wall_time();
+    return cudaSuccess;
+}
+static inline cudaError_t cudaEventSynchronize(cudaEvent_t) { return cudaSuccess; }
+static inline cudaError_t cudaEventElapsedTime(float *ms, cudaEvent_t a, cudaEvent_t b)
+{
+    *ms = (float)(1e3 * (*b - *a));
+    return cudaSuccess;
+}
+#endif
+
+enum { SPH_PROFILE_EVENTS = 512 }; /* read back when full, or where the host waits */
+static struct {
+    cudaEvent_t ev[SPH_PROFILE_EVENTS];
+    int slot[SPH_PROFILE_EVENTS]; /* the pass whose kernel ends at ev[k] (-1: a start) */
+    int n, made;
+    int outside; /* sph_profile_outside when the chain started */
+} sph_prof;
+
+static void sph_cuda_profile_record(int slot)
+{
+    if (!sph_prof.made) {
+        for (int k = 0; k < SPH_PROFILE_EVENTS; k++)
+            SPH_CUDA_CHECK(cudaEventCreate(&sph_prof.ev[k]));
+        sph_prof.made = 1;
+    }
+    SPH_CUDA_CHECK(cudaEventRecord(sph_prof.ev[sph_prof.n]));
+    sph_prof.slot[sph_prof.n++] = slot;
+}
+
+/* The kernels' times so far into the profile; the next launch starts a new chain. */
+static void sph_cuda_profile_collect(void)
+{
+    if (!sph_profile_on || sph_prof.n == 0)
+        return;
+    SPH_CUDA_CHECK(cudaEventSynchronize(sph_prof.ev[sph_prof.n - 1]));
+    for (int k = 1; k < sph_prof.n; k++) {
+        float ms = 0;
+        if (sph_prof.slot[k] < 0)
+            continue;
+        SPH_CUDA_CHECK(cudaEventElapsedTime(&ms, sph_prof.ev[k - 1], sph_prof.ev[k]));
+        sph_profile_add(sph_prof.slot[k], 1e-3 * (double)ms);
+    }
+    sph_prof.n = 0;
+}
+
+/* Before a launch: the start of a chain, also where the steps begin or end (the host's
+ * work between, an output say, is in neither). */
+static void sph_cuda_launching(void)
+{
+    if (!sph_profile_on)
+        return;
+    if (sph_prof.n && sph_prof.outside != sph_profile_outside)
+        sph_cuda_profile_collect();
+    if (sph_prof.n == 0) {
+        sph_prof.outside = sph_profile_outside;
+        sph_cuda_profile_record(-1);
+    }
+}
+
+/* After a launch (or an asynchronous call) of `pass`: its event when profiling; in the
+ * waiting mode, wait for it and stop with its name if it failed. */
 static void sph_cuda_launched(const char *pass)
 {
+    if (sph_profile_on) {
+        sph_cuda_profile_record(sph_profile_slot(pass));
+        if (sph_prof.n == SPH_PROFILE_EVENTS)
+            sph_cuda_profile_collect();
+    }
     if (sph_cuda_sync_each <= 0)
         return;
     cudaError_t err = cudaDeviceSynchronize();
@@ -221,6 +302,7 @@ template <class F> static void sph_for(int n, const char *pass, F f)
 {
     if (n <= 0)
         return;
+    sph_cuda_launching();
     sph_for_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, f);
     sph_cuda_launched(pass);
 }
@@ -278,6 +360,7 @@ template <class F> static void sph_for_max3(int n, double *out, const char *pass
 {
     if (n <= 0)
         return;
+    sph_cuda_launching();
     sph_for_max3_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, out, f);
     sph_cuda_launched(pass);
 }
@@ -316,12 +399,14 @@ template <class F> static void sph_for_sum(int n, double *out, const char *pass,
 {
     if (n <= 0)
         return;
+    sph_cuda_launching();
     sph_for_sum_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, out, f);
     sph_cuda_launched(pass);
 }
 #else
 template <class F> static void sph_for(int n, const char *pass, F f)
 {
+    sph_cuda_launching();
     for (int i = 0; i < n && !sph_clock.skip; i++)
         f(i);
     sph_cuda_launched(pass);
@@ -331,6 +416,7 @@ static inline void sph_atomic_max_pos(double *a, double v) { *a = v > *a ? v : *
 
 template <class F> static void sph_for_sum(int n, double *out, const char *pass, F f)
 {
+    sph_cuda_launching();
     for (int i = 0; i < n && !sph_clock.skip; i++)
         *out += f(i);
     sph_cuda_launched(pass);
@@ -338,6 +424,7 @@ template <class F> static void sph_for_sum(int n, double *out, const char *pass,
 
 template <class F> static void sph_for_max3(int n, double *out, const char *pass, F f)
 {
+    sph_cuda_launching();
     for (int i = 0; i < n && !sph_clock.skip; i++) {
         const sph_max3 r = f(i);
         out[0] = sph_max_bound(out[0], r.x);
@@ -552,6 +639,7 @@ static void sph_cuda_reductions(sph_body *h, const sph_body *d)
 {
     double red[SPH_NRED];
     SPH_CUDA_CHECK(cudaMemcpy(red, d->red, sizeof red, cudaMemcpyDeviceToHost));
+    sph_cuda_profile_collect(); /* (the host has waited) */
     h->vmax2 = red[SPH_RED_VMAX2], h->amax2 = red[SPH_RED_AMAX2];
     h->lam2min = sph_red_lam2min(red);
     h->visc_rate = red[SPH_RED_VISC_RATE], h->visc_dissipated = red[SPH_RED_VISC_DISSIPATED];
@@ -603,23 +691,41 @@ __global__ void sph_clock_tick_kernel() { sph_clock_tick_on(&sph_clock); }
 __global__ void sph_clock_resume_kernel() { sph_clock.skip = 0; }
 static void sph_cuda_clock_choose()
 {
+    sph_cuda_launching();
     sph_clock_choose_kernel<<<1, 1>>>();
     sph_cuda_launched("the clock's choice of the time step");
 }
 static void sph_cuda_clock_tick()
 {
+    sph_cuda_launching();
     sph_clock_tick_kernel<<<1, 1>>>();
     sph_cuda_launched("the clock's tick");
 }
 static void sph_cuda_clock_resume()
 {
+    sph_cuda_launching();
     sph_clock_resume_kernel<<<1, 1>>>();
     sph_cuda_launched("the clock's resumption");
 }
 #else
-static void sph_cuda_clock_choose() { sph_clock_choose_on(&sph_clock); }
-static void sph_cuda_clock_tick() { sph_clock_tick_on(&sph_clock); }
-static void sph_cuda_clock_resume() { sph_clock.skip = 0; }
+static void sph_cuda_clock_choose()
+{
+    sph_cuda_launching();
+    sph_clock_choose_on(&sph_clock);
+    sph_cuda_launched("the clock's choice of the time step");
+}
+static void sph_cuda_clock_tick()
+{
+    sph_cuda_launching();
+    sph_clock_tick_on(&sph_clock);
+    sph_cuda_launched("the clock's tick");
+}
+static void sph_cuda_clock_resume()
+{
+    sph_cuda_launching();
+    sph_clock.skip = 0;
+    sph_cuda_launched("the clock's resumption");
+}
 #endif
 
 /* The clock at the start of a batch: the host's time, the batch and the scene.  At the first
@@ -660,6 +766,7 @@ static void sph_cuda_clock_finish(sph_sim *s, sph_advance *a)
     SPH_CUDA_CHECK(cudaGetLastError());
     sph_cuda_clock c;
     SPH_CUDA_CHECK(cudaMemcpyFromSymbol(&c, sph_clock, sizeof c));
+    sph_cuda_profile_collect(); /* (the host has waited) */
     s->t = c.t, s->dt = c.dt, s->step = c.step, s->dt_factor = c.dt_factor;
     a->collapsed = c.collapsed, a->dt_bad = c.dt_bad, a->floor_bad = c.floor_bad;
 }
@@ -669,6 +776,7 @@ static int sph_cuda_clock_stopped()
 {
     sph_cuda_clock c;
     SPH_CUDA_CHECK(cudaMemcpyFromSymbol(&c, sph_clock, sizeof c));
+    sph_cuda_profile_collect(); /* (the host has waited) */
     return c.skip;
 }
 
@@ -707,6 +815,7 @@ static void sph_cuda_monitor_sums(const sph_body *d, sph_monitor_sums *out)
 {
     double red[SPH_NRED];
     SPH_CUDA_CHECK(cudaMemcpy(red, d->red, sizeof red, cudaMemcpyDeviceToHost));
+    sph_cuda_profile_collect(); /* (the host has waited) */
     out->bad = red[SPH_RED_BAD] > 0;
     out->energy = red[SPH_RED_ENERGY];
     out->stretch2 = 1.0 - red[SPH_RED_SQUEEZE];
@@ -718,6 +827,7 @@ static void sph_cuda_to_host(sph_body *h, const sph_body *d)
 {
     const size_t n = (size_t)h->n, dim = (size_t)h->dim;
     SPH_CUDA_CHECK(cudaDeviceSynchronize());
+    sph_cuda_profile_collect(); /* (the host has waited) */
     SPH_CUDA_CHECK(cudaMemcpy(h->u, d->u, n * dim * sizeof(double), cudaMemcpyDeviceToHost));
     SPH_CUDA_CHECK(cudaMemcpy(h->v, d->v, n * dim * sizeof(double), cudaMemcpyDeviceToHost));
     SPH_CUDA_CHECK(cudaMemcpy(h->a, d->a, n * dim * sizeof(double), cudaMemcpyDeviceToHost));

@@ -132,16 +132,19 @@ static void sph_cuda_contact_sort(sph_cuda_contact *c)
         key[g] = sph_contact_bucket(cg, mask);
     });
 #ifndef SPH_CUDA_EMULATE
+    sph_cuda_launching();
     SPH_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(c->tmp, c->tmp_bytes, key, skey, c->idx, order,
                                                    n, 0, c->bits));
-    sph_cuda_launched("the contact search's sort");
 #else
+    sph_cuda_launching();
     for (int g = 0; g < n; g++)
         order[g] = g;
     std::stable_sort(order, order + n, [&](int a, int b) { return key[a] < key[b]; });
     for (int g = 0; g < n; g++)
         skey[g] = key[order[g]];
 #endif
+    sph_cuda_launched("the contact search's sort");
+    sph_cuda_launching();
     SPH_CUDA_CHECK(cudaMemset(bstart, 0, 2 * ((size_t)mask + 1) * sizeof(int))); /* and bend */
     sph_cuda_launched("the contact search's buckets");
     SPH_FOR(p, n, {
@@ -240,6 +243,7 @@ static void sph_cuda_contact_to_host(const sph_cuda_contact *c, sph_sim *s)
 {
     double sum[SPH_NCSUM];
     SPH_CUDA_CHECK(cudaMemcpy(sum, c->sum, sizeof sum, cudaMemcpyDeviceToHost));
+    sph_cuda_profile_collect(); /* (the host has waited) */
     sph_contact_set(s, sum[SPH_CSUM_STORED], sum[SPH_CSUM_DISSIPATED], sum[SPH_CSUM_W2]);
 }
 

@@ -170,6 +170,6 @@ static void @B@_momentum_pass(sph_body *b)
 
 static void @B@_forces(sph_body *b)
 {
-    @B@_stress_pass(b);
-    @B@_momentum_pass(b);
+    SPH_PASS(@B@_stress_pass, (b)); /* (timed with --profile) */
+    SPH_PASS(@B@_momentum_pass, (b));
 }

@@ -111,7 +111,7 @@ if(NOT any_fracture AND NOT at EQUAL -1)
 endif()
 # contact (a scene feature): the contact pass and its description only in scenes with it
 string(FIND "${plan}" "contact=1" contact_on)
-foreach(word "sph_contact_forces(s, dt)" "sph_contact_desc" ".restitution =")
+foreach(word "sph_contact_forces, (s, dt)" "sph_contact_desc" ".restitution =")
   string(FIND "${code}" "${word}" at)
   if(NOT contact_on EQUAL -1 AND at EQUAL -1)
     message(FATAL_ERROR "${stem}: contact is on but '${word}' is not in its code")
