@@ -1,7 +1,11 @@
 /* ---- body @B@: internal forces ------------------------------------------------------
  * Pass 1, over pairs (each once): A_i = sum_j V_j (u_j - u_i) (x) grad W_ij.  The pair adds
  * the same tensor to A_j (w_ji = -w_ij), so half the pairs do all the work.  Stripes of one
- * colour never share a particle (see sph_body), so they run in parallel. */
+ * colour never share a particle (see sph_body), so they run in parallel.  Statically: each
+ * thread takes a run of consecutive stripes of each colour, about the particles the static
+ * particle loops (stress, update) give it, so what one pass writes is in the cache of the
+ * thread that reads it next (docs/architecture.md: with dynamic scheduling a step of crack
+ * branching took 1.8 times as long on two threads). */
 static void @B@_gradient_pass(sph_body *b)
 {
     enum { D = @DIM@ };
@@ -16,7 +20,7 @@ static void @B@_gradient_pass(sph_body *b)
     double *restrict lap = b->lap; /* zero on entry, like A */
 //@endif
     for (int colour = 0; colour < 2; colour++) {
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(static)
         for (int s = colour; s < b->nstripes; s += 2)
             for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
                 sph_real Ai[D * D] = {0};
@@ -95,10 +99,10 @@ static void @B@_momentum_pass(sph_body *b)
 //@endif
     for (int colour = 0; colour < 2; colour++) {
 //@if VISCOSITY
-#pragma omp parallel for schedule(dynamic, 1) reduction(+ : visc_power)
+#pragma omp parallel for schedule(static) reduction(+ : visc_power)
 //@endif
 //@if NO_VISCOSITY
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(static)
 //@endif
         for (int s = colour; s < b->nstripes; s += 2)
             for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
