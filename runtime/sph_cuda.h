@@ -624,14 +624,15 @@ static sph_body *sph_cuda_body(const sph_body *h)
 }
 
 /* n doubles of device memory to zero, in stream order (a pass, so that a step past the
- * batch's end leaves the sums of the last one). */
-static void sph_cuda_zero(double *d, int n)
+ * batch's end leaves the sums of the last one); a kernel of the pass that calls it. */
+static void sph_cuda_zero_in(double *d, int n, const char *pass)
 {
-    SPH_ONCE({
+    sph_for(1, pass, [=] __device__(int) {
         for (int k = 0; k < n; k++)
             d[k] = 0;
     });
 }
+#define sph_cuda_zero(d, n) sph_cuda_zero_in((d), (n), __func__)
 
 /* The sums of device view d's last step into host body h (the time step of sph_sim_step,
  * the energies; after a batch, the clock's copy has waited already). */
