@@ -68,8 +68,10 @@ double sph_wall_time(void);
 
 /* The profile (profile.c): the passes' times in summary.json ("profile"), and as a table. */
 void sph_profile_json(sph_json *j);
-void sph_profile_print(FILE *f, const char *model, long steps, double step_seconds,
-                       double check_seconds, double output_seconds);
+typedef struct {
+    double setup, steps, checks, outputs; /* the run's timers, in seconds */
+} sph_profile_times;
+void sph_profile_print(FILE *f, const char *model, long steps, const sph_profile_times *t);
 
 /* Command-line options of a generated program. */
 typedef struct {

@@ -435,9 +435,9 @@ static int time_loop(run_state *r)
                          .t_stop = fmin(next_out, r->t_end),
                          .eps = eps, .floor_dt = floor_dt};
         double w0 = sph_wall_time();
-        sph_profile_outside = 0; /* (--profile) the passes from here are the steps' */
+        sph_profile_phase = SPH_PHASE_STEPS; /* (--profile) the passes from here on */
         sph_sim_advance(s, &a);
-        sph_profile_outside = 1;
+        sph_profile_phase = SPH_PHASE_CHECKS;
         r->step_seconds += sph_wall_time() - w0;
         if (a.collapsed) {
             sync_host(r);
@@ -547,6 +547,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
     if (initial_state_bad(&r) || open_outputs(&r))
         return SPH_EXIT_SETUP;
     r.setup_seconds = sph_wall_time() - wall0;
+    sph_profile_phase = SPH_PHASE_CHECKS; /* the first output */
     if (write_output(&r))
         return SPH_EXIT_SETUP;
     int state = time_loop(&r);
@@ -563,9 +564,11 @@ int sph_main(const sph_model *m, int argc, char **argv)
     if (m->compat_outputs)
         sph_compat_close(&r.compat);
     sph_sim_free(&r.sim);
-    if (r.opt.profile)
-        sph_profile_print(stdout, m->name, r.sim.step, r.step_seconds, r.check_seconds,
-                          r.output_seconds);
+    if (r.opt.profile) {
+        const sph_profile_times t = {r.setup_seconds, r.step_seconds, r.check_seconds,
+                                     r.output_seconds};
+        sph_profile_print(stdout, m->name, r.sim.step, &t);
+    }
     double ps = (double)particles * (double)r.sim.step;
     if (state == 1) {
         sph_error("the run went unstable at %s", r.unstable);

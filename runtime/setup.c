@@ -166,17 +166,28 @@ static void drop_silent_pairs(sph_body *b, double *w)
     b->npairs = q;
 }
 
-/* The integer lattice offset of a pair, packed into a key; -1 when X_i - X_j is not a
- * whole number of spacings (to 1e-6 dx) or too long. */
-static long offset_key(const sph_body *b, const double *dX)
+/* The integer lattice offset X_i - X_j of pair p = (i, nb[p]) in spacings, component k in
+ * off[k]; 0 when it is not a whole number of spacings (to 1e-6 dx) or too long. */
+static int pair_offset(const sph_body *b, int i, int p, long *off)
 {
-    long key = 0;
     for (int k = 0; k < b->dim; k++) {
-        double q = dX[k] / b->dx, r = nearbyint(q);
+        const double dX = b->X[(size_t)i * b->dim + k] - b->X[(size_t)b->nb[p] * b->dim + k];
+        const double q = dX / b->dx, r = nearbyint(q);
         if (fabs(q - r) > 1e-6 || fabs(r) > 60)
-            return -1;
-        key = key * 128 + (long)r + 64;
+            return 0;
+        off[k] = (long)r;
     }
+    return 1;
+}
+
+/* A lattice pair's offset packed into a key below (2 reach + 1)^dim, reach being the largest
+ * magnitude of any component. */
+static long pair_key(const sph_body *b, int i, int p, long reach)
+{
+    long off[3], key = 0;
+    pair_offset(b, i, p, off);
+    for (int k = 0; k < b->dim; k++)
+        key = key * (2 * reach + 1) + off[k] + reach;
     return key;
 }
 
@@ -197,28 +208,36 @@ static void table_entry(sph_body *b, int k, int i, long p, const double *w, sph_
 }
 
 /* Per-pair tables (see sphrt.h): one entry per distinct lattice offset, or one per pair
- * when the particles are not on one lattice.  The offsets' keys are found in parallel; the
- * entries are numbered in pair order (so the tables do not depend on the thread count), and
+ * when the particles are not on one lattice.  Whether they are, and the longest offset, are
+ * found in parallel; the entries are numbered in pair order (so the tables do not depend on
+ * the thread count), through a table of all offsets up to the longest (a few hundred; one
+ * of every offset a key could have, 8 MB to fill, took most of a small body's set-up), and
  * on a lattice each is computed once, from the first pair that has it. */
 static void offset_tables(sph_body *b, double *w, sph_kernel_kind kernel)
 {
     const int D = b->dim;
-    const long np = b->npairs, nslots = 1L << 21;
+    const long np = b->npairs;
     b->nb_k = zalloc((size_t)np, sizeof(int));
+    /* on a lattice, the largest offset component sizes the keys' range: some hundreds */
+    long reach = 0;
     int lattice = 1;
-#pragma omp parallel for schedule(dynamic, 1024) reduction(&& : lattice)
+#pragma omp parallel for schedule(dynamic, 1024) reduction(max : reach) reduction(&& : lattice)
     for (int i = 0; i < b->n; i++)
         for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
-            double dX[3];
+            long off[3];
+            if (!pair_offset(b, i, p, off)) {
+                lattice = 0;
+                continue;
+            }
             for (int k = 0; k < D; k++)
-                dX[k] = b->X[(size_t)i * D + k] - b->X[(size_t)b->nb[p] * D + k];
-            const long key = offset_key(b, dX);
-            lattice = lattice && key >= 0 && key < nslots;
-            b->nb_k[p] = (int)key;
+                reach = labs(off[k]) > reach ? labs(off[k]) : reach;
         }
     int ntab = 0, *slot = NULL, *first_i = NULL;
     long *first_p = NULL;
     if (lattice) {
+        long nslots = 1;
+        for (int k = 0; k < D; k++)
+            nslots *= 2 * reach + 1;
         slot = malloc(sizeof(int) * (size_t)nslots);
         first_i = malloc(sizeof(int) * (size_t)nslots);
         first_p = malloc(sizeof(long) * (size_t)nslots);
@@ -226,7 +245,7 @@ static void offset_tables(sph_body *b, double *w, sph_kernel_kind kernel)
             slot[s] = -1;
         for (int i = 0; i < b->n; i++)
             for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
-                int *k = &slot[b->nb_k[p]];
+                int *k = &slot[pair_key(b, i, p, reach)];
                 if (*k < 0)
                     first_i[ntab] = i, first_p[ntab] = p, *k = ntab++;
                 b->nb_k[p] = *k;
@@ -431,7 +450,8 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
     b->mass = b->rho0 * b->vol;
     b->c0 = d->c0;
     b->y_plane = d->y_plane;
-    b->n = sph_fill_region(&d->region, m->dim, b->dx, d->y_plane, &b->X);
+    SPH_TIMED("set-up: filling the shapes",
+              b->n = sph_fill_region(&d->region, m->dim, b->dx, d->y_plane, &b->X));
     if (b->n < 0) {
         sph_error("body '%s' cannot be filled with particles of spacing %g",
                   d->name, b->dx);
@@ -444,19 +464,25 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
     }
     if (check_size(b))
         return -1;
-    order_particles(b);
-    sph_neighbours(b->X, b->n, b->dim, 2.0 * b->h, d->nbsrange, b->dx, &b->nb_start, &b->nb);
+    SPH_TIMED("set-up: particle order", order_particles(b));
+    SPH_TIMED("set-up: neighbour search",
+              sph_neighbours(b->X, b->n, b->dim, 2.0 * b->h, d->nbsrange, b->dx, &b->nb_start,
+                             &b->nb));
     b->npairs = b->nb_start[b->n];
     if (d->fracture && d->fracture->nnotches) /* before the gradients: L sees the cut */
-        cut_notches(b, d->fracture);
+        SPH_TIMED("set-up: notches", cut_notches(b, d->fracture));
     double *w;
-    sph_gradients(b->X, b->n, b->dim, b->nb_start, b->nb, m->kernel, b->h, b->vol, &w, &b->L);
-    drop_silent_pairs(b, w);
-    offset_tables(b, w, m->kernel);
+    SPH_TIMED("set-up: kernel gradients and L",
+              sph_gradients(b->X, b->n, b->dim, b->nb_start, b->nb, m->kernel, b->h, b->vol, &w,
+                            &b->L));
+    SPH_TIMED("set-up: offset tables", {
+        drop_silent_pairs(b, w);
+        offset_tables(b, w, m->kernel);
+    });
     free(w);
-    half_lists(b);
-    allocate(b);
-    selections(b, d, m->t_end);
+    SPH_TIMED("set-up: half lists and stripes", half_lists(b));
+    SPH_TIMED("set-up: arrays", allocate(b));
+    SPH_TIMED("set-up: BC and plane selections", selections(b, d, m->t_end));
     if (d->fracture)
         check_restrict(b, d->fracture, m->t_end);
     return 0;

@@ -199,7 +199,7 @@ static int sph_cuda_sync_mode(void)
  * the device may have idled), and where the steps begin or end, the chain starts again with
  * an event just before the next launch.  The host reads the events where it waits anyway (the end of a batch, the sums,
  * the state; sph_cuda_profile_collect) and adds each kernel's time to the pass that launched
- * it (runtime/profile.c), in the steps or outside them as it was when it was launched. */
+ * it (runtime/profile.c), in the phase of the run it was launched in. */
 #ifdef SPH_CUDA_EMULATE /* the host's clock at the event (the kernels have run by then) */
 typedef double *cudaEvent_t;
 static inline cudaError_t cudaEventCreate(cudaEvent_t *e)
@@ -225,7 +225,7 @@ static struct {
     cudaEvent_t ev[SPH_PROFILE_EVENTS];
     int slot[SPH_PROFILE_EVENTS]; /* the pass whose kernel ends at ev[k] (-1: a start) */
     int n, made;
-    int outside; /* sph_profile_outside when the chain started */
+    int phase; /* sph_profile_phase when the chain started */
 } sph_prof;
 
 static void sph_cuda_profile_record(int slot)
@@ -261,10 +261,10 @@ static void sph_cuda_launching(void)
 {
     if (!sph_profile_on)
         return;
-    if (sph_prof.n && sph_prof.outside != sph_profile_outside)
+    if (sph_prof.n && sph_prof.phase != sph_profile_phase)
         sph_cuda_profile_collect();
     if (sph_prof.n == 0) {
-        sph_prof.outside = sph_profile_outside;
+        sph_prof.phase = sph_profile_phase;
         sph_cuda_profile_record(-1);
     }
 }
@@ -587,7 +587,7 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->gtab = sph_dev_table(h->gtab, nt, 1);
     b->htab = sph_dev_table(h->htab, nt, 1);
     int *count, *nb, *k, slots;
-    sph_full_lists(h, &count, &nb, &k, &slots);
+    SPH_TIMED("set-up: the device's full pair lists", sph_full_lists(h, &count, &nb, &k, &slots));
     b->fb_count = (int *)sph_dev_copy(count, n * sizeof(int));
     b->fb = (int *)sph_dev_copy(nb, (size_t)slots * n * sizeof(int));
     b->fb_k = (int *)sph_dev_copy(k, (size_t)slots * n * sizeof(int));

@@ -407,29 +407,30 @@ void sph_error(const char *fmt, ...) SPH_PRINTF;
 void sph_warning(const char *fmt, ...) SPH_PRINTF;
 void sph_note(const char *fmt, ...) SPH_PRINTF;
 
-/* The time each pass of the step takes (the program's --profile; profile.c).  The CPU
- * target's step calls its passes through SPH_PASS(fn, (args)), which times the call when
- * profiling is on (the entry of a call site is found once); the CUDA target's SPH_PASS is
- * the bare call, and its kernels are timed on the device (sph_cuda.h).  A pass started
- * while sph_profile_outside is set (the monitor's, set-up) counts outside the steps. */
-extern int sph_profile_on, sph_profile_outside;
+/* Where the time of a run goes (the program's --profile; profile.c).  The CPU target's step
+ * calls its passes through SPH_PASS(fn, (args)), and the set-up times its stages with
+ * SPH_TIMED(name, statement): when profiling is on, the wall time of the call is added to
+ * its entry (found once per call site) in the phase the run is in; otherwise it costs one
+ * test.  The CUDA target's SPH_PASS is the bare call: its kernels are timed on the device
+ * (sph_cuda.h). */
+enum { SPH_PHASE_STEPS, SPH_PHASE_CHECKS, SPH_PHASE_SETUP }; /* sph_profile_phase */
+extern int sph_profile_on, sph_profile_phase;
 int sph_profile_slot(const char *pass);
 double sph_profile_start(int *slot, const char *pass); /* the wall clock, and *slot found */
 void sph_profile_add(int slot, double seconds);
 double sph_wall_time(void);
-#ifndef SPH_PASS
-#define SPH_PASS(fn, args)                                                                     \
+#define SPH_TIMED(name, statement)                                                             \
     do {                                                                                       \
         if (sph_profile_on) {                                                                  \
             static int slot_ = -1;                                                             \
-            const double t0_ = sph_profile_start(&slot_, #fn);                                 \
-            fn args;                                                                           \
+            const double t0_ = sph_profile_start(&slot_, name);                                \
+            statement;                                                                         \
             sph_profile_add(slot_, sph_wall_time() - t0_);                                     \
         } else {                                                                               \
-            fn args;                                                                           \
+            statement;                                                                         \
         }                                                                                      \
     } while (0)
-#endif
+#define SPH_PASS(fn, args) SPH_TIMED(#fn, fn args)
 
 /* The simulation without the program around it (used by sph_main and by tests):
  * build every body and apply the velocity boundary conditions at t = 0 (initial
