@@ -243,9 +243,13 @@ static void offset_tables(sph_body *b, double *w, sph_kernel_kind kernel)
         first_p = malloc(sizeof(long) * (size_t)nslots);
         for (long s = 0; s < nslots; s++)
             slot[s] = -1;
+#pragma omp parallel for schedule(dynamic, 1024)
         for (int i = 0; i < b->n; i++)
+            for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++)
+                b->nb_k[p] = (int)pair_key(b, i, p, reach);
+        for (int i = 0; i < b->n; i++) /* numbered in pair order */
             for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
-                int *k = &slot[pair_key(b, i, p, reach)];
+                int *k = &slot[b->nb_k[p]];
                 if (*k < 0)
                     first_i[ntab] = i, first_p[ntab] = p, *k = ntab++;
                 b->nb_k[p] = *k;
