@@ -1,6 +1,6 @@
 /* gradients.c — kernel gradients per pair and the kernel-gradient correction per particle.
  *
- * For every pair p = (i, j) of the CSR lists:
+ * For every pair p = (i, j) of the CSR lists (sph_pair_gradient, stored only when asked):
  *     w[p*dim + k] = vol * (dW/dr / r)(|X_i - X_j|) * (X_i - X_j)_k      (= V_j grad_i W_ij)
  * and for every particle
  *     M_i[r][c] = sum_j (X_j - X_i)_r w_c,     L_i = M_i^{-T} = cof(M_i) / det(M_i),
@@ -31,7 +31,21 @@ static double cofactor(const double *m, int dim, double *c)
     return m[0] * c[0] + m[1] * c[1] + m[2] * c[2];
 }
 
-/* The pairs of particle i: writes their w and returns M_i (dim×dim) in m. */
+void sph_pair_gradient(const double *X, int dim, int i, int j, sph_kernel_kind kernel, double h,
+                       double vol, double *w)
+{
+    const double *xi = X + (size_t)i * dim, *xj = X + (size_t)j * dim;
+    double d[3], r2 = 0.0;
+    for (int k = 0; k < dim; k++) {
+        d[k] = xi[k] - xj[k];
+        r2 += d[k] * d[k];
+    }
+    const double f = vol * sph_kernel_dwdr_over_r(kernel, dim, sqrt(r2), h);
+    for (int k = 0; k < dim; k++)
+        w[k] = f * d[k];
+}
+
+/* The pairs of particle i: M_i (dim×dim) in m, and their w unless w is NULL. */
 static void particle_pairs(const double *X, int i, int dim, const int *start, const int *nb,
                            sph_kernel_kind kernel, double h, double vol, double *w, double *m)
 {
@@ -40,17 +54,13 @@ static void particle_pairs(const double *X, int i, int dim, const int *start, co
         m[k] = 0.0;
     for (int p = start[i]; p < start[i + 1]; p++) {
         const double *xj = X + (size_t)nb[p] * dim;
-        double d[3], r2 = 0.0;
-        for (int k = 0; k < dim; k++) {
-            d[k] = xi[k] - xj[k];
-            r2 += d[k] * d[k];
-        }
-        double f = vol * sph_kernel_dwdr_over_r(kernel, dim, sqrt(r2), h);
-        for (int k = 0; k < dim; k++)
-            w[(size_t)p * dim + k] = f * d[k];
+        double wp[3];
+        sph_pair_gradient(X, dim, i, nb[p], kernel, h, vol, wp);
         for (int r = 0; r < dim; r++)
             for (int c = 0; c < dim; c++)
-                m[r * dim + c] -= d[r] * w[(size_t)p * dim + c];
+                m[r * dim + c] -= (xi[r] - xj[r]) * wp[c];
+        for (int k = 0; w && k < dim; k++)
+            w[(size_t)p * dim + k] = wp[k];
     }
 }
 
@@ -68,16 +78,18 @@ void sph_gradients(const double *X, int n, int dim, const int *start, const int 
                    sph_kernel_kind kernel, double h, double vol, double **w, double **L)
 {
     size_t npairs = n > 0 ? (size_t)start[n] : 0;
-    *w = malloc(npairs * dim * sizeof **w + 1);
+    double *wp = w ? malloc(npairs * dim * sizeof *wp + 1) : NULL;
     *L = malloc((size_t)(n > 0 ? n : 0) * dim * dim * sizeof **L + 1);
-    if (!*w || !*L) {
+    if ((w && !wp) || !*L) {
         sph_error("out of memory for kernel gradients (%zu pairs)", npairs);
         exit(SPH_EXIT_SETUP);
     }
 #pragma omp parallel for schedule(dynamic, 256)
     for (int i = 0; i < n; i++) {
         double m[9];
-        particle_pairs(X, i, dim, start, nb, kernel, h, vol, *w, m);
+        particle_pairs(X, i, dim, start, nb, kernel, h, vol, wp, m);
         correction(m, dim, *L + (size_t)i * dim * dim);
     }
+    if (w)
+        *w = wp;
 }

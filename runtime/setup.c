@@ -136,34 +136,54 @@ static double viscosity_factor(const sph_body *b, const double *dX, const double
  * any pass; removing them saves a sixth of the pair work on a lattice (24 -> 20 in 2D).  In
  * single precision, pairs whose gradient is below 1e-30 of the largest go too (at the very
  * edge of the support): in float it underflows, and the viscosity factor of eq. 60 (about
- * 1/|w|) would overflow. */
-static void drop_silent_pairs(sph_body *b, double *w)
+ * 1/|w|) would overflow.  The gradients are recomputed (sph_pair_gradient) rather than kept
+ * from sph_gradients: 24 bytes a pair in 3D, most of the set-up's memory. */
+static int silent_pair(const sph_body *b, int i, int p, sph_kernel_kind kernel, double tiny)
 {
-    const int D = b->dim;
+    double w[3];
+    int silent = 1;
+    sph_pair_gradient(b->X, b->dim, i, b->nb[p], kernel, b->h, b->vol, w);
+    for (int c = 0; c < b->dim; c++)
+        silent &= fabs(w[c]) <= tiny;
+    return silent;
+}
+
+static void drop_silent_pairs(sph_body *b, sph_kernel_kind kernel)
+{
+    const int D = b->dim, n = b->n;
     double wmax = 0;
-    for (long p = 0; p < b->npairs * D; p++)
-        wmax = fmax(wmax, fabs(w[p]));
-    const double tiny = sizeof(sph_real) < sizeof(double) ? 1e-30 * wmax : 0.0;
-    long q = 0;
-    int begin = 0;
-    for (int i = 0; i < b->n; i++) {
-        int end = b->nb_start[i + 1];
-        b->nb_start[i] = (int)q;
-        for (int p = begin; p < end; p++) {
-            int silent = 1;
-            for (int c = 0; c < D; c++)
-                silent &= fabs(w[(size_t)p * D + c]) <= tiny;
-            if (silent)
-                continue;
-            b->nb[q] = b->nb[p];
-            for (int c = 0; c < D; c++)
-                w[(size_t)q * D + c] = w[(size_t)p * D + c];
-            q++;
-        }
-        begin = end;
+    if (sizeof(sph_real) < sizeof(double)) {
+#pragma omp parallel for schedule(dynamic, 1024) reduction(max : wmax)
+        for (int i = 0; i < n; i++)
+            for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
+                double w[3];
+                sph_pair_gradient(b->X, D, i, b->nb[p], kernel, b->h, b->vol, w);
+                for (int c = 0; c < D; c++)
+                    wmax = fmax(wmax, fabs(w[c]));
+            }
     }
-    b->nb_start[b->n] = (int)q;
-    b->npairs = q;
+    const double tiny = sizeof(sph_real) < sizeof(double) ? 1e-30 * wmax : 0.0;
+    int *start = zalloc((size_t)n + 1, sizeof(int));
+#pragma omp parallel for schedule(dynamic, 1024)
+    for (int i = 0; i < n; i++) { /* the pairs each particle keeps, then their running sum */
+        int c = 0;
+        for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++)
+            c += !silent_pair(b, i, p, kernel, tiny);
+        start[i + 1] = c;
+    }
+    for (int i = 0; i < n; i++)
+        start[i + 1] += start[i];
+    int *nb = zalloc((size_t)start[n] + 1, sizeof(int));
+#pragma omp parallel for schedule(dynamic, 1024)
+    for (int i = 0; i < n; i++) {
+        int q = start[i];
+        for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++)
+            if (!silent_pair(b, i, p, kernel, tiny))
+                nb[q++] = b->nb[p];
+    }
+    free(b->nb_start), free(b->nb);
+    b->nb_start = start, b->nb = nb;
+    b->npairs = start[n];
 }
 
 /* The integer lattice offset X_i - X_j of pair p = (i, nb[p]) in spacings, component k in
@@ -191,17 +211,18 @@ static long pair_key(const sph_body *b, int i, int p, long reach)
     return key;
 }
 
-/* Table entry k from pair p = (i, nb[p]) with kernel gradient w_p. */
-static void table_entry(sph_body *b, int k, int i, long p, const double *w, sph_kernel_kind kernel)
+/* Table entry k from pair p = (i, nb[p]). */
+static void table_entry(sph_body *b, int k, int i, long p, sph_kernel_kind kernel)
 {
     const int D = b->dim;
-    double dX[3], r2 = 0;
+    double dX[3], w[3], r2 = 0;
+    sph_pair_gradient(b->X, D, i, b->nb[p], kernel, b->h, b->vol, w);
     for (int c = 0; c < D; c++) {
         dX[c] = b->X[(size_t)i * D + c] - b->X[(size_t)b->nb[p] * D + c];
-        b->wtab[(size_t)k * D + c] = (sph_real)w[(size_t)p * D + c];
+        b->wtab[(size_t)k * D + c] = (sph_real)w[c];
         r2 += dX[c] * dX[c];
     }
-    b->gtab[k] = (sph_real)viscosity_factor(b, dX, w + (size_t)p * D);
+    b->gtab[k] = (sph_real)viscosity_factor(b, dX, w);
     b->htab[k] = (sph_real)(b->vol * sph_kernel_w(kernel, D, sqrt(r2), b->h) / (b->rho0 * r2));
     if (b->ltab) /* eq. 62: 2 V_j (r0 . grad W) / r0^2 = 2 V dW/dr / r */
         b->ltab[k] = (sph_real)(2 * b->vol * sph_kernel_dwdr_over_r(kernel, D, sqrt(r2), b->h));
@@ -213,7 +234,7 @@ static void table_entry(sph_body *b, int k, int i, long p, const double *w, sph_
  * the thread count), through a table of all offsets up to the longest (a few hundred; one
  * of every offset a key could have, 8 MB to fill, took most of a small body's set-up), and
  * on a lattice each is computed once, from the first pair that has it. */
-static void offset_tables(sph_body *b, double *w, sph_kernel_kind kernel)
+static void offset_tables(sph_body *b, sph_kernel_kind kernel)
 {
     const int D = b->dim;
     const long np = b->npairs;
@@ -264,7 +285,7 @@ static void offset_tables(sph_body *b, double *w, sph_kernel_kind kernel)
         b->ltab = zalloc((size_t)ntab, sizeof *b->ltab);
     if (lattice) {
         for (int k = 0; k < ntab; k++)
-            table_entry(b, k, first_i[k], first_p[k], w, kernel);
+            table_entry(b, k, first_i[k], first_p[k], kernel);
         free(slot), free(first_i), free(first_p);
         return;
     }
@@ -272,7 +293,7 @@ static void offset_tables(sph_body *b, double *w, sph_kernel_kind kernel)
     for (int i = 0; i < b->n; i++)
         for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
             b->nb_k[p] = p;
-            table_entry(b, p, i, p, w, kernel);
+            table_entry(b, p, i, p, kernel);
         }
 }
 
@@ -418,14 +439,16 @@ static double memory_limit(const char **what)
  * memory than the machine has, instead of a search that runs for minutes and then fails or
  * is killed.  A particle has about as many neighbours as lattice points lie within 2h (a
  * sphere or a disc of radius 2h / dx: 174 in 3D and 13 in 2D at coefh 1, a few more than
- * interior particles have), and the run keeps some 32 bytes per neighbour and 1 KB per
- * particle (the plate at dp 1 mm: 1.26 GB for 242 400 particles of 157 neighbours). */
+ * interior particles have), and the run needs at most some 12 bytes per neighbour (the
+ * lists while the set-up builds the half lists from them) and 1 KB per particle (the plate
+ * at dp 1 mm, 242 400 particles of 157 neighbours: estimated 0.70 GB, measured 0.48 GB at
+ * its peak; 1.26 GB when the set-up kept every pair's kernel gradient). */
 static int check_size(const sph_body *b)
 {
     const double r = 2.0 * b->h / b->dx, n = (double)b->n;
     const double per = b->dim == 3 ? 4.0 / 3.0 * M_PI * r * r * r : M_PI * r * r;
     const char *what;
-    const double bytes = n * (32.0 * per + 1024.0), mem = memory_limit(&what);
+    const double bytes = n * (12.0 * per + 1024.0), mem = memory_limit(&what);
     if (n * per > 1.25 * 0x7fffffffL) {
         sph_error("body '%s' would have some %.3g neighbour pairs (%d particles "
                   "with about %.0f neighbours each), more than 2^31: raise dp or lower "
@@ -475,15 +498,11 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
     b->npairs = b->nb_start[b->n];
     if (d->fracture && d->fracture->nnotches) /* before the gradients: L sees the cut */
         SPH_TIMED("set-up: notches", cut_notches(b, d->fracture));
-    double *w;
     SPH_TIMED("set-up: kernel gradients and L",
-              sph_gradients(b->X, b->n, b->dim, b->nb_start, b->nb, m->kernel, b->h, b->vol, &w,
+              sph_gradients(b->X, b->n, b->dim, b->nb_start, b->nb, m->kernel, b->h, b->vol, NULL,
                             &b->L));
-    SPH_TIMED("set-up: offset tables", {
-        drop_silent_pairs(b, w);
-        offset_tables(b, w, m->kernel);
-    });
-    free(w);
+    SPH_TIMED("set-up: silent pairs", drop_silent_pairs(b, m->kernel));
+    SPH_TIMED("set-up: offset tables", offset_tables(b, m->kernel));
     SPH_TIMED("set-up: half lists and stripes", half_lists(b));
     SPH_TIMED("set-up: arrays", allocate(b));
     SPH_TIMED("set-up: BC and plane selections", selections(b, d, m->t_end));

@@ -106,12 +106,16 @@ void sph_neighbours(const double *X, int n, int dim, double radius, int range, d
 void sph_neighbours_brute(const double *X, int n, int dim, double radius, int range,
                           double dx, int **start, int **nb);
 
-/* For every pair: w = V_j grad_i W_ij (dim values per pair, malloc'ed) and every
- * particle's correction matrix L_i = M_i^{-T}, M_i = sum_j V_j (X_j - X_i) ⊗ grad_i W_ij,
- * so that sum_j V_j (X_j - X_i) ⊗ (L_i grad_i W_ij) = I exactly (dim×dim per particle,
- * malloc'ed).  Where M_i is singular (too few neighbours) L_i = I. */
+/* Every particle's correction matrix L_i = M_i^{-T}, M_i = sum_j V_j (X_j - X_i) ⊗
+ * grad_i W_ij, so that sum_j V_j (X_j - X_i) ⊗ (L_i grad_i W_ij) = I exactly (dim×dim per
+ * particle, malloc'ed; where M_i is singular, too few neighbours, L_i = I), and unless w is
+ * NULL every pair's w = V_j grad_i W_ij (dim values per pair, malloc'ed: 24 bytes a pair in
+ * 3D, which the set-up does not keep but recomputes where it needs them). */
 void sph_gradients(const double *X, int n, int dim, const int *start, const int *nb,
                    sph_kernel_kind kernel, double h, double vol, double **w, double **L);
+/* One pair's w = V_j grad_i W_ij (dim values), as sph_gradients computes it. */
+void sph_pair_gradient(const double *X, int dim, int i, int j, sph_kernel_kind kernel, double h,
+                       double vol, double *w);
 
 /* ------------------------------------------------------------------ model description */
 
