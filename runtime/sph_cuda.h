@@ -197,9 +197,10 @@ static int sph_cuda_sync_mode(void)
  * An event follows every launch, and the kernel's time is the time from the event before it:
  * the passes run one after the other in the default stream.  Where the host has waited (and
  * the device may have idled), and where the steps begin or end, the chain starts again with
- * an event just before the next launch.  The host reads the events where it waits anyway (the end of a batch, the sums,
- * the state; sph_cuda_profile_collect) and adds each kernel's time to the pass that launched
- * it (runtime/profile.c), in the phase of the run it was launched in. */
+ * an event just before the next launch.  The host reads the events where it waits anyway
+ * (the end of a batch, the sums, the state; sph_cuda_profile_collect) and adds each kernel's
+ * time to the pass that launched it (runtime/profile.c), in the phase of the run it was
+ * launched in. */
 #ifdef SPH_CUDA_EMULATE /* the host's clock at the event (the kernels have run by then) */
 typedef double *cudaEvent_t;
 static inline cudaError_t cudaEventCreate(cudaEvent_t *e)
