@@ -290,6 +290,22 @@ static void sph_cuda_launched(const char *pass)
     }
 }
 
+/* One launch of `pass`: run() launches its kernels (or, emulated, runs them), between the
+ * profile's events and the waiting mode's check. */
+template <class R> static void sph_launch(const char *pass, R run)
+{
+    sph_cuda_launching();
+    run();
+    sph_cuda_launched(pass);
+}
+
+/* A kernel on one thread: launched, or called on the host when emulated. */
+#ifndef SPH_CUDA_EMULATE
+#define SPH_ONE_THREAD(kernel) kernel<<<1, 1>>>()
+#else
+#define SPH_ONE_THREAD(kernel) kernel()
+#endif
+
 #ifndef SPH_CUDA_EMULATE
 template <class F> __global__ void sph_for_kernel(int n, F f)
 {
@@ -303,9 +319,7 @@ template <class F> static void sph_for(int n, const char *pass, F f)
 {
     if (n <= 0)
         return;
-    sph_cuda_launching();
-    sph_for_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, f);
-    sph_cuda_launched(pass);
+    sph_launch(pass, [&] { sph_for_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, f); });
 }
 
 /* *a = max(*a, v) for *a >= 0: positive doubles order like their bit patterns (v = -0, which
@@ -361,9 +375,7 @@ template <class F> static void sph_for_max3(int n, double *out, const char *pass
 {
     if (n <= 0)
         return;
-    sph_cuda_launching();
-    sph_for_max3_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, out, f);
-    sph_cuda_launched(pass);
+    sph_launch(pass, [&] { sph_for_max3_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, out, f); });
 }
 
 /* The sum of a warp's values, in every lane. */
@@ -400,39 +412,37 @@ template <class F> static void sph_for_sum(int n, double *out, const char *pass,
 {
     if (n <= 0)
         return;
-    sph_cuda_launching();
-    sph_for_sum_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, out, f);
-    sph_cuda_launched(pass);
+    sph_launch(pass, [&] { sph_for_sum_kernel<<<sph_blocks(n), SPH_CUDA_BLOCK>>>(n, out, f); });
 }
 #else
 template <class F> static void sph_for(int n, const char *pass, F f)
 {
-    sph_cuda_launching();
-    for (int i = 0; i < n && !sph_clock.skip; i++)
-        f(i);
-    sph_cuda_launched(pass);
+    sph_launch(pass, [&] {
+        for (int i = 0; i < n && !sph_clock.skip; i++)
+            f(i);
+    });
 }
 
 static inline void sph_atomic_max_pos(double *a, double v) { *a = v > *a ? v : *a; }
 
 template <class F> static void sph_for_sum(int n, double *out, const char *pass, F f)
 {
-    sph_cuda_launching();
-    for (int i = 0; i < n && !sph_clock.skip; i++)
-        *out += f(i);
-    sph_cuda_launched(pass);
+    sph_launch(pass, [&] {
+        for (int i = 0; i < n && !sph_clock.skip; i++)
+            *out += f(i);
+    });
 }
 
 template <class F> static void sph_for_max3(int n, double *out, const char *pass, F f)
 {
-    sph_cuda_launching();
-    for (int i = 0; i < n && !sph_clock.skip; i++) {
-        const sph_max3 r = f(i);
-        out[0] = sph_max_bound(out[0], r.x);
-        out[1] = sph_max_bound(out[1], r.y);
-        out[2] = sph_max_bound(out[2], r.z);
-    }
-    sph_cuda_launched(pass);
+    sph_launch(pass, [&] {
+        for (int i = 0; i < n && !sph_clock.skip; i++) {
+            const sph_max3 r = f(i);
+            out[0] = sph_max_bound(out[0], r.x);
+            out[1] = sph_max_bound(out[1], r.y);
+            out[2] = sph_max_bound(out[2], r.z);
+        }
+    });
 }
 #endif
 
@@ -687,48 +697,22 @@ __device__ static inline void sph_clock_tick_on(sph_cuda_clock *c)
     c->step++;
 }
 
-#ifndef SPH_CUDA_EMULATE
 __global__ void sph_clock_choose_kernel() { sph_clock_choose_on(&sph_clock); }
 __global__ void sph_clock_tick_kernel() { sph_clock_tick_on(&sph_clock); }
 __global__ void sph_clock_resume_kernel() { sph_clock.skip = 0; }
 static void sph_cuda_clock_choose()
 {
-    sph_cuda_launching();
-    sph_clock_choose_kernel<<<1, 1>>>();
-    sph_cuda_launched("the clock's choice of the time step");
+    sph_launch("the clock's choice of the time step",
+               [] { SPH_ONE_THREAD(sph_clock_choose_kernel); });
 }
 static void sph_cuda_clock_tick()
 {
-    sph_cuda_launching();
-    sph_clock_tick_kernel<<<1, 1>>>();
-    sph_cuda_launched("the clock's tick");
+    sph_launch("the clock's tick", [] { SPH_ONE_THREAD(sph_clock_tick_kernel); });
 }
 static void sph_cuda_clock_resume()
 {
-    sph_cuda_launching();
-    sph_clock_resume_kernel<<<1, 1>>>();
-    sph_cuda_launched("the clock's resumption");
+    sph_launch("the clock's resumption", [] { SPH_ONE_THREAD(sph_clock_resume_kernel); });
 }
-#else
-static void sph_cuda_clock_choose()
-{
-    sph_cuda_launching();
-    sph_clock_choose_on(&sph_clock);
-    sph_cuda_launched("the clock's choice of the time step");
-}
-static void sph_cuda_clock_tick()
-{
-    sph_cuda_launching();
-    sph_clock_tick_on(&sph_clock);
-    sph_cuda_launched("the clock's tick");
-}
-static void sph_cuda_clock_resume()
-{
-    sph_cuda_launching();
-    sph_clock.skip = 0;
-    sph_cuda_launched("the clock's resumption");
-}
-#endif
 
 /* The clock at the start of a batch: the host's time, the batch and the scene.  At the first
  * step the host's sums (sph_sim_init's initial speeds) go to the device, where the first time

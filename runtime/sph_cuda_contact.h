@@ -131,22 +131,21 @@ static void sph_cuda_contact_sort(sph_cuda_contact *c)
         sph_contact_cell(x + (size_t)g * D, D, cell, cg);
         key[g] = sph_contact_bucket(cg, mask);
     });
+    sph_launch("the contact search's sort", [&] {
 #ifndef SPH_CUDA_EMULATE
-    sph_cuda_launching();
-    SPH_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(c->tmp, c->tmp_bytes, key, skey, c->idx, order,
-                                                   n, 0, c->bits));
+        SPH_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(c->tmp, c->tmp_bytes, key, skey, c->idx,
+                                                       order, n, 0, c->bits));
 #else
-    sph_cuda_launching();
-    for (int g = 0; g < n; g++)
-        order[g] = g;
-    std::stable_sort(order, order + n, [&](int a, int b) { return key[a] < key[b]; });
-    for (int g = 0; g < n; g++)
-        skey[g] = key[order[g]];
+        for (int g = 0; g < n; g++)
+            order[g] = g;
+        std::stable_sort(order, order + n, [&](int a, int b) { return key[a] < key[b]; });
+        for (int g = 0; g < n; g++)
+            skey[g] = key[order[g]];
 #endif
-    sph_cuda_launched("the contact search's sort");
-    sph_cuda_launching();
-    SPH_CUDA_CHECK(cudaMemset(bstart, 0, 2 * ((size_t)mask + 1) * sizeof(int))); /* and bend */
-    sph_cuda_launched("the contact search's buckets");
+    });
+    sph_launch("the contact search's buckets", [&] { /* bstart and bend */
+        SPH_CUDA_CHECK(cudaMemset(bstart, 0, 2 * ((size_t)mask + 1) * sizeof(int)));
+    });
     SPH_FOR(p, n, {
         const unsigned k = skey[p];
         if (p == 0 || skey[p - 1] != k)
