@@ -165,10 +165,13 @@ static void drop_silent_pairs(sph_body *b, sph_kernel_kind kernel)
     const double tiny = sizeof(sph_real) < sizeof(double) ? 1e-30 * wmax : 0.0;
     int *start = zalloc((size_t)n + 1, sizeof(int));
 #pragma omp parallel for schedule(dynamic, 1024)
-    for (int i = 0; i < n; i++) { /* the pairs each particle keeps, then their running sum */
+    for (int i = 0; i < n; i++) { /* the pairs each particle keeps (silent ones marked -1) */
         int c = 0;
         for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++)
-            c += !silent_pair(b, i, p, kernel, tiny);
+            if (silent_pair(b, i, p, kernel, tiny))
+                b->nb[p] = -1;
+            else
+                c++;
         start[i + 1] = c;
     }
     for (int i = 0; i < n; i++)
@@ -178,13 +181,15 @@ static void drop_silent_pairs(sph_body *b, sph_kernel_kind kernel)
     for (int i = 0; i < n; i++) {
         int q = start[i];
         for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++)
-            if (!silent_pair(b, i, p, kernel, tiny))
+            if (b->nb[p] >= 0)
                 nb[q++] = b->nb[p];
     }
     free(b->nb_start), free(b->nb);
     b->nb_start = start, b->nb = nb;
     b->npairs = start[n];
 }
+
+#define KEY_BASE 121 /* offsets of up to 60 spacings a component */
 
 /* The integer lattice offset X_i - X_j of pair p = (i, nb[p]) in spacings, component k in
  * off[k]; 0 when it is not a whole number of spacings (to 1e-6 dx) or too long. */
@@ -193,22 +198,24 @@ static int pair_offset(const sph_body *b, int i, int p, long *off)
     for (int k = 0; k < b->dim; k++) {
         const double dX = b->X[(size_t)i * b->dim + k] - b->X[(size_t)b->nb[p] * b->dim + k];
         const double q = dX / b->dx, r = nearbyint(q);
-        if (fabs(q - r) > 1e-6 || fabs(r) > 60)
+        if (fabs(q - r) > 1e-6 || fabs(r) > KEY_BASE / 2)
             return 0;
         off[k] = (long)r;
     }
     return 1;
 }
 
-/* A lattice pair's offset packed into a key below (2 reach + 1)^dim, reach being the largest
- * magnitude of any component. */
-static long pair_key(const sph_body *b, int i, int p, long reach)
+/* Lattice offsets packed as keys: components in [-60, 60] in base KEY_BASE as the pairs are
+ * scanned, then re-packed in base 2 reach + 1 once the longest component, reach, is known,
+ * so that the keys number some hundreds. */
+static long repack_key(long key, int dim, long reach)
 {
-    long off[3], key = 0;
-    pair_offset(b, i, p, off);
-    for (int k = 0; k < b->dim; k++)
-        key = key * (2 * reach + 1) + off[k] + reach;
-    return key;
+    long digit[3], out = 0;
+    for (int k = dim - 1; k >= 0; k--, key /= KEY_BASE)
+        digit[k] = key % KEY_BASE - KEY_BASE / 2;
+    for (int k = 0; k < dim; k++)
+        out = out * (2 * reach + 1) + digit[k] + reach;
+    return out;
 }
 
 /* Table entry k from pair p = (i, nb[p]). */
@@ -245,13 +252,16 @@ static void offset_tables(sph_body *b, sph_kernel_kind kernel)
 #pragma omp parallel for schedule(dynamic, 1024) reduction(max : reach) reduction(&& : lattice)
     for (int i = 0; i < b->n; i++)
         for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
-            long off[3];
+            long off[3], key = 0;
             if (!pair_offset(b, i, p, off)) {
                 lattice = 0;
                 continue;
             }
-            for (int k = 0; k < D; k++)
+            for (int k = 0; k < D; k++) {
                 reach = labs(off[k]) > reach ? labs(off[k]) : reach;
+                key = key * KEY_BASE + off[k] + KEY_BASE / 2;
+            }
+            b->nb_k[p] = (int)key; /* below 121^3 */
         }
     int ntab = 0, *slot = NULL, *first_i = NULL;
     long *first_p = NULL;
@@ -267,7 +277,7 @@ static void offset_tables(sph_body *b, sph_kernel_kind kernel)
 #pragma omp parallel for schedule(dynamic, 1024)
         for (int i = 0; i < b->n; i++)
             for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++)
-                b->nb_k[p] = (int)pair_key(b, i, p, reach);
+                b->nb_k[p] = (int)repack_key(b->nb_k[p], D, reach);
         for (int i = 0; i < b->n; i++) /* numbered in pair order */
             for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
                 int *k = &slot[b->nb_k[p]];
