@@ -63,9 +63,6 @@ void sph_progress_start(sph_progress *p, double t_end, int quiet);
 void sph_progress_update(sph_progress *p, double t, double dt, long step); /* rate-limited: 4 Hz */
 void sph_progress_finish(sph_progress *p);
 
-/* Wall clock in seconds (monotonic). */
-double sph_wall_time(void);
-
 /* The profile (profile.c): the passes' times in summary.json ("profile"), and as a table. */
 void sph_profile_json(sph_json *j);
 typedef struct {

@@ -422,7 +422,7 @@ extern int sph_profile_on, sph_profile_phase;
 int sph_profile_slot(const char *pass);
 double sph_profile_start(int *slot, const char *pass); /* the wall clock, and *slot found */
 void sph_profile_add(int slot, double seconds);
-double sph_wall_time(void);
+double sph_wall_time(void); /* the wall clock in seconds, monotonic (progress.c) */
 #define SPH_TIMED(name, statement)                                                             \
     do {                                                                                       \
         if (sph_profile_on) {                                                                  \
