@@ -26,6 +26,19 @@ static void *zalloc(size_t n, size_t size)
     return p;
 }
 
+/* zalloc on a cache line: the pair passes read A, Q, Cv and wtab a short vector at a time
+ * (templates/body_forces.c), which then never straddles two lines. */
+static void *zalloc_lines(size_t n, size_t size)
+{
+    const size_t line = 64, bytes = ((n ? n * size : 1) + line - 1) / line * line;
+    void *p = aligned_alloc(line, bytes);
+    if (!p) {
+        sph_error("out of memory");
+        exit(SPH_EXIT_SETUP);
+    }
+    return memset(p, 0, bytes);
+}
+
 /* ------------------------------------------------------------------ particle order */
 
 /* Particles sorted by slabs across the body's longest extent, the shortest axis fastest:
@@ -90,9 +103,9 @@ static void allocate(sph_body *b)
     b->F = zalloc(n * 9, sizeof(double));
     for (size_t i = 0; i < n; i++)
         b->F[9 * i] = b->F[9 * i + 4] = b->F[9 * i + 8] = 1.0;
-    b->Q = zalloc(n * D * D, sizeof *b->Q);
-    b->A = zalloc(n * D * D, sizeof *b->A);
-    b->Cv = zalloc(n * D * D, sizeof *b->Cv);
+    b->Q = zalloc_lines(n * SPH_TENSOR_SIZE(D), sizeof *b->Q);
+    b->A = zalloc_lines(n * SPH_TENSOR_SIZE(D), sizeof *b->A);
+    b->Cv = zalloc_lines(n * SPH_TENSOR_SIZE(D), sizeof *b->Cv);
     b->psi = zalloc(n, sizeof(double));
     b->sigma = zalloc(n * 6, sizeof(double));
     b->fix = zalloc(n, 1);
@@ -226,7 +239,7 @@ static void table_entry(sph_body *b, int k, int i, long p, sph_kernel_kind kerne
     sph_pair_gradient(b->X, D, i, b->nb[p], kernel, b->h, b->vol, w);
     for (int c = 0; c < D; c++) {
         dX[c] = b->X[(size_t)i * D + c] - b->X[(size_t)b->nb[p] * D + c];
-        b->wtab[(size_t)k * D + c] = (sph_real)w[c];
+        b->wtab[(size_t)k * SPH_ROW(D) + c] = (sph_real)w[c];
         r2 += dX[c] * dX[c];
     }
     b->gtab[k] = (sph_real)viscosity_factor(b, dX, w);
@@ -288,7 +301,7 @@ static void offset_tables(sph_body *b, sph_kernel_kind kernel)
     } else
         ntab = (int)np;
     b->ntab = ntab;
-    b->wtab = zalloc((size_t)ntab * D, sizeof *b->wtab);
+    b->wtab = zalloc_lines((size_t)ntab * SPH_ROW(D), sizeof *b->wtab);
     b->gtab = zalloc((size_t)ntab, sizeof *b->gtab);
     b->htab = zalloc((size_t)ntab, sizeof *b->htab);
     if (b->desc->fracture)

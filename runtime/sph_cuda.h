@@ -72,8 +72,9 @@ static inline cudaError_t cudaGetLastError() { return cudaSuccess; }
 static inline void atomicAdd(double *a, double v) { *a += v; }
 #endif
 
-/* Q and Cv entry by entry on the device (sphrt.h): particle i's entry e at e*n + i. */
-#define SPH_AT(i, e, m, n) ((size_t)(e) * (size_t)(n) + (size_t)(i))
+/* Q and Cv entry by entry on the device (sphrt.h): particle i's entry (r, c) at
+ * (r*D + c)*n + i. */
+#define SPH_TENSOR(i, r, c, D, n) ((size_t)((r) * (D) + (c)) * (size_t)(n) + (size_t)(i))
 #define SPH_TIME_DEFINED /* sph_time: below, a value or the device clock's */
 #include "sphrt.h"
 
@@ -581,8 +582,8 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->work = (double *)sph_dev_copy(h->work, n * d * sizeof(double));
     b->F = (double *)sph_dev_copy(h->F, n * 9 * sizeof(double));
     b->L = (double *)sph_dev_copy(h->L, n * d * d * sizeof(double));
-    b->Q = (sph_real *)sph_dev_copy(h->Q, n * d * d * sizeof(sph_real));
-    b->Cv = (sph_real *)sph_dev_copy(h->Cv, n * d * d * sizeof(sph_real));
+    b->Q = (sph_real *)sph_dev_alloc(n * d * d * sizeof(sph_real)); /* each stress pass */
+    b->Cv = (sph_real *)sph_dev_alloc(n * d * d * sizeof(sph_real)); /* writes them whole */
     b->lam2 = (double *)sph_dev_copy(h->lam2, n * sizeof(double)); /* NULL without crush */
     b->psi = (double *)sph_dev_copy(h->psi, n * sizeof(double));
     b->fix = (uint8_t *)sph_dev_copy(h->fix, n);
@@ -594,7 +595,7 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->lap = (double *)sph_dev_copy(h->lap, n * sizeof(double));
     b->sd_n = (double *)sph_dev_copy(h->sd_n, n * sizeof(double));
     b->ltab = sph_dev_table(h->ltab, nt, 1); /* each with the zero entry of holes */
-    b->wtab = sph_dev_table(h->wtab, nt, d);
+    b->wtab = sph_dev_table(h->wtab, nt, SPH_ROW(d));
     b->gtab = sph_dev_table(h->gtab, nt, 1);
     b->htab = sph_dev_table(h->htab, nt, 1);
     int *count, *nb, *k, slots;

@@ -11,10 +11,11 @@
  *    coordinate `body->y_plane`.  sph_axis(dim, k) gives the 3D axis of component k.
  *  - Tensors of a body are stored per particle, row-major, dim×dim (`T[i*dim*dim + r*dim + c]`),
  *    except F, which is stored 3×3 (`F[i*9 + r*3 + c]`) so that 2D plane-strain values
- *    (F_yy = 1) and 3D values share one layout for output.
+ *    (F_yy = 1) and 3D values share one layout for output, and the pair passes' working
+ *    tensors A, Q and Cv, whose rows or columns are padded for short vectors (SPH_TENSOR).
  *  - Pairs are stored per particle (CSR, both directions): nb_start[i] .. nb_start[i+1]-1,
  *    neighbour nb[p].  Everything that depends only on the reference offset X_i - X_j is
- *    looked up through nb_k[p] in small tables: wtab[k*dim + c] = V_j dW/dX_i^c (the
+ *    looked up through nb_k[p] in small tables: wtab[k*SPH_ROW(dim) + c] = V_j dW/dX_i^c (the
  *    uncorrected kernel gradient times the neighbour volume; the corrected gradient is
  *    L_i · that) and gtab[k] (eq. 60, see setup.c).  On a particle lattice there are a few
  *    dozen distinct offsets, so a pair costs 8 bytes; otherwise the tables have one entry
@@ -292,13 +293,26 @@ typedef struct sph_monitor_sums {
  * with `precision single` link (their generated code defines SPH_SINGLE).  Positions,
  * displacements, velocities, accelerations, F, the material law and the time integration
  * are double in both. */
-/* Entry e of particle i's m entries in a per-particle array of n particles: particle by
- * particle (as above) on the CPU; entry by entry, a structure of arrays, in the CUDA target
- * (sph_cuda.h defines it first), so that a warp's threads read consecutive words.  Used for
- * the pair passes' working arrays Q and Cv, which only generated code reads. */
-#ifndef SPH_AT
-#define SPH_AT(i, e, m, n) ((size_t)(i) * (m) + (e))
+/* Entry (r, c) of particle i's D x D tensor Q or Cv (the pair passes' working arrays, which
+ * only generated code reads), of n particles.  The CPU target stores a particle's tensor
+ * column by column, each column padded with zeros to SPH_ROW(D) entries, so that its pair
+ * loops handle a column as one short vector (templates/body_forces.c); the CUDA target
+ * stores it entry by entry, a structure of arrays (sph_cuda.h defines SPH_TENSOR first), so
+ * that a warp's threads read consecutive words.  A per-particle tensor takes
+ * SPH_TENSOR_SIZE(D) entries on the CPU, D * D on the device; the offset table of kernel
+ * gradients wtab holds SPH_ROW(D) entries per offset on both. */
+#define SPH_ROW(D) ((D) == 3 ? 4 : (D))
+#define SPH_TENSOR_SIZE(D) ((D) * SPH_ROW(D))
+#ifndef SPH_TENSOR
+#define SPH_TENSOR(i, r, c, D, n) (((size_t)(i) * (D) + (size_t)(c)) * SPH_ROW(D) + (size_t)(r))
 #endif
+/* A short vector of R sph_real (GCC's and Clang's vector extensions), in which the CPU pair
+ * passes hold a row of A, a column of Q or Cv, or a table entry: whole-vector arithmetic,
+ * a scalar operand standing for R copies of itself.  Aligned like sph_real and aliasing it,
+ * so it loads from any place in those arrays. */
+#define SPH_VECTOR(name, R)                                                                    \
+    typedef sph_real name                                                                      \
+        __attribute__((vector_size((R) * sizeof(sph_real)), aligned(sizeof(sph_real)), may_alias))
 
 /* A time the passes read, t or dt: a double on the CPU; in the CUDA target (sph_cuda.h defines
  * it first) a reference to the device's clock, which the device advances itself. */
@@ -321,8 +335,8 @@ struct sph_body {
     double *u, *v, *a;  /* n*dim displacement, velocity, acceleration */
     double *F;          /* n*9 deformation gradient (3×3) */
     double *L;          /* n*dim*dim correction */
-    sph_real *Q;        /* n*dim*dim  P·L (first Piola–Kirchhoff times correction), SPH_AT */
-    sph_real *Cv;       /* n*dim*dim  cof(F) = J F^-T for artificial viscosity, SPH_AT */
+    sph_real *Q;        /* P·L (first Piola–Kirchhoff times correction), SPH_TENSOR */
+    sph_real *Cv;       /* cof(F) = J F^-T for artificial viscosity, SPH_TENSOR */
     double *psi;        /* n strain energy density */
     double *sigma;      /* n*6 Cauchy stress, filled at output */
     double *work;       /* n*dim scratch for integrators (symplectic: v at n) */
@@ -330,7 +344,7 @@ struct sph_body {
 
     int *nb_start, *nb;   /* CSR neighbour lists, both directions (set-up only; freed) */
     int *nb_k;            /* per pair: entry of the offset tables (set-up only; freed) */
-    sph_real *wtab;       /* ntab*dim: V_j grad W for each distinct offset */
+    sph_real *wtab;       /* ntab*SPH_ROW(dim): V_j grad W for each distinct offset (0-padded) */
     sph_real *gtab;       /* ntab: G_ij = gtab * (v_i - v_j) . w_ij  (eq. 60) */
     sph_real *htab;       /* ntab: V W(r0) / (rho0 r0^2), for the hourglass penalty */
     int ntab;
@@ -342,7 +356,8 @@ struct sph_body {
     int *hb_start, *hb, *hb_k;
     int *stripe;          /* nstripes + 1 particle indices */
     int nstripes;
-    sph_real *A;          /* n*dim*dim: sum_j (u_j - u_i) (x) w_ij, the pair part of eq. 53 */
+    sph_real *A;          /* n*SPH_TENSOR_SIZE(dim): sum_j (u_j - u_i) (x) w_ij, the pair part of
+                           * eq. 53, row by row, rows padded like wtab (CPU only) */
     /* Full lists (both directions) for device targets, whose threads each sum their own
      * particle's pairs, stored slot by slot: pair s of particle i (s < fb_count[i]) is
      * fb[s*n + i], so the threads of a warp read consecutive words.  fb_k is the offset table

@@ -23,7 +23,7 @@ static void @B@_stress_pass(sph_body *b)
         for (size_t p = i; p < end; p += n) {
             const int j = b->fb[p], k = b->fb_k[p];
             const double sg = k < 0 ? -1.0 : 1.0; /* ~k: the reversed pair */
-            const sph_real *w = w0 + (size_t)(k < 0 ? ~k : k) * D;
+            const sph_real *w = w0 + (size_t)(k < 0 ? ~k : k) * SPH_ROW(D);
             for (int r = 0; r < D; r++)
                 for (int c = 0; c < D; c++)
                     A[r * D + c] += (u[j * D + r] - u[i * D + r]) * sg * w[c];
@@ -53,20 +53,22 @@ static void @B@_momentum_pass(sph_body *b)
 //@endif
         const sph_real inv_rho = (sph_real)(1.0 / b->rho0);
         const size_t n = (size_t)b->n, end = i + n * (size_t)b->fb_count[i];
-        sph_real Qi[D * D]; /* Q and Cv entry by entry (SPH_AT) */
-        for (int e = 0; e < D * D; e++)
-            Qi[e] = b->Q[SPH_AT(i, e, D * D, n)];
+        sph_real Qi[D * D]; /* Q and Cv entry by entry (SPH_TENSOR) */
+        for (int r = 0; r < D; r++)
+            for (int c = 0; c < D; c++)
+                Qi[r * D + c] = b->Q[SPH_TENSOR(i, r, c, D, n)];
 //@if VISCOSITY
         sph_real Ci[D * D];
-        for (int e = 0; e < D * D; e++)
-            Ci[e] = b->Cv[SPH_AT(i, e, D * D, n)];
+        for (int r = 0; r < D; r++)
+            for (int c = 0; c < D; c++)
+                Ci[r * D + c] = b->Cv[SPH_TENSOR(i, r, c, D, n)];
         sph_real pv = 0;
 //@endif
         sph_real fi[D] = {0};
         for (size_t p = i; p < end; p += n) {
             const int j = b->fb[p], k = b->fb_k[p];
             const sph_real sg = k < 0 ? (sph_real)-1 : (sph_real)1;
-            const sph_real *wk = b->wtab + (size_t)(k < 0 ? ~k : k) * D;
+            const sph_real *wk = b->wtab + (size_t)(k < 0 ? ~k : k) * SPH_ROW(D);
             sph_real w[D];
             for (int c = 0; c < D; c++)
                 w[c] = sg * wk[c];
@@ -74,7 +76,7 @@ static void @B@_momentum_pass(sph_body *b)
             for (int r = 0; r < D; r++) {
                 sph_real s2 = 0;
                 for (int c = 0; c < D; c++)
-                    s2 += (Qi[r * D + c] + b->Q[SPH_AT(j, r * D + c, D * D, n)]) * w[c];
+                    s2 += (Qi[r * D + c] + b->Q[SPH_TENSOR(j, r, c, D, n)]) * w[c];
                 f[r] = s2 * inv_rho;
             }
 //@if VISCOSITY
@@ -84,7 +86,7 @@ static void @B@_momentum_pass(sph_body *b)
             for (int r = 0; r < D; r++) {
                 fv[r] = 0;
                 for (int c = 0; c < D; c++)
-                    fv[r] += (Ci[r * D + c] + b->Cv[SPH_AT(j, r * D + c, D * D, n)]) * w[c];
+                    fv[r] += (Ci[r * D + c] + b->Cv[SPH_TENSOR(j, r, c, D, n)]) * w[c];
                 vw += (sph_real)(b->v[i * D + r] - b->v[j * D + r]) * fv[r];
             }
             const sph_real G = b->gtab[k < 0 ? ~k : k] * (sph_real)0.5 * vw;

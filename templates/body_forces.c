@@ -5,14 +5,20 @@
  * thread takes a run of consecutive stripes of each colour, about the particles the static
  * particle loops (stress, update) give it, so what one pass writes is in the cache of the
  * thread that reads it next (docs/architecture.md: with dynamic scheduling a step of crack
- * branching took 1.8 times as long on two threads). */
+ * branching took 1.8 times as long on two threads).
+ * The pair loops hold a row of A, a column of Q or Cv and a table entry in one short vector
+ * (SPH_VECTOR, rows and columns padded with zeros to SPH_ROW(D) entries): a pair's outer
+ * product is D vector multiply-adds.  Written entry by entry, the compiler keeps every entry
+ * scalar, and the 3D plate's step took 1.7 times as long. */
 static void @B@_gradient_pass(sph_body *b)
 {
-    enum { D = @DIM@ };
+    enum { D = @DIM@, R = SPH_ROW(D) };
+    SPH_VECTOR(vec, R);
     const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
-    const sph_real *restrict wtab = b->wtab;
+    const vec *restrict wtab = (const vec *)b->wtab;
     const double *restrict u = b->u;
-    sph_real *restrict A = b->A; /* zero on entry: the stress pass clears what it read */
+    vec *restrict A = (vec *)b->A; /* row r of A_i at A[i*D + r]; zero on entry: the stress
+                                    * pass clears what it read */
 //@if FRACTURE
     /* the Laplacian of the phase field (eq. 62), a symmetric pair sum, rides along */
     const double *restrict sf = b->s;
@@ -23,28 +29,28 @@ static void @B@_gradient_pass(sph_body *b)
 #pragma omp parallel for schedule(static)
         for (int s = colour; s < b->nstripes; s += 2)
             for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
-                sph_real Ai[D * D] = {0};
+                vec Ai[D];
+                for (int r = 0; r < D; r++)
+                    Ai[r] = (vec){0};
 //@if FRACTURE
                 double lapi = 0;
 //@endif
                 for (int p = hs[i]; p < hs[i + 1]; p++) {
                     const int j = hb[p];
-                    const sph_real *w = wtab + (size_t)hk[p] * D;
+                    const vec w = wtab[hk[p]];
 //@if FRACTURE
                     const double lij = ltab[hk[p]] * (sf[i] - sf[j]);
                     lapi += lij;
                     lap[j] -= lij;
 //@endif
                     for (int r = 0; r < D; r++) {
-                        const sph_real du = (sph_real)(u[j * D + r] - u[i * D + r]);
-                        for (int c = 0; c < D; c++) {
-                            Ai[r * D + c] += du * w[c];
-                            A[(size_t)j * D * D + r * D + c] += du * w[c];
-                        }
+                        const vec t = (sph_real)(u[j * D + r] - u[i * D + r]) * w;
+                        Ai[r] += t;
+                        A[(size_t)j * D + r] += t;
                     }
                 }
-                for (int k = 0; k < D * D; k++)
-                    A[(size_t)i * D * D + k] += Ai[k];
+                for (int r = 0; r < D; r++)
+                    A[(size_t)i * D + r] += Ai[r];
 //@if FRACTURE
                 lap[i] += lapi;
 //@endif
@@ -55,17 +61,19 @@ static void @B@_gradient_pass(sph_body *b)
 /* Pass 2, per particle: F, the law, P L and cof(F) (@B@_particle_stress). */
 static void @B@_stress_pass(sph_body *b)
 {
-    enum { D = @DIM@ };
+    enum { D = @DIM@, R = SPH_ROW(D) };
     const int n = b->n;
     sph_real *restrict Ac = b->A;
     @B@_gradient_pass(b);
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; i++) {
+        sph_real *Ai = Ac + (size_t)i * D * R;
         double A[D * D];
-        for (int k = 0; k < D * D; k++) {
-            A[k] = Ac[(size_t)i * D * D + k];
-            Ac[(size_t)i * D * D + k] = 0; /* ready for the next step's gradient pass */
-        }
+        for (int r = 0; r < D; r++)
+            for (int c = 0; c < D; c++)
+                A[r * D + c] = Ai[r * R + c];
+        for (int k = 0; k < D * R; k++)
+            Ai[k] = 0; /* ready for the next step's gradient pass */
         @B@_particle_stress(b, i, A);
     }
 }
@@ -76,14 +84,17 @@ static void @B@_stress_pass(sph_body *b)
  * to i and subtracted from j, so linear momentum is conserved to round-off. */
 static void @B@_momentum_pass(sph_body *b)
 {
-    enum { D = @DIM@ };
+    enum { D = @DIM@, R = SPH_ROW(D) };
+    SPH_VECTOR(vec, R);
     const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
-    const sph_real *restrict wtab = b->wtab, *restrict Q = b->Q;
+    const sph_real *restrict wtab = b->wtab;
+    const vec *restrict Q = (const vec *)b->Q; /* column c of Q_i at Q[i*D + c] */
     double *restrict acc = b->a;
     const sph_real inv_rho = (sph_real)(1.0 / b->rho0);
 //@if VISCOSITY
     const double *restrict v = b->v;
-    const sph_real *restrict Cv = b->Cv, *restrict gtab = b->gtab;
+    const vec *restrict Cv = (const vec *)b->Cv;
+    const sph_real *restrict gtab = b->gtab;
 //@endif
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < b->n; i++)
@@ -106,23 +117,20 @@ static void @B@_momentum_pass(sph_body *b)
 //@endif
         for (int s = colour; s < b->nstripes; s += 2)
             for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
-                const sph_real *Qi = Q + (size_t)i * D * D;
+                const vec *Qi = Q + (size_t)i * D;
 //@if VISCOSITY
-                const sph_real *Ci = Cv + (size_t)i * D * D;
+                const vec *Ci = Cv + (size_t)i * D;
                 sph_real pv = 0;
 //@endif
-                sph_real fi[D] = {0};
+                vec fi = {0};
                 for (int p = hs[i]; p < hs[i + 1]; p++) {
                     const int j = hb[p], k = hk[p];
-                    const sph_real *w = wtab + (size_t)k * D;
-                    const sph_real *Qj = Q + (size_t)j * D * D;
-                    sph_real f[D];
-                    for (int r = 0; r < D; r++) {
-                        sph_real s2 = 0;
-                        for (int c = 0; c < D; c++)
-                            s2 += (Qi[r * D + c] + Qj[r * D + c]) * w[c];
-                        f[r] = s2 * inv_rho;
-                    }
+                    const sph_real *w = wtab + (size_t)k * R;
+                    const vec *Qj = Q + (size_t)j * D;
+                    vec f = {0}; /* (Q_i + Q_j) w, column by column */
+                    for (int c = 0; c < D; c++)
+                        f += (Qi[c] + Qj[c]) * w[c];
+                    f *= inv_rho;
 //@if VISCOSITY
                     /* The direction the viscous pressure acts along, fv = (J F^-T)_i w +
                      * (J F^-T)_j w (eq. 57 from both sides, without the correction L), and
@@ -133,14 +141,13 @@ static void @B@_momentum_pass(sph_body *b)
                      * positive (eq. 60 taken along X_i - X_j feeds energy in once a pair has
                      * turned by more than 90 degrees, and L in fv lets a boundary pair's G
                      * see a rigid rotation; docs/stability.md). */
-                    const sph_real *Cj = Cv + (size_t)j * D * D;
-                    sph_real fv[D], vw = 0;
-                    for (int r = 0; r < D; r++) {
-                        fv[r] = 0;
-                        for (int c = 0; c < D; c++)
-                            fv[r] += (Ci[r * D + c] + Cj[r * D + c]) * w[c];
+                    const vec *Cj = Cv + (size_t)j * D;
+                    vec fv = {0};
+                    for (int c = 0; c < D; c++)
+                        fv += (Ci[c] + Cj[c]) * w[c];
+                    sph_real vw = 0;
+                    for (int r = 0; r < D; r++)
                         vw += (sph_real)(v[i * D + r] - v[j * D + r]) * fv[r];
-                    }
                     const sph_real G = gtab[k] * (sph_real)0.5 * vw;
                     sph_real pi = (sph_real)(-@BETA1@ * @C0@) * G; /* eq. 58, times rho0 */
 //@if BETA2
@@ -148,17 +155,20 @@ static void @B@_momentum_pass(sph_body *b)
                     pi += (sph_real)@BETA2@ * Gc * Gc;
 //@endif
                     const sph_real hpi = (sph_real)0.5 * pi;
-                    for (int r = 0; r < D; r++)
-                        f[r] -= hpi * fv[r];
+                    f -= hpi * fv;
                     pv -= hpi * vw;
 //@endif
 //@if HOURGLASS
-                    @B@_hourglass(b, i, j, k, f);
+                    sph_real fh[D];
+                    for (int r = 0; r < D; r++)
+                        fh[r] = f[r];
+                    @B@_hourglass(b, i, j, k, fh);
+                    for (int r = 0; r < D; r++)
+                        f[r] = fh[r];
 //@endif
-                    for (int r = 0; r < D; r++) {
-                        fi[r] += f[r];
+                    fi += f;
+                    for (int r = 0; r < D; r++)
                         acc[j * D + r] -= f[r];
-                    }
                 }
                 for (int r = 0; r < D; r++)
                     acc[i * D + r] += fi[r];

@@ -92,7 +92,7 @@ SPH_FN void @B@_particle_stress(sph_body *b, int i, const double *A)
             double s = 0;
             for (int k = 0; k < D; k++)
                 s += P[r * D + k] * L[k * D + c];
-            b->Q[SPH_AT(i, r * D + c, D * D, b->n)] = (sph_real)s;
+            b->Q[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)s;
         }
 //@if VISCOSITY
     /* cof(F) = J F^-T: the Piola transform of the viscous pressure (eq. 57), without the
@@ -107,10 +107,10 @@ SPH_FN void @B@_particle_stress(sph_body *b, int i, const double *A)
         for (int c = 0; c < D; c++) {
             const double s = sph_cofactor(F, sph_axis(D, r), sph_axis(D, c));
 //@if FRACTURE
-            b->Cv[SPH_AT(i, r * D + c, D * D, b->n)] = (sph_real)(s * vdeg);
+            b->Cv[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)(s * vdeg);
 //@endif
 //@if NO_FRACTURE
-            b->Cv[SPH_AT(i, r * D + c, D * D, b->n)] = (sph_real)s;
+            b->Cv[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)s;
 //@endif
         }
 //@endif

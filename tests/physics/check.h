@@ -23,8 +23,10 @@ static void check_close(const char *what, double got, double want, double tol)
 static double check_max_stress(const sph_body *b)
 {
     double q = 0;
-    for (long i = 0; i < (long)b->n * b->dim * b->dim; i++)
-        q = fmax(q, fabs(b->Q[i]));
+    for (int i = 0; i < b->n; i++)
+        for (int r = 0; r < b->dim; r++)
+            for (int c = 0; c < b->dim; c++)
+                q = fmax(q, fabs(b->Q[SPH_TENSOR(i, r, c, b->dim, b->n)]));
     return q;
 }
 

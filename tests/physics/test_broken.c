@@ -32,8 +32,9 @@ int main(void)
             if (fabs(x0 - 0.0255) < 0.25e-3) {
                 for (int k = 0; k < 9; k++)
                     fdev = fmax(fdev, fabs(b->F[9 * i + k] - (k % 4 == 0)));
-                for (int k = 0; k < D * D; k++)
-                    q = fmax(q, fabs(b->Q[i * D * D + k]));
+                for (int r = 0; r < D; r++)
+                    for (int c = 0; c < D; c++)
+                        q = fmax(q, fabs(b->Q[SPH_TENSOR(i, r, c, D, b->n)]));
                 psi = fmax(psi, fabs(b->psi[i]));
             } else if (x0 < 0.01)
                 s_restricted = fmin(s_restricted, b->s[i]);

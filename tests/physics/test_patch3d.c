@@ -99,8 +99,9 @@ static void rigid_rotation(void)
     cube_nh_momentum_pass(b);
     double pmax = 0, amax = 0;
     for (int i = 0; i < b->n; i++) {
-        for (int k = 0; k < 9; k++)
-            pmax = fmax(pmax, fabs(b->Q[(size_t)i * 9 + k]));
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++)
+                pmax = fmax(pmax, fabs(b->Q[SPH_TENSOR(i, r, c, 3, b->n)]));
         for (int k = 0; k < 3; k++)
             amax = fmax(amax, fabs(b->a[(size_t)i * 3 + k]));
     }
