@@ -19,9 +19,10 @@ static const Setting *find_arg(const NamedCall *c, const char *key)
     return ast_find_setting(&c->args, key);
 }
 
-/* Every argument must be one of `allowed`, given once, with one value: a string for
- * `file`, numbers or vectors otherwise. */
-static int check_arg_names(const NamedCall *c, const char *const *allowed, int nallowed)
+/* Every argument must be one of `allowed`, given once, with one value (or, when several is
+ * set, one or more): a string for `file`, numbers or vectors otherwise. */
+static int check_arg_names(const NamedCall *c, const char *const *allowed, int nallowed,
+                           int several)
 {
     int bad = 0;
     for (int i = 0; i < c->args.n; i++) {
@@ -50,7 +51,7 @@ static int check_arg_names(const NamedCall *c, const char *const *allowed, int n
                 diag_error(s->loc, "argument '%s' of %s() given twice", s->key, c->name);
                 bad = 1;
             }
-        if (!s->text && s->nvalues != 1) {
+        if (s->text ? s->nvalues > 0 : !several && s->nvalues != 1) {
             diag_error(s->loc, "argument '%s' takes one value", s->key);
             bad = 1;
         }
@@ -87,7 +88,7 @@ static int need_positive(const Model *m, const NamedCall *c, const char *key, do
 static int check_box(const Model *m, const NamedCall *c, ShapePrim *p)
 {
     static const char *const args[] = {"from", "to", "size"};
-    if (check_arg_names(c, args, 3))
+    if (check_arg_names(c, args, 3, 0))
         return -1;
     p->kind = SHAPE_BOX;
     if (need_vec(m, c, "from", p->a))
@@ -116,7 +117,7 @@ static int check_surface(const NamedCall *c, ShapePrim *p)
 {
     static const char *const args[] = {"file"};
     p->kind = SHAPE_SURFACE;
-    if (check_arg_names(c, args, 1))
+    if (check_arg_names(c, args, 1, 0))
         return -1;
     const Setting *s = find_arg(c, "file");
     if (!s) {
@@ -141,6 +142,66 @@ static int check_surface(const NamedCall *c, ShapePrim *p)
     return 0;
 }
 
+/* The corners given after key (3 coordinates each) into p->pts from p->npts on. */
+static int corners(const Model *m, const Setting *s, ShapePrim *p)
+{
+    for (int k = 0; k < s->nvalues; k++)
+        if (check_vec3(m, s->values[k], s->key, p->pts + 3 * p->npts++))
+            return -1;
+    return 0;
+}
+
+/* prism(base [p1] [p2] .. top [q1] [q2] ..) and pyramid(apex [a] base [p1] [p2] ..), the
+ * solids of GenCase's <drawprism> and <drawpyramid>: their surface (runtime/mesh_solid.c)
+ * is built and checked now, and again by the program from the same corners. */
+static int check_solid(const Model *m, const NamedCall *c, ShapePrim *p)
+{
+    static const char *const prism_args[] = {"base", "top"}, *const pyramid_args[] = {"apex",
+                                                                                     "base"};
+    const int prism = strcmp(c->name, "prism") == 0;
+    const char *const *args = prism ? prism_args : pyramid_args;
+    p->kind = prism ? SHAPE_PRISM : SHAPE_PYRAMID;
+    if (check_arg_names(c, args, 2, 1))
+        return -1;
+    const Setting *s0 = find_arg(c, args[0]), *s1 = find_arg(c, args[1]);
+    if (!s0 || !s1) {
+        diag_error(c->loc, "%s() needs '%s'", c->name, args[s0 ? 1 : 0]);
+        return -1;
+    }
+    const Setting *base = prism ? s0 : s1;
+    if (!prism && s0->nvalues != 1) {
+        diag_error(s0->loc, "argument 'apex' takes one value");
+        return -1;
+    }
+    if (base->nvalues < 3) {
+        diag_error(base->loc, "the base of a %s needs at least 3 corners (got %d)", c->name,
+                   base->nvalues);
+        return -1;
+    }
+    if (prism && s1->nvalues != s0->nvalues) {
+        diag_error(s1->loc, "the top has %d corners and the base %d: a prism joins corner k "
+                   "of its base to corner k of its top", s1->nvalues, s0->nvalues);
+        return -1;
+    }
+    p->pts = malloc((size_t)(s0->nvalues + s1->nvalues) * 3 * sizeof *p->pts);
+    if (corners(m, s0, p) || corners(m, s1, p))
+        return -1;
+    sph_mesh mesh;
+    char err[1024];
+    if (sph_mesh_solid(prism ? SPH_SOLID_PRISM : SPH_SOLID_PYRAMID, p->pts, p->npts, &mesh, err,
+                       sizeof err)) {
+        diag_error(c->loc, "%s", err);
+        return -1;
+    }
+    for (int k = 0; k < 3; k++) {
+        p->a[k] = mesh.lo[k];
+        p->b[k] = mesh.hi[k];
+    }
+    p->volume = mesh.volume;
+    sph_mesh_free(&mesh);
+    return 0;
+}
+
 static int check_prim(const Model *m, const NamedCall *c, ShapePrim *p)
 {
     memset(p, 0, sizeof *p);
@@ -149,7 +210,7 @@ static int check_prim(const Model *m, const NamedCall *c, ShapePrim *p)
     if (strcmp(c->name, "cylinder") == 0) {
         static const char *const args[] = {"from", "to", "radius"};
         p->kind = SHAPE_CYLINDER;
-        if (check_arg_names(c, args, 3) || need_vec(m, c, "from", p->a) ||
+        if (check_arg_names(c, args, 3, 0) || need_vec(m, c, "from", p->a) ||
             need_vec(m, c, "to", p->b) || need_positive(m, c, "radius", &p->r))
             return -1;
         return 0;
@@ -157,14 +218,17 @@ static int check_prim(const Model *m, const NamedCall *c, ShapePrim *p)
     if (strcmp(c->name, "sphere") == 0) {
         static const char *const args[] = {"center", "radius"};
         p->kind = SHAPE_SPHERE;
-        if (check_arg_names(c, args, 2) || need_vec(m, c, "center", p->a) ||
+        if (check_arg_names(c, args, 2, 0) || need_vec(m, c, "center", p->a) ||
             need_positive(m, c, "radius", &p->r))
             return -1;
         return 0;
     }
     if (strcmp(c->name, "surface") == 0)
         return check_surface(c, p);
-    diag_error(c->loc, "unknown shape '%s' (expected box, cylinder, sphere or surface)", c->name);
+    if (strcmp(c->name, "prism") == 0 || strcmp(c->name, "pyramid") == 0)
+        return check_solid(m, c, p);
+    diag_error(c->loc, "unknown shape '%s' (expected box, cylinder, sphere, surface, prism or "
+               "pyramid)", c->name);
     return -1;
 }
 

@@ -496,9 +496,27 @@ void emit_where(FILE *out, SrcLoc loc)
     emit_c_string(out, buf);
 }
 
+/* The corners of the prisms and pyramids of region `name`, one table each (NAME_corners_K),
+ * which its sph_shape table then points to. */
+static void region_corners(Emitter *E, const char *name, const Region *r)
+{
+    for (int k = 0; k < r->n; k++) {
+        const ShapePrim *s = &r->prims[k];
+        if (!s->npts)
+            continue;
+        fprintf(E->out, "static const double %s_corners_%d[] = {\n", name, k);
+        for (int q = 0; q < s->npts; q++)
+            fprintf(E->out, "    %.17g, %.17g, %.17g,\n", s->pts[3 * q], s->pts[3 * q + 1],
+                    s->pts[3 * q + 2]);
+        fputs("};\n", E->out);
+    }
+}
+
 static void region(Emitter *E, const char *name, const Region *r)
 {
-    static const char *const kinds[] = {"SPH_BOX", "SPH_CYLINDER", "SPH_SPHERE", "SPH_MESH"};
+    static const char *const kinds[] = {"SPH_BOX",  "SPH_CYLINDER", "SPH_SPHERE",
+                                        "SPH_MESH", "SPH_PRISM",    "SPH_PYRAMID"};
+    region_corners(E, name, r);
     fprintf(E->out, "static const sph_shape %s[] = {\n", name);
     for (int k = 0; k < r->n; k++) {
         const ShapePrim *s = &r->prims[k];
@@ -509,7 +527,10 @@ static void region(Emitter *E, const char *name, const Region *r)
             emit_c_string(E->out, s->file);
         else
             fputs("NULL", E->out);
-        fputs("},\n", E->out);
+        if (s->npts)
+            fprintf(E->out, ", %s_corners_%d, %d},\n", name, k, s->npts);
+        else
+            fputs(", NULL, 0},\n", E->out);
     }
     fputs("};\n", E->out);
 }
@@ -580,7 +601,7 @@ static void body_desc_arrays(Emitter *E, const BodyModel *b)
 static double plane_y(const BodyModel *b)
 {
     const ShapePrim *s = &b->region.prims[0];
-    return s->kind == SHAPE_BOX || s->kind == SHAPE_SURFACE ? 0.5 * (s->a[1] + s->b[1]) : s->a[1];
+    return s->kind == SHAPE_CYLINDER || s->kind == SHAPE_SPHERE ? s->a[1] : 0.5 * (s->a[1] + s->b[1]);
 }
 
 static void bodies_desc(Emitter *E)

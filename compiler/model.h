@@ -7,14 +7,19 @@
 
 #include "ast.h"
 
-typedef enum { SHAPE_BOX, SHAPE_CYLINDER, SHAPE_SPHERE, SHAPE_SURFACE } ShapeKind;
+/* in the order of sph_shape_kind (runtime/sphrt.h) */
+typedef enum { SHAPE_BOX, SHAPE_CYLINDER, SHAPE_SPHERE, SHAPE_SURFACE, SHAPE_PRISM,
+               SHAPE_PYRAMID } ShapeKind;
 
 typedef struct {
     ShapeKind kind;
-    double a[3], b[3], r;   /* as sph_shape (runtime/sphrt.h); a surface: its bounding box */
+    double a[3], b[3], r;   /* as sph_shape (runtime/sphrt.h); a surface, prism or pyramid:
+                             * its bounding box */
     int subtract;
     char *file;             /* surface: the file, absolute (read by the program at run time) */
-    double volume;          /* surface: the volume it encloses */
+    double *pts;            /* prism, pyramid: npts corners, as sph_shape's */
+    int npts;
+    double volume;          /* surface, prism, pyramid: the volume it encloses */
 } ShapePrim;
 
 typedef struct {

@@ -5,7 +5,8 @@
 
 static void region(FILE *out, const char *what, const Region *r)
 {
-    static const char *const kinds[] = {"box", "cylinder", "sphere", "surface"};
+    static const char *const kinds[] = {"box", "cylinder", "sphere", "surface", "prism",
+                                        "pyramid"};
     fprintf(out, "    %s:", what);
     for (int k = 0; k < r->n; k++) {
         const ShapePrim *s = &r->prims[k];
@@ -13,6 +14,8 @@ static void region(FILE *out, const char *what, const Region *r)
                 kinds[s->kind], s->a[0], s->a[1], s->a[2], s->b[0], s->b[1], s->b[2], s->r);
         if (s->kind == SHAPE_SURFACE)
             fprintf(out, " volume=%.6g file=%s", s->volume, s->file);
+        if (s->npts)
+            fprintf(out, " volume=%.6g corners=%d", s->volume, s->npts);
     }
     fputs("\n", out);
 }

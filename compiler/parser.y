@@ -499,9 +499,11 @@ namedargs
     | namedargs ',' namedarg            { $$ = $1; ast_push_setting(&$$, $3); }
     ;
 
+/* A key with one value, or with several vectors: prism(base [..] [..] [..] top ...). */
 namedarg
     : argkey expr                       { $$ = ast_setting(LOC(@1), $1, $2); }
     | argkey STRING                     { $$ = ast_setting_text(LOC(@1), $1, $2); free($2); }
+    | namedarg vec                      { $$ = $1; ast_push_expr(&$$.values, &$$.nvalues, $2); }
     ;
 
 argkey

@@ -171,12 +171,21 @@ static void print_values(const Setting *s, FILE *out)
     print_list(s->values, s->nvalues, out);
 }
 
+/* name(key value ...): an argument of several values (the corners of a prism) lists them
+ * after its key, separated by spaces. */
 static void print_call(const NamedCall *c, const char *sep, FILE *out)
 {
     fprintf(out, "%s(", c->name);
     for (int i = 0; i < c->args.n; i++) {
-        fprintf(out, "%s%s ", i ? sep : "", c->args.items[i].key);
-        print_values(&c->args.items[i], out);
+        const Setting *s = &c->args.items[i];
+        fprintf(out, "%s%s ", i ? sep : "", s->key);
+        if (s->text)
+            fprintf(out, "\"%s\"", s->text);
+        for (int k = 0; k < s->nvalues; k++) {
+            if (k)
+                fputc(' ', out);
+            sph_print_expr(s->values[k], out);
+        }
     }
     fputc(')', out);
 }

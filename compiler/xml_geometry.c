@@ -199,7 +199,7 @@ static int drawbox(XmlCtx *x, const xmlNode *n, int mk)
         return -1;
     if (mk < 0)
         return no_mk("drawbox", loc);
-    XmlDraw d = {XD_BOX, mk, {0}, {0}, {{0}}, 0, NULL, x->freedraw, loc};
+    XmlDraw d = {XD_BOX, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, loc};
     for (int a = 0; a < 3; a++) {
         if (s[a] < 0) {
             diag_error(xml_loc(x, size), "<size>: %c = %g is negative", "xyz"[a], s[a]);
@@ -274,7 +274,7 @@ static int draw_span(XmlCtx *x, const char *tag, int a, double lo, double hi, Xm
 
 static int drawcylinder(XmlCtx *x, const xmlNode *n, int mk)
 {
-    XmlDraw d = {XD_CYLINDER, mk, {0}, {0}, {{0}}, 0, NULL, x->freedraw, xml_loc(x, n)};
+    XmlDraw d = {XD_CYLINDER, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, xml_loc(x, n)};
     if (read_round(x, n, mk, "drawcylinder", 2, "two <point>s (the ends of its axis)", &d))
         return -1;
     double len2 = 0;
@@ -299,7 +299,7 @@ static int drawcylinder(XmlCtx *x, const xmlNode *n, int mk)
  * the sphere cuts from the plane y = pointmin.y. */
 static int drawsphere(XmlCtx *x, const xmlNode *n, int mk)
 {
-    XmlDraw d = {XD_SPHERE, mk, {0}, {0}, {{0}}, 0, NULL, x->freedraw, xml_loc(x, n)};
+    XmlDraw d = {XD_SPHERE, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, xml_loc(x, n)};
     if (read_round(x, n, mk, "drawsphere", 1, "one <point> (its centre)", &d))
         return -1;
     if (x->dim == 2) { /* the disc in the plane of the case */
@@ -383,9 +383,108 @@ static int drawfile(XmlCtx *x, const xmlNode *n, int mk)
         return no_mk(xml_name(n), loc);
     if (surface_file_ok(x, n, file, loc))
         return -1;
-    XmlDraw d = {XD_SURFACE, mk, {0}, {0}, {{0}}, 0, file, x->freedraw, loc};
+    XmlDraw d = {XD_SURFACE, mk, {0}, {0}, {{0}}, 0, file, NULL, 0, x->freedraw, loc};
     for (int a = 0; a < 3; a++)
         d.hi[a] = x->nodes[a];
+    return add_draw(x, &d);
+}
+
+/* ------------------------------------------------------------------ <drawprism/pyramid> */
+
+/* In a 2D case a prism must be drawn along y (its top its base moved along y) across the
+ * plane of the case: its cut is then the same at every y, and it is redrawn over the y of
+ * both that plane and of the boxes' (0), so that a body of boxes and prisms has one plane. */
+static int prism_in_plane(const XmlCtx *x, XmlDraw *d)
+{
+    const int m = d->npts / 2;
+    const double dy = d->pts[3 * m + 1] - d->pts[1];
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (int k = 0; k < m; k++) {
+        const double *b = d->pts + 3 * k, *t = d->pts + 3 * (m + k);
+        if (b[1] != d->pts[1] || t[0] != b[0] || t[2] != b[2] || t[1] - b[1] != dy || dy == 0) {
+            diag_error(d->loc, "<drawprism> in a 2D case: only prisms drawn along y (the top "
+                               "the base moved along y) are supported");
+            return -1;
+        }
+        lo = fmin(lo, fmin(b[1], t[1]));
+        hi = fmax(hi, fmax(b[1], t[1]));
+    }
+    if (lo > x->pmin[1] + 1e-9 * x->dp || hi < x->pmin[1] - 1e-9 * x->dp)
+        return off_plane(x, "drawprism", d->loc);
+    const double y0 = fmin(0.0, x->pmin[1]) - x->dp, y1 = fmax(0.0, x->pmin[1]) + x->dp;
+    for (int k = 0; k < m; k++) {
+        d->pts[3 * k + 1] = y0;
+        d->pts[3 * (m + k) + 1] = y1;
+    }
+    return 0;
+}
+
+/* The solid's surface can be built (the model's checker builds it again with the body; here
+ * the error can name the card). */
+static int solid_ok(const XmlDraw *d, const char *tag)
+{
+    const char *what = d->kind == XD_PRISM ? "prism: " : "pyramid: ";
+    char err[1024];
+    sph_mesh mesh;
+    if (sph_mesh_solid(d->kind == XD_PRISM ? SPH_SOLID_PRISM : SPH_SOLID_PYRAMID, d->pts,
+                       d->npts, &mesh, err, sizeof err)) {
+        const size_t len = strlen(what);
+        diag_error(d->loc, "<%s>: %s", tag, strncmp(err, what, len) ? err : err + len);
+        return -1;
+    }
+    sph_mesh_free(&mesh);
+    return 0;
+}
+
+/* <drawprism> (the base's corners, then the top's, as many) and <drawpyramid> (the apex,
+ * then the base's corners): the sph prism and pyramid (runtime/mesh_solid.c).  The card's
+ * mask chooses the faces GenCase draws in its face mode; a body is the filled solid. */
+static int drawsolid(XmlCtx *x, const xmlNode *n, int mk)
+{
+    static const char *const attrs[] = {"mask", NULL};
+    static const char *const kids[] = {"point", NULL};
+    const int prism = xml_is(n, "drawprism");
+    const char *tag = xml_name(n);
+    XmlDraw d = {prism ? XD_PRISM : XD_PYRAMID, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0,
+                 x->freedraw, xml_loc(x, n)};
+    int bad = xml_check_attrs(x, n, attrs) != 0;
+    bad |= xml_check_children(x, n, kids) != 0;
+    int npoints = 0;
+    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
+        npoints += xml_is(c, "point");
+    d.pts = ast_alloc(((size_t)npoints + 1) * 3 * sizeof *d.pts);
+    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
+        if (xml_is(c, "point"))
+            bad |= xml_point(x, c, d.pts + 3 * d.npts++) != 0;
+    if (bad)
+        return -1;
+    if (prism ? npoints < 6 || npoints % 2 : npoints < 4) {
+        diag_error(d.loc, "<%s> needs %s, got %d <point>s", tag,
+                   prism ? "an even number of <point>s, at least 6 (the base's corners, then "
+                           "the top's)"
+                         : "at least 4 <point>s (the apex, then the base's corners)",
+                   npoints);
+        return -1;
+    }
+    if (mk < 0)
+        return no_mk(tag, d.loc);
+    if (x->dim == 2 && !prism) {
+        diag_error(d.loc, "<drawpyramid>: pyramids are supported in 3D cases only");
+        return -1;
+    }
+    if (x->dim == 2 && prism_in_plane(x, &d))
+        return -1;
+    if (solid_ok(&d, tag))
+        return -1;
+    for (int a = 0; a < 3; a++) { /* the nodes of the bounding box */
+        double lo = HUGE_VAL, hi = -HUGE_VAL;
+        for (int k = 0; k < d.npts; k++) {
+            lo = fmin(lo, d.pts[3 * k + a]);
+            hi = fmax(hi, d.pts[3 * k + a]);
+        }
+        if (!(x->dim == 2 && a == 1) && draw_span(x, tag, a, lo, hi, &d))
+            return -1;
+    }
     return add_draw(x, &d);
 }
 
@@ -393,8 +492,8 @@ static int drawfile(XmlCtx *x, const xmlNode *n, int mk)
 static int unsupported_drawing(const XmlCtx *x, const xmlNode *n)
 {
     diag_error(xml_loc(x, n), "<%s>: this drawing command is not supported by the importer yet "
-                              "(<drawbox>, <drawcylinder>, <drawsphere>, <drawfilevtk> and "
-                              "<drawfilestl> are)",
+                              "(<drawbox>, <drawcylinder>, <drawsphere>, <drawprism>, "
+                              "<drawpyramid>, <drawfilevtk> and <drawfilestl> are)",
                xml_name(n));
     return -1;
 }
@@ -424,6 +523,8 @@ static int command(XmlCtx *x, const xmlNode *n, int *mk)
         return drawsphere(x, n, *mk);
     if (xml_is(n, "drawfilevtk") || xml_is(n, "drawfilestl"))
         return drawfile(x, n, *mk);
+    if (xml_is(n, "drawprism") || xml_is(n, "drawpyramid"))
+        return drawsolid(x, n, *mk);
     if (xml_is(n, "setfrdrawmode"))
         return setfrdrawmode(x, n);
     if (is_accepted(n))

@@ -23,7 +23,7 @@
 
 /* One drawing of the mainlist.  lo..hi: the GenCase lattice nodes a <drawbox> covers, per
  * axis, or those of the bounding box of another drawing (inclusive; in 2D y is 0..0). */
-typedef enum { XD_BOX, XD_CYLINDER, XD_SURFACE, XD_SPHERE } XmlDrawKind;
+typedef enum { XD_BOX, XD_CYLINDER, XD_SURFACE, XD_SPHERE, XD_PRISM, XD_PYRAMID } XmlDrawKind;
 
 typedef struct {
     XmlDrawKind kind;
@@ -33,6 +33,8 @@ typedef struct {
                                  <drawsphere>: its centre (p[0]) and radius (in a 2D case
                                  the disc it cuts from the plane of the case) */
     const char *file;         /* <drawfilevtk>, <drawfilestl>: the file, as written */
+    double *pts;              /* <drawprism>, <drawpyramid>: npts corners, in the order of */
+    int npts;                 /* the card (a prism: the base's, then the top's) */
     int freedraw;             /* drawn in GenCase's free drawing mode (<setfrdrawmode>) */
     SrcLoc loc;
 } XmlDraw;

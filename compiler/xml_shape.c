@@ -82,8 +82,26 @@ static ShapeExpr *surface_shape(const XmlDraw *d)
     return ast_shape_prim(call);
 }
 
+/* prism(base [..] .. top [..] ..), pyramid(apex [..] base [..] ..): the card's corners */
+static ShapeExpr *solid_shape(const XmlDraw *d)
+{
+    const int prism = d->kind == XD_PRISM, first = prism ? d->npts / 2 : 1;
+    NamedCall call = {ast_strdup(prism ? "prism" : "pyramid"), d->loc, {0}};
+    Setting s0 = ast_setting(d->loc, prism ? "base" : "apex", vec3(d->loc, d->pts));
+    Setting s1 = ast_setting(d->loc, prism ? "top" : "base", vec3(d->loc, d->pts + 3 * first));
+    for (int k = 1; k < first; k++)
+        ast_push_expr(&s0.values, &s0.nvalues, vec3(d->loc, d->pts + 3 * k));
+    for (int k = first + 1; k < d->npts; k++)
+        ast_push_expr(&s1.values, &s1.nvalues, vec3(d->loc, d->pts + 3 * k));
+    ast_push_setting(&call.args, s0);
+    ast_push_setting(&call.args, s1);
+    return ast_shape_prim(call);
+}
+
 static ShapeExpr *draw_shape(const XmlCtx *x, const XmlDraw *d)
 {
+    if (d->kind == XD_PRISM || d->kind == XD_PYRAMID)
+        return solid_shape(d);
     if (d->kind == XD_CYLINDER)
         return cylinder_shape(d->p[0], d->p[1], d->r, d->loc);
     if (d->kind == XD_SURFACE)

@@ -4,6 +4,7 @@
  *   mesh_check.c  the closed-surface check, consistent outward orientation, volume
  *   mesh_ray.c    the crossing of a triangle by a vertical ray (robust on edges and vertices)
  *   mesh_query.c  bounding-volume hierarchy, inside test, distance to the surface
+ *   mesh_solid.c  the surface of a prism or pyramid given by its corners
  *   mesh_cache.c  loading each file once per run (sph_mesh_get)
  *
  * The compiler uses mesh_read.c, mesh_check.c and mesh_ray.c to check a surface when it
@@ -64,8 +65,17 @@ int sph_mesh_inside(const sph_mesh *m, const double p[3]);
 /* Distance from p to the surface, or `limit` when it is larger than that. */
 double sph_mesh_distance(const sph_mesh *m, const double p[3], double limit);
 
+/* mesh_solid.c: the surface of a prism (pts: the base's corners, then the top's, as many)
+ * or a pyramid (pts: the apex, then the base's corners), npts points of 3 coordinates,
+ * closed and checked as by sph_mesh_close.  Returns 0, or -1 with a message in err. */
+typedef enum { SPH_SOLID_PRISM, SPH_SOLID_PYRAMID } sph_solid_kind;
+int sph_mesh_solid(sph_solid_kind kind, const double *pts, int npts, sph_mesh *m, char *err,
+                   size_t len);
+
 /* mesh_cache.c: the surface in file, loaded, checked and indexed on first use (thread
  * safe); prints the error and exits with status 4 (set-up failed) when it cannot be. */
 const sph_mesh *sph_mesh_get(const char *file);
+/* The same for the solid of npts corners pts, known by the address of its corners. */
+const sph_mesh *sph_mesh_get_solid(sph_solid_kind kind, const double *pts, int npts);
 
 #endif

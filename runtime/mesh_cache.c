@@ -1,9 +1,10 @@
-/* mesh_cache.c — each surface file loaded once per run (mesh.h).
+/* mesh_cache.c — each surface loaded or built once per run (mesh.h).
  *
- * Shapes name their surface by file; region.c asks for it at every point it tests, from
- * many threads.  The table is only appended to: a new entry is written completely, under a
- * lock, before the count that makes it visible is published (an atomic store), so readers
- * scan the published entries without locking. */
+ * Shapes name their surface by file, or (prisms and pyramids) by their table of corners in
+ * the generated program; region.c asks for it at every point it tests, from many threads.
+ * The table is only appended to: a new entry is written completely, under a lock, before
+ * the count that makes it visible is published (an atomic store), so readers scan the
+ * published entries without locking. */
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,43 +16,57 @@
 enum { MAX_MESHES = 256 };
 
 static struct {
-    const char *file;
+    const char *file;  /* a surface file, or NULL */
+    const double *pts; /* a solid's corners (the program's own table), or NULL */
     sph_mesh mesh;
 } table[MAX_MESHES];
 static atomic_int published;
 
-static const sph_mesh *find(const char *file, int n)
+static const sph_mesh *find(const char *file, const double *pts, int n)
 {
     for (int i = 0; i < n; i++)
-        if (!strcmp(table[i].file, file))
+        if (file ? table[i].file && !strcmp(table[i].file, file) : table[i].pts == pts)
             return &table[i].mesh;
     return NULL;
 }
 
-const sph_mesh *sph_mesh_get(const char *file)
+/* The surface of file, or of the solid of npts corners pts (file NULL). */
+static const sph_mesh *get(const char *file, sph_solid_kind kind, const double *pts, int npts)
 {
-    const sph_mesh *m = find(file, atomic_load(&published));
+    const sph_mesh *m = find(file, pts, atomic_load(&published));
     if (m)
         return m;
 #pragma omp critical(sph_mesh_cache)
     {
         int n = atomic_load(&published);
-        m = find(file, n);
+        m = find(file, pts, n);
         if (!m) {
             char err[1024];
             if (n == MAX_MESHES) {
-                sph_error("more than %d surface files", MAX_MESHES);
+                sph_error("more than %d surface files and solids", MAX_MESHES);
                 exit(SPH_EXIT_SETUP);
             }
-            if (sph_mesh_load(file, &table[n].mesh, err, sizeof err)) {
+            if (file ? sph_mesh_load(file, &table[n].mesh, err, sizeof err)
+                     : sph_mesh_solid(kind, pts, npts, &table[n].mesh, err, sizeof err)) {
                 sph_error("%s", err);
                 exit(SPH_EXIT_SETUP);
             }
             sph_mesh_index(&table[n].mesh);
-            table[n].file = strdup(file);
+            table[n].file = file ? strdup(file) : NULL;
+            table[n].pts = pts;
             m = &table[n].mesh;
             atomic_store(&published, n + 1);
         }
     }
     return m;
+}
+
+const sph_mesh *sph_mesh_get(const char *file)
+{
+    return get(file, SPH_SOLID_PRISM, NULL, 0);
+}
+
+const sph_mesh *sph_mesh_get_solid(sph_solid_kind kind, const double *pts, int npts)
+{
+    return get(NULL, kind, pts, npts);
 }

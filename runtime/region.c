@@ -12,7 +12,8 @@
  *    sphere of radius r around a (this is what a y-axis cylinder becomes in 2D);
  *  - sphere: centre a, radius r;
  *  - mesh: the inside of the closed surface in file (mesh.h; loaded on first use), on its
- *    surface included; its signed distance is the distance to the nearest triangle.
+ *    surface included; its signed distance is the distance to the nearest triangle;
+ *  - prism, pyramid: as a mesh, the surface built from the corners (mesh_solid.c).
  *
  * Distance: every primitive has an exact signed distance sd (negative inside); the region's
  * value is folded in order with the usual CSG rules, union s = min(s, sd) and difference
@@ -84,7 +85,7 @@ static sph_shape prim_in_plane(const sph_shape *s, double y)
     if (s->kind == SPH_BOX) {
         o.a[1] = -HUGE_VAL;
         o.b[1] = HUGE_VAL;
-    } else if (s->kind != SPH_MESH) {
+    } else if (s->kind == SPH_CYLINDER || s->kind == SPH_SPHERE) {
         o.a[1] = o.b[1] = y;
     }
     return o;
@@ -96,6 +97,17 @@ static sph_shape prim_for_dim(const sph_shape *s, int dim, double y)
     return dim == 2 ? prim_in_plane(s, y) : *s;
 }
 
+/* The closed surface of a mesh, prism or pyramid; NULL for the other primitives. */
+static const sph_mesh *prim_mesh(const sph_shape *s)
+{
+    switch (s->kind) {
+    case SPH_MESH: return sph_mesh_get(s->file);
+    case SPH_PRISM: return sph_mesh_get_solid(SPH_SOLID_PRISM, s->pts, s->npts);
+    case SPH_PYRAMID: return sph_mesh_get_solid(SPH_SOLID_PYRAMID, s->pts, s->npts);
+    default: return NULL;
+    }
+}
+
 /* Signed distance to one primitive. */
 static double prim_sd(const sph_shape *s, const double p[3])
 {
@@ -103,8 +115,10 @@ static double prim_sd(const sph_shape *s, const double p[3])
     case SPH_BOX: return box_sd(s, p);
     case SPH_CYLINDER: return cylinder_sd(s, p);
     case SPH_SPHERE: return ball_sd(s->a, s->r, p);
-    case SPH_MESH: {
-        const sph_mesh *m = sph_mesh_get(s->file);
+    case SPH_MESH:
+    case SPH_PRISM:
+    case SPH_PYRAMID: {
+        const sph_mesh *m = prim_mesh(s);
         double d = sph_mesh_distance(m, p, HUGE_VAL);
         return sph_mesh_inside(m, p) ? -d : d;
     }
@@ -116,9 +130,9 @@ static double prim_sd(const sph_shape *s, const double p[3])
  * mesh's surface is known to m->eps only (single-precision files): tol is at least that. */
 static int prim_within(const sph_shape *s, const double p[3], double tol)
 {
-    if (s->kind != SPH_MESH)
+    const sph_mesh *m = prim_mesh(s);
+    if (!m)
         return prim_sd(s, p) <= tol;
-    const sph_mesh *m = sph_mesh_get(s->file);
     if (sph_mesh_inside(m, p))
         return 1;
     tol = fmax(tol, m->eps);
@@ -133,7 +147,7 @@ static void prim_bbox(const sph_shape *s, double lo[3], double hi[3])
         ba[k] = s->b[k] - s->a[k];
         len2 += ba[k] * ba[k];
     }
-    const sph_mesh *m = s->kind == SPH_MESH ? sph_mesh_get(s->file) : NULL;
+    const sph_mesh *m = prim_mesh(s);
     for (int k = 0; k < 3; k++) {
         if (m) {
             lo[k] = m->lo[k];

@@ -51,7 +51,7 @@ enum {
 
 /* ------------------------------------------------------------------ geometry */
 
-typedef enum { SPH_BOX, SPH_CYLINDER, SPH_SPHERE, SPH_MESH } sph_shape_kind;
+typedef enum { SPH_BOX, SPH_CYLINDER, SPH_SPHERE, SPH_MESH, SPH_PRISM, SPH_PYRAMID } sph_shape_kind;
 
 typedef struct {
     sph_shape_kind kind;
@@ -60,6 +60,8 @@ typedef struct {
     double r;    /* cylinder, sphere: radius                                */
     int subtract;/* 1: this primitive is removed from the union of the previous ones */
     const char *file; /* mesh: a closed surface, VTK or STL (mesh.h); loaded at first use */
+    const double *pts;/* prism: the base's corners, then the top's; pyramid: the apex, then */
+    int npts;         /* the base's corners (npts points, mesh.h); its surface built at first use */
 } sph_shape;
 
 typedef struct {

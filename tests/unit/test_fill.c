@@ -28,7 +28,7 @@ static void test_box_counts(void)
 {
     char what[200];
     double *X;
-    sph_shape b2 = { SPH_BOX, { 0, 0, 0 }, { 0.2, 0, 0.02 }, 0, 0, NULL };
+    sph_shape b2 = { SPH_BOX, { 0, 0, 0 }, { 0.2, 0, 0.02 }, 0, 0, NULL, NULL, 0 };
     int n = fill(&b2, 1, 2, 0.25e-3, 0.0, &X);
     double xmin = HUGE_VAL, xmax = -HUGE_VAL;
     for (int i = 0; i < n; i++) {
@@ -39,12 +39,12 @@ static void test_box_counts(void)
              "64000), x in [%.6g, %.6g]", n, xmin, xmax);
     check(n == 64000 && fabs(xmin - 0.125e-3) < 1e-12 && fabs(xmax - 0.199875) < 1e-12, what);
     free(X);
-    sph_shape b2b = { SPH_BOX, { -2e-3, 0, 0 }, { 200e-3, 0, 20e-3 }, 0, 0, NULL };
+    sph_shape b2b = { SPH_BOX, { -2e-3, 0, 0 }, { 200e-3, 0, 20e-3 }, 0, 0, NULL, NULL, 0 };
     n = fill(&b2b, 1, 2, 1e-3, 0.0, &X);
     snprintf(what, sizeof what, "2D box [-2e-3, 0.2] x [0, 0.02], dx 1e-3: %d (expected 4040)", n);
     check(n == 4040, what);
     free(X);
-    sph_shape b3 = { SPH_BOX, { 0, 0, 0 }, { 0.2, 0.01, 0.02 }, 0, 0, NULL };
+    sph_shape b3 = { SPH_BOX, { 0, 0, 0 }, { 0.2, 0.01, 0.02 }, 0, 0, NULL, NULL, 0 };
     n = fill(&b3, 1, 3, 1e-3, 0.0, &X);
     snprintf(what, sizeof what, "3D box 0.2 x 0.01 x 0.02, dx 1e-3: %d (expected 40000)", n);
     check(n == 40000, what);
@@ -68,16 +68,16 @@ static void check_volume(const char *name, const sph_shape *p, int np, int dim, 
 /* Spheres and cylinders in 3D and their 2D versions. */
 static void test_volumes(void)
 {
-    sph_shape sph = { SPH_SPHERE, { 0.3, -0.2, 0.1 }, { 0, 0, 0 }, 1.0, 0, NULL };
+    sph_shape sph = { SPH_SPHERE, { 0.3, -0.2, 0.1 }, { 0, 0, 0 }, 1.0, 0, NULL, NULL, 0 };
     check_volume("3D sphere r 1, dx 0.1", &sph, 1, 3, 0.1, 4.0 / 3.0 * PI);
-    sph_shape cx = { SPH_CYLINDER, { 0, 0, 0 }, { 3, 0, 0 }, 1.0, 0, NULL };
+    sph_shape cx = { SPH_CYLINDER, { 0, 0, 0 }, { 3, 0, 0 }, 1.0, 0, NULL, NULL, 0 };
     check_volume("3D cylinder along x, r 1, L 3", &cx, 1, 3, 0.1, PI * 3);
-    sph_shape co = { SPH_CYLINDER, { 0, 0, 0 }, { 1, 2, 2 }, 1.0, 0, NULL };
+    sph_shape co = { SPH_CYLINDER, { 0, 0, 0 }, { 1, 2, 2 }, 1.0, 0, NULL, NULL, 0 };
     check_volume("3D oblique cylinder r 1, L 3", &co, 1, 3, 0.1, PI * 3);
     check_volume("2D sphere -> disc r 1", &sph, 1, 2, 0.1, PI);
-    sph_shape cy = { SPH_CYLINDER, { 0.5, -1, 0.5 }, { 0.5, 1, 0.5 }, 1.0, 0, NULL };
+    sph_shape cy = { SPH_CYLINDER, { 0.5, -1, 0.5 }, { 0.5, 1, 0.5 }, 1.0, 0, NULL, NULL, 0 };
     check_volume("2D cylinder along y -> disc r 1", &cy, 1, 2, 0.1, PI);
-    sph_shape cr = { SPH_CYLINDER, { 0, 0, 0.5 }, { 2, 0, 0.5 }, 0.5, 0, NULL };
+    sph_shape cr = { SPH_CYLINDER, { 0, 0, 0.5 }, { 2, 0, 0.5 }, 0.5, 0, NULL, NULL, 0 };
     double *X;
     int n = fill(&cr, 1, 2, 0.1, 0.0, &X);
     char what[200];
@@ -91,8 +91,8 @@ static void test_csg(void)
 {
     char what[200];
     double *X, dx = 0.1, dmin = HUGE_VAL;
-    sph_shape d[2] = { { SPH_BOX, { -1, -1, -1 }, { 1, 1, 1 }, 0, 0, NULL },
-                       { SPH_SPHERE, { 0, 0, 0 }, { 0, 0, 0 }, 0.5, 1, NULL } };
+    sph_shape d[2] = { { SPH_BOX, { -1, -1, -1 }, { 1, 1, 1 }, 0, 0, NULL, NULL, 0 },
+                       { SPH_SPHERE, { 0, 0, 0 }, { 0, 0, 0 }, 0.5, 1, NULL, NULL, 0 } };
     int n = fill(d, 2, 3, dx, 0.0, &X), inball = 0;
     for (int a = 0; a < 20; a++)  /* lattice points of the box inside the ball */
         for (int b = 0; b < 20; b++)
@@ -108,13 +108,13 @@ static void test_csg(void)
              "%.4f > 0.5, volume %.4f vs %.4f", n, inball, dmin, v, exact);
     check(n == 8000 - inball && dmin > 0.5 && fabs(v / exact - 1) < 2e-2, what);
     free(X);
-    sph_shape u[2] = { { SPH_BOX, { 0, 0, 0 }, { 1, 0, 1 }, 0, 0, NULL },
-                       { SPH_BOX, { 0.5, 0, 0.5 }, { 1.5, 0, 1.5 }, 0, 0, NULL } };
+    sph_shape u[2] = { { SPH_BOX, { 0, 0, 0 }, { 1, 0, 1 }, 0, 0, NULL, NULL, 0 },
+                       { SPH_BOX, { 0.5, 0, 0.5 }, { 1.5, 0, 1.5 }, 0, 0, NULL, NULL, 0 } };
     n = fill(u, 2, 2, dx, 0.0, &X);
     snprintf(what, sizeof what, "2D union of overlapping unit boxes: %d (expected 175)", n);
     check(n == 175, what);
     free(X);
-    sph_shape only = { SPH_SPHERE, { 0, 0, 0 }, { 0, 0, 0 }, 1.0, 1, NULL };
+    sph_shape only = { SPH_SPHERE, { 0, 0, 0 }, { 0, 0, 0 }, 1.0, 1, NULL, NULL, 0 };
     n = fill(&only, 1, 3, dx, 0.0, &X);
     check(n == 0 && X == NULL, "region with only a subtracted primitive: 0 particles");
 }
@@ -124,7 +124,7 @@ static void test_order(void)
 {
     char what[200];
     double *X, dx = 0.5;
-    sph_shape b = { SPH_BOX, { 0, 0, 0 }, { 20, 7, 12 }, 0, 0, NULL };
+    sph_shape b = { SPH_BOX, { 0, 0, 0 }, { 20, 7, 12 }, 0, 0, NULL, NULL, 0 };
     int ok = 1;
     for (int dim = 2; dim <= 3; dim++) {
         int n = fill(&b, 1, dim, dx, 3.0, &X), T = dim == 2 ? 16 : 8;
@@ -154,9 +154,9 @@ static void test_order(void)
 static void test_region(void)
 {
     char what[200];
-    sph_shape box = { SPH_BOX, { 0, 0, 0 }, { 1, 1, 1 }, 0, 0, NULL };
-    sph_shape cyl = { SPH_CYLINDER, { 0, 0, 0 }, { 0, 0, 2 }, 0.5, 0, NULL };
-    sph_shape d[2] = { box, { SPH_SPHERE, { 1, 1, 1 }, { 0, 0, 0 }, 0.5, 1, NULL } };
+    sph_shape box = { SPH_BOX, { 0, 0, 0 }, { 1, 1, 1 }, 0, 0, NULL, NULL, 0 };
+    sph_shape cyl = { SPH_CYLINDER, { 0, 0, 0 }, { 0, 0, 2 }, 0.5, 0, NULL, NULL, 0 };
+    sph_shape d[2] = { box, { SPH_SPHERE, { 1, 1, 1 }, { 0, 0, 0 }, 0.5, 1, NULL, NULL, 0 } };
     sph_region rb = { .prims = &box, .n = 1 }, rc = { .prims = &cyl, .n = 1 };
     sph_region rd = { .prims = d, .n = 2 };
     double p1[3] = { 2, 2, 2 }, p2[3] = { 0.5, 0.5, 0.5 }, p3[3] = { 1.5, 0, 3 };
@@ -181,7 +181,7 @@ static void test_lattice(void)
     /* r = 3.2, L = 32.4, dx = 0.5: 13 cells across (axis on a node: 129 per layer, the
      * lattice points with i^2 + j^2 <= 6.4^2) and 65 layers; cells from the bounding box
      * minimum would put 131 in a layer (N dx^3 2.1 % above the volume). */
-    sph_shape bar = { SPH_CYLINDER, { 0, 0, 0 }, { 0, 0, 32.4e-3 }, 3.2e-3, 0, NULL };
+    sph_shape bar = { SPH_CYLINDER, { 0, 0, 0 }, { 0, 0, 32.4e-3 }, 3.2e-3, 0, NULL, NULL, 0 };
     int n = fill(&bar, 1, 3, 0.5e-3, 0.0, &X), on_axis = 0;
     for (int i = 0; i < n; i++)
         on_axis += fabs(X[3 * i]) < 1e-12 && fabs(X[3 * i + 1]) < 1e-12;
@@ -192,7 +192,7 @@ static void test_lattice(void)
     free(X);
     /* Unit cube, cells with a corner at -0.05: the nodes 0, 0.1, ..., 1 (11 per axis), those on
      * the faces included. */
-    sph_shape cube = { SPH_BOX, { 0, 0, 0 }, { 1, 1, 1 }, 0, 0, NULL };
+    sph_shape cube = { SPH_BOX, { 0, 0, 0 }, { 1, 1, 1 }, 0, 0, NULL, NULL, 0 };
     sph_region r = { .prims = &cube, .n = 1, .has_corner = 1, .corner = { -0.05, -0.05, -0.05 } };
     n = sph_fill_region(&r, 3, 0.1, 0.0, &X);
     double lo = HUGE_VAL, hi = -HUGE_VAL;
@@ -215,11 +215,11 @@ static void test_too_large(void)
 {
     char what[200];
     double *X = NULL;
-    sph_shape cube = { SPH_BOX, { 0, 0, 0 }, { 1, 1, 1 }, 0, 0, NULL };
+    sph_shape cube = { SPH_BOX, { 0, 0, 0 }, { 1, 1, 1 }, 0, 0, NULL, NULL, 0 };
     int n = fill(&cube, 1, 3, 1e-4, 0.0, &X);
     snprintf(what, sizeof what, "unit cube at dx 1e-4 (1e12 points): %d (expected -1)", n);
     check(n == -1 && !X, what);
-    sph_shape bar = { SPH_BOX, { 0, 0, 0 }, { 1, 0, 1e-30 }, 0, 0, NULL };
+    sph_shape bar = { SPH_BOX, { 0, 0, 0 }, { 1, 0, 1e-30 }, 0, 0, NULL, NULL, 0 };
     n = fill(&bar, 1, 2, 1e-25, 0.0, &X);
     snprintf(what, sizeof what, "2D bar 1 x 1e-30 at dx 1e-25 (1e25 points along x): %d "
              "(expected -1)", n);

@@ -50,7 +50,7 @@ static double depth(const double *X, int i, int dim, const double *lo, const dou
 /* One box in dim dimensions with one kernel. */
 static void test_box(int dim, sph_kernel_kind kern, const double hi3[3], double dx)
 {
-    sph_shape box = { SPH_BOX, { 0, 0, 0 }, { hi3[0], dim == 2 ? 0 : hi3[1], hi3[2] }, 0, 0, NULL };
+    sph_shape box = { SPH_BOX, { 0, 0, 0 }, { hi3[0], dim == 2 ? 0 : hi3[1], hi3[2] }, 0, 0, NULL, NULL, 0 };
     sph_region reg = { .prims = &box, .n = 1 };
     double *X, *w, *L, A[9], lo[3] = { 0, 0, 0 }, hi[3];
     int *st, *nb, n = sph_fill_region(&reg, dim, dx, 0.0, &X);

@@ -236,7 +236,7 @@ static double write_stl_binary(const char *path, const trimesh *m)
 /* Fills the surface in file (one mesh primitive) with lattice spacing dx. */
 static int fill_mesh(const char *file, double dx, int has_corner, double corner, double **X)
 {
-    sph_shape s = {SPH_MESH, {0, 0, 0}, {0, 0, 0}, 0, 0, file};
+    sph_shape s = {SPH_MESH, {0, 0, 0}, {0, 0, 0}, 0, 0, file, NULL, 0};
     sph_region r = {.prims = &s, .n = 1, .has_corner = has_corner,
                     .corner = {corner, corner, corner}};
     return sph_fill_region(&r, 3, dx, 0.0, X);
@@ -269,7 +269,7 @@ static void test_cube(void)
     snprintf(what, sizeof what, "cube filled at dx 0.05: %d (expected 20^3 = 8000)", n);
     check(n == 8000, what);
     free(X);
-    sph_shape s = {SPH_MESH, {0, 0, 0}, {0, 0, 0}, 0, 0, tmp("cube_binary.vtk")};
+    sph_shape s = {SPH_MESH, {0, 0, 0}, {0, 0, 0}, 0, 0, tmp("cube_binary.vtk"), NULL, 0};
     sph_region r = {.prims = &s, .n = 1};
     double out[3] = {0.5, 0.5, 2}, in[3] = {0.25, 0.5, 0.75}, edge[3] = {2, 2, 0.5};
     double d1 = sph_region_distance(&r, out), d2 = sph_region_distance(&r, edge);

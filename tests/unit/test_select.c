@@ -28,7 +28,7 @@ static void test_2d(void)
     char what[200];
     double *X, dx = 1e-3;
     int *idx;
-    sph_shape beam = { SPH_BOX, { 0, 0, 0 }, { 0.2, 0, 0.02 }, 0, 0, NULL };
+    sph_shape beam = { SPH_BOX, { 0, 0, 0 }, { 0.2, 0, 0.02 }, 0, 0, NULL, NULL, 0 };
     sph_region rb = { .prims = &beam, .n = 1 };
     int n = sph_fill_region(&rb, 2, dx, 0.0, &X);
     const double end[4][3] = { { 0.2, 0, 0 }, { 0.2, 1, 0 }, { 0.2, 1, 0.02 }, { 0.2, 0, 0.02 } };
@@ -49,14 +49,14 @@ static void test_2d(void)
     snprintf(what, sizeof what, "2D plane x = 0.1 (between columns): %d (expected 2 columns, 40)", m);
     check(m == 40, what);
     free(idx);
-    sph_shape clamp = { SPH_BOX, { -2e-3, 0, 0 }, { 0, 0, 0.02 }, 0, 0, NULL };
+    sph_shape clamp = { SPH_BOX, { -2e-3, 0, 0 }, { 0, 0, 0.02 }, 0, 0, NULL, NULL, 0 };
     sph_region rc = { .prims = &clamp, .n = 1 };
     m = sph_select_near(X, n, 2, 0.0, dx, &rc, &idx);
     snprintf(what, sizeof what, "2D near box x in [-2e-3, 0] (a.y == b.y): %d (expected the first "
              "column, 20, at x = 0.0005)", m);
     check(m == 20 && all_at(X, 2, idx, m, 0, 0.0005), what);
     free(idx);
-    sph_shape disc = { SPH_CYLINDER, { 0.1, -1, 0.025 }, { 0.1, 1, 0.025 }, 0.005, 0, NULL };
+    sph_shape disc = { SPH_CYLINDER, { 0.1, -1, 0.025 }, { 0.1, 1, 0.025 }, 0.005, 0, NULL, NULL, 0 };
     sph_region rd = { .prims = &disc, .n = 1 };
     m = sph_select_near(X, n, 2, 0.0, dx, &rd, &idx);
     snprintf(what, sizeof what, "2D near a y-axis cylinder (disc r 5e-3 at z 0.025): %d (expected "
@@ -72,7 +72,7 @@ static void test_3d(void)
     char what[200];
     double *X, dx = 1e-3;
     int *idx;
-    sph_shape beam = { SPH_BOX, { 0, 0, 0 }, { 0.2, 0.01, 0.02 }, 0, 0, NULL };
+    sph_shape beam = { SPH_BOX, { 0, 0, 0 }, { 0.2, 0.01, 0.02 }, 0, 0, NULL, NULL, 0 };
     sph_region rb = { .prims = &beam, .n = 1 };
     int n = sph_fill_region(&rb, 3, dx, 0.0, &X);
     const double end[4][3] = { { 0.2, 0, 0 }, { 0.2, 0.01, 0 }, { 0.2, 0.01, 0.02 },
@@ -87,13 +87,13 @@ static void test_3d(void)
     snprintf(what, sizeof what, "3D tip plane strip: %d (expected 2 rows x 10 = 20)", m);
     check(m == 20, what);
     free(idx);
-    sph_shape clamp = { SPH_BOX, { -2e-3, -1, -1 }, { 0, 1, 1 }, 0, 0, NULL };
+    sph_shape clamp = { SPH_BOX, { -2e-3, -1, -1 }, { 0, 1, 1 }, 0, 0, NULL, NULL, 0 };
     sph_region rc = { .prims = &clamp, .n = 1 };
     m = sph_select_near(X, n, 3, 0.0, dx, &rc, &idx);
     snprintf(what, sizeof what, "3D near box x <= 0: %d (expected one layer, 200)", m);
     check(m == 200 && all_at(X, 3, idx, m, 0, 0.0005), what);
     free(idx);
-    sph_shape ball = { SPH_SPHERE, { 0.1, 0.005, 0.0 }, { 0, 0, 0 }, 0.0, 0, NULL };
+    sph_shape ball = { SPH_SPHERE, { 0.1, 0.005, 0.0 }, { 0, 0, 0 }, 0.0, 0, NULL, NULL, 0 };
     sph_region rs = { .prims = &ball, .n = 1 };
     m = sph_select_near(X, n, 3, 0.0, 2 * dx, &rs, &idx);
     int expect = 0;
