@@ -159,6 +159,7 @@ void emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyP
     TplEnv env = {0};
     tpl_set(&env, "B", "%s", b->name);
     tpl_set(&env, "DIM", "%d", E->m->dim);
+    tpl_set(&env, "KERNEL", "%s", E->m->kernel == KERNEL_CUBIC ? "SPH_CUBIC" : "SPH_WENDLAND");
     tpl_set(&env, "BETA1", "%.17g", b->beta1);
     tpl_set(&env, "BETA2", "%.17g", b->beta2);
     tpl_set(&env, "C0", "%.17g", b->c0);

@@ -14,21 +14,9 @@
 #include <math.h>
 #include "sphrt.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
-
-/* Normalisation constant aD of the kernel in dimension dim (2 or 3). */
-static double kernel_norm(sph_kernel_kind k, int dim, double h)
-{
-    if (k == SPH_CUBIC)
-        return dim == 2 ? 10.0 / (7.0 * M_PI * h * h) : 1.0 / (M_PI * h * h * h);
-    return dim == 2 ? 7.0 / (4.0 * M_PI * h * h) : 21.0 / (16.0 * M_PI * h * h * h);
-}
-
 double sph_kernel_w(sph_kernel_kind k, int dim, double r, double h)
 {
-    double q = r / h, ad = kernel_norm(k, dim, h);
+    double q = r / h, ad = sph_kernel_norm(k, dim, h);
     if (q >= 2.0)
         return 0.0;
     if (k == SPH_CUBIC) {
@@ -43,15 +31,5 @@ double sph_kernel_w(sph_kernel_kind k, int dim, double r, double h)
 
 double sph_kernel_dwdr_over_r(sph_kernel_kind k, int dim, double r, double h)
 {
-    double q = r / h, ad = kernel_norm(k, dim, h) / (h * h);
-    if (q >= 2.0)
-        return 0.0;
-    if (k == SPH_CUBIC) {
-        if (q < 1.0)
-            return ad * (-3.0 + 2.25 * q);
-        double t = 2.0 - q;
-        return -0.75 * ad * t * t / q;
-    }
-    double t = 1.0 - 0.5 * q;
-    return -5.0 * ad * t * t * t;
+    return sph_dwdr_over_r(k, dim, r, h); /* sphrt.h */
 }

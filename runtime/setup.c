@@ -134,17 +134,6 @@ static void allocate(sph_body *b)
     b->sd_n = zalloc(n, sizeof(double));
 }
 
-/* Eq. 60 for one pair without gathering X_j in the hot loop: w_ij is parallel to X_i - X_j,
- * so G_ij = h (v_ij . dX) / (r^2 + 0.001 h^2) = g (v_ij . w_ij) with
- * g = h r^2 / ((w . dX) (r^2 + 0.001 h^2)); 0 where w vanishes (r = 2h). */
-static double viscosity_factor(const sph_body *b, const double *dX, const double *w)
-{
-    double r2 = 0, wdx = 0;
-    for (int k = 0; k < b->dim; k++)
-        r2 += dX[k] * dX[k], wdx += w[k] * dX[k];
-    return wdx != 0 ? b->h * r2 / (wdx * (r2 + 0.001 * b->h * b->h)) : 0.0;
-}
-
 /* Pairs at exactly the support radius have a zero kernel gradient and contribute nothing to
  * any pass; removing them saves a sixth of the pair work on a lattice (24 -> 20 in 2D).  In
  * single precision, pairs whose gradient is below 1e-30 of the largest go too (at the very
@@ -242,7 +231,7 @@ static void table_entry(sph_body *b, int k, int i, long p, sph_kernel_kind kerne
         b->wtab[(size_t)k * SPH_ROW(D) + c] = (sph_real)w[c];
         r2 += dX[c] * dX[c];
     }
-    b->gtab[k] = (sph_real)viscosity_factor(b, dX, w);
+    b->gtab[k] = (sph_real)sph_viscosity_factor(D, b->h, dX, w); /* eq. 60 (sphrt.h) */
     b->htab[k] = (sph_real)(b->vol * sph_kernel_w(kernel, D, sqrt(r2), b->h) / (b->rho0 * r2));
     if (b->ltab) /* eq. 62: 2 V_j (r0 . grad W) / r0^2 = 2 V dW/dr / r */
         b->ltab[k] = (sph_real)(2 * b->vol * sph_kernel_dwdr_over_r(kernel, D, sqrt(r2), b->h));

@@ -7,13 +7,54 @@
  * one offset for every particle, and where a particle lacks it the slot holds the particle
  * itself with a zero table entry (sph_full_lists). */
 
+/* Pair p of particle i: its neighbour (returned), V_j grad_i W_ij (w), and the pair's
+ * factor G_ij / ((v_i - v_j) . w) of eq. 60 (g) and Laplacian weight of eq. 62 (l).  From
+ * the offset table: entry fb_k[p], or ~fb_k[p] for the reversed pair (w_ji = -w_ij), a few
+ * hundred entries that stay in the L1 cache.  Built with -DSPH_CUDA_RECOMPUTE, from the
+ * reference positions instead, as the set-up computes the table (runtime/setup.c): no table
+ * entry per pair but X_j and a kernel evaluation, the other layout docs/cuda.md weighs
+ * (bench/cuda times both).  What a pass does not use of it the compiler drops. */
+SPH_FN int @B@_pair(const sph_body *b, int i, size_t p, sph_real w[@DIM@], sph_real *g,
+                    sph_real *l)
+{
+    enum { D = @DIM@ };
+    const int j = b->fb[p];
+#ifdef SPH_CUDA_RECOMPUTE
+    double d[D], wd[D], r2 = 0;
+    for (int c = 0; c < D; c++) {
+        d[c] = b->X[i * D + c] - b->X[j * D + c];
+        r2 += d[c] * d[c];
+    }
+    const double f = b->vol * sph_dwdr_over_r(@KERNEL@, D, sqrt(r2), b->h);
+    for (int c = 0; c < D; c++) {
+        wd[c] = f * d[c];
+        w[c] = (sph_real)wd[c];
+    }
+    *g = (sph_real)sph_viscosity_factor(D, b->h, d, wd);
+    *l = (sph_real)(2 * f);
+#else
+    (void)i;
+    const int k = b->fb_k[p], e = k < 0 ? ~k : k;
+    const sph_real sg = k < 0 ? (sph_real)-1 : (sph_real)1;
+    for (int c = 0; c < D; c++)
+        w[c] = sg * b->wtab[(size_t)e * SPH_ROW(D) + c];
+    *g = b->gtab[e];
+//@if FRACTURE
+    *l = b->ltab[e];
+//@endif
+//@if NO_FRACTURE
+    *l = 0;
+//@endif
+#endif
+    return j;
+}
+
 /* Pass 1-2, per particle: A_i = sum_j V_j (u_j - u_i) (x) grad W_ij over the particle's
  * full list, then F, the law, P L and cof(F) (@B@_particle_stress, body_particle.c). */
 static void @B@_stress_pass(sph_body *b)
 {
     enum { D = @DIM@ };
     SPH_FOR(i, b->n, {
-        const sph_real *w0 = b->wtab;
         const double *u = b->u;
         double A[D * D] = {0};
 //@if FRACTURE
@@ -21,14 +62,13 @@ static void @B@_stress_pass(sph_body *b)
 //@endif
         const size_t n = (size_t)b->n, end = i + n * (size_t)b->fb_count[i];
         for (size_t p = i; p < end; p += n) {
-            const int j = b->fb[p], k = b->fb_k[p];
-            const double sg = k < 0 ? -1.0 : 1.0; /* ~k: the reversed pair */
-            const sph_real *w = w0 + (size_t)(k < 0 ? ~k : k) * SPH_ROW(D);
+            sph_real w[D], g, l;
+            const int j = @B@_pair(b, i, p, w, &g, &l);
             for (int r = 0; r < D; r++)
                 for (int c = 0; c < D; c++)
-                    A[r * D + c] += (u[j * D + r] - u[i * D + r]) * sg * w[c];
+                    A[r * D + c] += (u[j * D + r] - u[i * D + r]) * w[c];
 //@if FRACTURE
-            lap += b->ltab[k < 0 ? ~k : k] * (b->s[i] - b->s[j]);
+            lap += l * (b->s[i] - b->s[j]);
 //@endif
         }
 //@if FRACTURE
@@ -66,12 +106,8 @@ static void @B@_momentum_pass(sph_body *b)
 //@endif
         sph_real fi[D] = {0};
         for (size_t p = i; p < end; p += n) {
-            const int j = b->fb[p], k = b->fb_k[p];
-            const sph_real sg = k < 0 ? (sph_real)-1 : (sph_real)1;
-            const sph_real *wk = b->wtab + (size_t)(k < 0 ? ~k : k) * SPH_ROW(D);
-            sph_real w[D];
-            for (int c = 0; c < D; c++)
-                w[c] = sg * wk[c];
+            sph_real w[D], g, l;
+            const int j = @B@_pair(b, i, p, w, &g, &l);
             sph_real f[D];
             for (int r = 0; r < D; r++) {
                 sph_real s2 = 0;
@@ -89,7 +125,7 @@ static void @B@_momentum_pass(sph_body *b)
                     fv[r] += (Ci[r * D + c] + b->Cv[SPH_TENSOR(j, r, c, D, n)]) * w[c];
                 vw += (sph_real)(b->v[i * D + r] - b->v[j * D + r]) * fv[r];
             }
-            const sph_real G = b->gtab[k < 0 ? ~k : k] * (sph_real)0.5 * vw;
+            const sph_real G = g * (sph_real)0.5 * vw;
             sph_real pi = (sph_real)(-@BETA1@ * @C0@) * G;
 //@if BETA2
             const sph_real Gc = G < 0 ? G : 0;
@@ -101,6 +137,7 @@ static void @B@_momentum_pass(sph_body *b)
             pv -= hpi * vw;
 //@endif
 //@if HOURGLASS
+            const int k = b->fb_k[p]; /* its table entry, also with SPH_CUDA_RECOMPUTE */
             @B@_hourglass(b, i, j, k < 0 ? ~k : k, f);
 //@endif
             for (int r = 0; r < D; r++)

@@ -1,9 +1,10 @@
 # Builds a model for both targets (included by run_cuda_emulated*.cmake):
-#   -DSPHC= -DCXX= -DMODEL= -DINCLUDE= -DLIB= -DWORKDIR=
+#   -DSPHC= -DCXX= -DMODEL= -DINCLUDE= -DLIB= -DWORKDIR= [-DDEFINE=NAME]
 # Sets `stem`, the model's name, `cpu`, the CPU program, and `emulated`, the CUDA target's
 # model.cu (WORKDIR/STEM.cu) compiled by the host C++ compiler with SPH_CUDA_EMULATE
 # (runtime/sph_cuda.h): the device passes run serially on host memory.  Both programs are
-# named for the model.  With EMIT_ONLY set, only model.cu is written.
+# named for the model.  With EMIT_ONLY set, only model.cu is written.  DEFINE: a macro the
+# emulated build defines too (SPH_CUDA_RECOMPUTE: the pair gradients from the positions).
 
 # sph_emulated_compile(OUT SOURCE [FLAGS...]): SOURCE (C++ including a model.cu) into the
 # program OUT, as the emulated build compiles it, warning-free.
@@ -31,5 +32,9 @@ if(NOT EMIT_ONLY)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "sphc (cpu) failed:\n${err}")
   endif()
-  sph_emulated_compile(${emulated} ${WORKDIR}/${stem}.cu)
+  set(defines "")
+  if(DEFINE)
+    set(defines -D${DEFINE})
+  endif()
+  sph_emulated_compile(${emulated} ${WORKDIR}/${stem}.cu ${defines})
 endif()

@@ -1,7 +1,8 @@
 # The CUDA target's generated code, checked without a GPU:
-#   -DSPHC= -DMODEL= -DNVCC= -DINCLUDE= -DWORKDIR=
+#   -DSPHC= -DMODEL= -DNVCC= -DINCLUDE= -DWORKDIR= [-DDEFINE=NAME]
 # `sphc --target cuda --emit-only` writes model.cu, which nvcc must compile warning-free
-# (-Werror all-warnings; host code -Wall -Wextra) for sm_90 and sm_80.  A model using what the
+# (-Werror all-warnings; host code -Wall -Wextra) for sm_90 and sm_80, with the macro DEFINE
+# defined when it is given (SPH_CUDA_RECOMPUTE).  A model using what the
 # target does not run yet must be refused with a clear "does not support yet" error instead.
 get_filename_component(stem ${MODEL} NAME_WE)
 file(REMOVE_RECURSE ${WORKDIR})
@@ -16,7 +17,11 @@ if(NOT rc EQUAL 0)
   endif()
   message(FATAL_ERROR "sphc --target cuda failed on ${MODEL}:\n${err}")
 endif()
-execute_process(COMMAND ${NVCC} -std=c++20 --extended-lambda -O3
+set(defines "")
+if(DEFINE)
+  set(defines -D${DEFINE})
+endif()
+execute_process(COMMAND ${NVCC} -std=c++20 --extended-lambda -O3 ${defines}
                         -gencode arch=compute_90,code=sm_90 -gencode arch=compute_80,code=sm_80
                         -Werror all-warnings -Xcompiler -fopenmp,-Wall,-Wextra,-Werror
                         -I${INCLUDE} -c ${WORKDIR}/${stem}.cu -o ${WORKDIR}/${stem}.o
