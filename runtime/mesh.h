@@ -69,6 +69,7 @@ double sph_mesh_distance(const sph_mesh *m, const double p[3], double limit);
  * or a pyramid (pts: the apex, then the base's corners), npts points of 3 coordinates,
  * closed and checked as by sph_mesh_close.  Returns 0, or -1 with a message in err. */
 typedef enum { SPH_SOLID_PRISM, SPH_SOLID_PYRAMID } sph_solid_kind;
+enum { SPH_SOLID_MAX_CORNERS = 1000 }; /* per polygon */
 int sph_mesh_solid(sph_solid_kind kind, const double *pts, int npts, sph_mesh *m, char *err,
                    size_t len);
 

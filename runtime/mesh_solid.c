@@ -143,6 +143,9 @@ int sph_mesh_solid(sph_solid_kind kind, const double *pts, int npts, sph_mesh *m
                                         ? "needs two polygons of the same number of corners, "
                                           "at least 3 each"
                                         : "needs an apex and at least 3 corners of its base");
+    if (m_corners > SPH_SOLID_MAX_CORNERS) /* ear clipping takes up to m^3 steps */
+        return fail(err, len, what, "has more than 1000 corners in a polygon (give such a "
+                                    "shape as a surface file)");
     m->file = strdup(what);
     m->v = malloc((size_t)npts * 3 * sizeof *m->v);
     m->t = malloc((size_t)(4 * npts + 8) * 3 * sizeof *m->t);

@@ -8,7 +8,8 @@
  * height 1.5, volume 1.5; GenCase's slope, a triangle given as four corners, one repeated
  * (area 4.75, 2 deep: 9.5), with inside and outside points and a distance.  Refused, with
  * what is wrong: a base whose edges cross, a base with all corners on a line, a prism with
- * an odd number of corners, a pyramid of two base corners. */
+ * an odd number of corners, a pyramid of two base corners, a polygon of 1001 corners (1000
+ * are built: a pyramid over the regular 1000-gon, volume (m/2) sin(2 pi/m) / 3). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -123,6 +124,24 @@ static void test_refused(void)
                   "pyramid, base of 3 corners on a line");
     check_refused(SPH_SOLID_PRISM, L_PRISM, 7, "two polygons", "prism of 7 corners");
     check_refused(SPH_SOLID_PYRAMID, L_PRISM, 3, "at least 3", "pyramid of 2 base corners");
+    for (int m = SPH_SOLID_MAX_CORNERS; m <= SPH_SOLID_MAX_CORNERS + 1; m++) {
+        /* a pyramid of height 1 over the regular polygon of m corners in the unit circle */
+        const double pi = 3.14159265358979323846;
+        double *fan = malloc((size_t)(m + 1) * 3 * sizeof *fan);
+        fan[0] = 0, fan[1] = 0, fan[2] = 1;
+        for (int k = 0; k < m; k++) {
+            fan[3 * (k + 1)] = cos(2 * pi * k / m);
+            fan[3 * (k + 1) + 1] = sin(2 * pi * k / m);
+            fan[3 * (k + 1) + 2] = 0;
+        }
+        if (m > SPH_SOLID_MAX_CORNERS)
+            check_refused(SPH_SOLID_PYRAMID, fan, m + 1, "more than 1000 corners",
+                          "pyramid over 1001 corners");
+        else
+            check_volume(SPH_SOLID_PYRAMID, fan, m + 1, 0.5 * m * sin(2 * pi / m) / 3,
+                         "pyramid over a regular polygon of 1000 corners");
+        free(fan);
+    }
 }
 
 int main(void)
