@@ -65,8 +65,9 @@ static int in_triangle(const double a[2], const double b[2], const double c[2],
 }
 
 /* Triangles of the simple polygon poly[0..n) (vertex indices, no two consecutive equal) by
- * ear clipping; poly is consumed.  Returns -1 when no ear can be found (edges that cross). */
-static int clip_ears(sph_mesh *m, int *poly, int n)
+ * ear clipping.  Returns -1 when no ear can be found (edges that cross, or corners on a
+ * line). */
+static int clip_ears(sph_mesh *m, const int *poly, int n)
 {
     double nrm[3] = {0, 0, 0}; /* Newell's normal: the polygon's area vector, doubled */
     for (int k = 0; k < n; k++) {
@@ -154,18 +155,16 @@ int sph_mesh_solid(sph_solid_kind kind, const double *pts, int npts, sph_mesh *m
     int nb = polygon(m, bp, m_corners, base), nt = 0, rc = 0;
     if (nb < 3)
         rc = fail(err, len, what, "its base has fewer than 3 distinct corners");
-    else if (clip_ears(m, memcpy(top, base, (size_t)nb * sizeof *top), nb))
-        rc = fail(err, len, what, "its base is not a simple polygon (its edges cross, or its corners lie on a line)");
+    else if (clip_ears(m, base, nb))
+        rc = fail(err, len, what, "its base is not a simple polygon (its edges cross, or "
+                                  "its corners lie on a line)");
     if (!rc && kind == SPH_SOLID_PRISM) {
         nt = polygon(m, pts + 3 * m_corners, m_corners, top);
         if (nt < 3)
             rc = fail(err, len, what, "its top has fewer than 3 distinct corners");
-        else {
-            int *tmp = malloc((size_t)nt * sizeof *tmp);
-            if (clip_ears(m, memcpy(tmp, top, (size_t)nt * sizeof *tmp), nt))
-                rc = fail(err, len, what, "its top is not a simple polygon (its edges cross, or its corners lie on a line)");
-            free(tmp);
-        }
+        else if (clip_ears(m, top, nt))
+            rc = fail(err, len, what, "its top is not a simple polygon (its edges cross, or "
+                                      "its corners lie on a line)");
         for (int k = 0; !rc && k < m_corners; k++) { /* the sides, corner k to corner k */
             const int k1 = (k + 1) % m_corners;
             const int a = vertex(m, bp + 3 * k), b = vertex(m, bp + 3 * k1);
