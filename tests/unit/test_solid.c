@@ -5,7 +5,8 @@
  * at dx 0.1 with exactly 8000 cell centres (its faces lie on cell faces); a frustum of
  * square sides 2 and 1, height 1 (a prism whose top is not a translate of its base),
  * volume (4 + 1 + 2)/3; a pyramid over a pentagon that is not convex (area 3),
- * height 1.5, volume 1.5; GenCase's slope, a triangle given as four corners, one repeated
+ * height 1.5, volume 1.5; a pyramid over a rectangle with corners in the middle of two
+ * edges (volume 2); GenCase's slope, a triangle given as four corners, one repeated
  * (area 4.75, 2 deep: 9.5), with inside and outside points and a distance.  Refused, with
  * what is wrong: a base whose edges cross, a base with all corners on a line, a prism with
  * an odd number of corners, a pyramid of two base corners, a polygon of 1001 corners (1000
@@ -92,6 +93,11 @@ static void test_pyramid(void)
                         0, 0, 0, 2, 0, 0, 2, 2, 0, 1, 1, 0, 0, 2, 0};
     check_volume(SPH_SOLID_PYRAMID, p, 6, 3.0 * 1.5 / 3.0,
                  "pyramid over a pentagon that is not convex");
+    /* the rectangle [0,2] x [0,1] with a corner in the middle of two of its edges */
+    const double q[] = {1, 0.5, 3, /* apex */
+                        0, 0, 0, 1, 0, 0, 2, 0, 0, 2, 1, 0, 1, 1, 0, 0, 1, 0};
+    check_volume(SPH_SOLID_PYRAMID, q, 7, 2.0 * 3.0 / 3.0,
+                 "pyramid over a rectangle with corners on its edges");
 }
 
 static void test_gencase_slope(void)
