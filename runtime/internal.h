@@ -12,6 +12,10 @@ int sph_region_contains_tol_dim(const sph_region *r, int dim, const double p[3],
 double sph_region_distance_dim(const sph_region *r, int dim, const double p[3]);
 int sph_region_bbox_dim(const sph_region *r, int dim, double lo[3], double hi[3]);
 
+/* alloc.c: bytes for a large array of the set-up (on huge pages from 4 MiB; zeroed when
+ * zero is set), freed with free(); NULL when memory runs out. */
+void *sph_alloc_large(size_t bytes, int zero);
+
 /* setup.c: particles, neighbours, gradients, selections and arrays of one body. */
 int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m);
 void sph_body_free(sph_body *b);

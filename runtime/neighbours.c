@@ -27,7 +27,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "sphrt.h"
+#include "internal.h"
 
 /* The search: points, pair criterion and (for the cell list) the grid. */
 typedef struct {
@@ -45,7 +45,7 @@ typedef struct {
 /* malloc that ends the program with a message when memory runs out. */
 static void *xmalloc(size_t size)
 {
-    void *p = malloc(size ? size : 1);
+    void *p = sph_alloc_large(size, 0); /* (huge pages for large arrays: alloc.c) */
     if (!p) {
         sph_error("out of memory in the neighbour search (%zu bytes)", size);
         exit(SPH_EXIT_SETUP);

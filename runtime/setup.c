@@ -18,7 +18,7 @@
 
 static void *zalloc(size_t n, size_t size)
 {
-    void *p = calloc(n ? n : 1, size);
+    void *p = sph_alloc_large(n * size, 1); /* (huge pages for large arrays: alloc.c) */
     if (!p) {
         sph_error("out of memory");
         exit(SPH_EXIT_SETUP);
