@@ -34,15 +34,10 @@ static double cofactor(const double *m, int dim, double *c)
 void sph_pair_gradient(const double *X, int dim, int i, int j, sph_kernel_kind kernel, double h,
                        double vol, double *w)
 {
-    const double *xi = X + (size_t)i * dim, *xj = X + (size_t)j * dim;
-    double d[3], r2 = 0.0;
-    for (int k = 0; k < dim; k++) {
-        d[k] = xi[k] - xj[k];
-        r2 += d[k] * d[k];
-    }
-    const double f = vol * sph_kernel_dwdr_over_r(kernel, dim, sqrt(r2), h);
+    double d[3];
     for (int k = 0; k < dim; k++)
-        w[k] = f * d[k];
+        d[k] = X[(size_t)i * dim + k] - X[(size_t)j * dim + k];
+    sph_pair_w(kernel, dim, h, vol, d, w);
 }
 
 /* The pairs of particle i: M_i (dim×dim) in m, and their w unless w is NULL. */

@@ -28,8 +28,3 @@ double sph_kernel_w(sph_kernel_kind k, int dim, double r, double h)
     double t = 1.0 - 0.5 * q, t2 = t * t;
     return ad * t2 * t2 * (2.0 * q + 1.0);
 }
-
-double sph_kernel_dwdr_over_r(sph_kernel_kind k, int dim, double r, double h)
-{
-    return sph_dwdr_over_r(k, dim, r, h); /* sphrt.h */
-}

@@ -225,16 +225,17 @@ static void table_entry(sph_body *b, int k, int i, long p, sph_kernel_kind kerne
 {
     const int D = b->dim;
     double dX[3], w[3], r2 = 0;
-    sph_pair_gradient(b->X, D, i, b->nb[p], kernel, b->h, b->vol, w);
     for (int c = 0; c < D; c++) {
         dX[c] = b->X[(size_t)i * D + c] - b->X[(size_t)b->nb[p] * D + c];
-        b->wtab[(size_t)k * SPH_ROW(D) + c] = (sph_real)w[c];
         r2 += dX[c] * dX[c];
     }
-    b->gtab[k] = (sph_real)sph_viscosity_factor(D, b->h, dX, w); /* eq. 60 (sphrt.h) */
+    const double f = sph_pair_w(kernel, D, b->h, b->vol, dX, w); /* (sphrt.h) */
+    for (int c = 0; c < D; c++)
+        b->wtab[(size_t)k * SPH_ROW(D) + c] = (sph_real)w[c];
+    b->gtab[k] = (sph_real)sph_viscosity_factor(D, b->h, dX, w); /* eq. 60 */
     b->htab[k] = (sph_real)(b->vol * sph_kernel_w(kernel, D, sqrt(r2), b->h) / (b->rho0 * r2));
     if (b->ltab) /* eq. 62: 2 V_j (r0 . grad W) / r0^2 = 2 V dW/dr / r */
-        b->ltab[k] = (sph_real)(2 * b->vol * sph_kernel_dwdr_over_r(kernel, D, sqrt(r2), b->h));
+        b->ltab[k] = (sph_real)(2 * f);
 }
 
 /* Per-pair tables (see sphrt.h): one entry per distinct lattice offset, or one per pair

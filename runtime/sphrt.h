@@ -91,13 +91,11 @@ int sph_fill_region(const sph_region *r, int dim, double dx, double y_plane, dou
 typedef enum { SPH_WENDLAND = 0, SPH_CUBIC = 1 } sph_kernel_kind;
 
 /* Kernel value and dW/dr / r (so that grad W = (X_i - X_j) * dwdr_over_r).  h is the
- * smoothing length; the support is 2h for both kernels (formulas in kernel.c). */
+ * smoothing length; the support is 2h for both kernels (formulas in kernel.c).  The
+ * normalisation constant aD and dW/dr / r are inline (below), so that the CUDA target's
+ * passes can evaluate them too (SPH_CUDA_RECOMPUTE, docs/cuda.md). */
 double sph_kernel_w(sph_kernel_kind k, int dim, double r, double h);
-double sph_kernel_dwdr_over_r(sph_kernel_kind k, int dim, double r, double h);
 
-/* The normalisation constant aD of kernel k in dimension dim, and dW/dr / r: what
- * sph_kernel_w and sph_kernel_dwdr_over_r use, inline so that the CUDA target's passes can
- * also evaluate it (SPH_CUDA_RECOMPUTE, docs/cuda.md). */
 SPH_FN double sph_kernel_norm(sph_kernel_kind k, int dim, double h)
 {
     const double pi = 3.14159265358979323846;
@@ -117,7 +115,7 @@ SPH_FN double sph_viscosity_factor(int dim, double h, const double *dX, const do
     return wdx != 0 ? h * r2 / (wdx * (r2 + 0.001 * h * h)) : 0.0;
 }
 
-SPH_FN double sph_dwdr_over_r(sph_kernel_kind k, int dim, double r, double h)
+SPH_FN double sph_kernel_dwdr_over_r(sph_kernel_kind k, int dim, double r, double h)
 {
     const double q = r / h, ad = sph_kernel_norm(k, dim, h) / (h * h);
     if (q >= 2.0)
@@ -130,6 +128,22 @@ SPH_FN double sph_dwdr_over_r(sph_kernel_kind k, int dim, double r, double h)
     }
     const double t = 1.0 - 0.5 * q;
     return -5.0 * ad * t * t * t;
+}
+
+/* A pair at reference offset dX = X_i - X_j: V_j grad_i W_ij = V_j (dW/dr / r) dX into w,
+ * and V_j dW/dr / r returned (half the Laplacian weight of eq. 62).  What the set-up's
+ * gradients and offset tables are made of (gradients.c, setup.c), and what the CUDA target
+ * recomputes per pair with SPH_CUDA_RECOMPUTE. */
+SPH_FN double sph_pair_w(sph_kernel_kind k, int dim, double h, double vol, const double *dX,
+                         double *w)
+{
+    double r2 = 0;
+    for (int c = 0; c < dim; c++)
+        r2 += dX[c] * dX[c];
+    const double f = vol * sph_kernel_dwdr_over_r(k, dim, sqrt(r2), h);
+    for (int c = 0; c < dim; c++)
+        w[c] = f * dX[c];
+    return f;
 }
 
 /* ------------------------------------------------------------------ neighbours */

@@ -20,16 +20,12 @@ SPH_FN int @B@_pair(const sph_body *b, int i, size_t p, sph_real w[@DIM@], sph_r
     enum { D = @DIM@ };
     const int j = b->fb[p];
 #ifdef SPH_CUDA_RECOMPUTE
-    double d[D], wd[D], r2 = 0;
-    for (int c = 0; c < D; c++) {
+    double d[D], wd[D];
+    for (int c = 0; c < D; c++)
         d[c] = b->X[i * D + c] - b->X[j * D + c];
-        r2 += d[c] * d[c];
-    }
-    const double f = b->vol * sph_dwdr_over_r(@KERNEL@, D, sqrt(r2), b->h);
-    for (int c = 0; c < D; c++) {
-        wd[c] = f * d[c];
+    const double f = sph_pair_w(@KERNEL@, D, b->h, b->vol, d, wd); /* as table_entry, setup.c */
+    for (int c = 0; c < D; c++)
         w[c] = (sph_real)wd[c];
-    }
     *g = (sph_real)sph_viscosity_factor(D, b->h, d, wd);
     *l = (sph_real)(2 * f);
 #else
