@@ -183,7 +183,7 @@ static int check_solid(const Model *m, const NamedCall *c, ShapePrim *p)
                    "of its base to corner k of its top", s1->nvalues, s0->nvalues);
         return -1;
     }
-    p->pts = malloc((size_t)(s0->nvalues + s1->nvalues) * 3 * sizeof *p->pts);
+    p->pts = ast_alloc((size_t)(s0->nvalues + s1->nvalues) * 3 * sizeof *p->pts);
     if (corners(m, s0, p) || corners(m, s1, p))
         return -1;
     sph_mesh mesh;

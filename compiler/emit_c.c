@@ -601,6 +601,13 @@ static void body_desc_arrays(Emitter *E, const BodyModel *b)
 /* y of the x-z plane of a 2D body: the middle of its shape's y range. */
 static double plane_y(const BodyModel *b)
 {
+    /* A surface, prism or pyramid is cut by the plane (runtime/region.c), so the plane must
+     * pass through it; boxes, cylinders and spheres are moved into whatever plane it is. */
+    for (int k = 0; k < b->region.n; k++) {
+        const ShapePrim *s = &b->region.prims[k];
+        if (s->kind == SHAPE_SURFACE || s->kind == SHAPE_PRISM || s->kind == SHAPE_PYRAMID)
+            return 0.5 * (s->a[1] + s->b[1]);
+    }
     const ShapePrim *s = &b->region.prims[0];
     return s->kind == SHAPE_CYLINDER || s->kind == SHAPE_SPHERE ? s->a[1] : 0.5 * (s->a[1] + s->b[1]);
 }

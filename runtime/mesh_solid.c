@@ -64,8 +64,23 @@ static int in_triangle(const double a[2], const double b[2], const double c[2],
     return cross2(a, b, p) >= 0 && cross2(b, c, p) >= 0 && cross2(c, a, p) >= 0;
 }
 
+/* Whether two edges of the projected polygon xy[0..n) that share no corner cross (ear
+ * clipping alone can cut a star into triangles). */
+static int edges_cross(double (*xy)[2], int n)
+{
+    for (int k = 0; k < n; k++)
+        for (int l = k + 2; l < n; l++) {
+            if (k == 0 && l == n - 1)
+                continue; /* adjacent through corner 0 */
+            const double *a = xy[k], *b = xy[(k + 1) % n], *c = xy[l], *d = xy[(l + 1) % n];
+            if (cross2(a, b, c) * cross2(a, b, d) < 0 && cross2(c, d, a) * cross2(c, d, b) < 0)
+                return 1;
+        }
+    return 0;
+}
+
 /* Triangles of the simple polygon poly[0..n) (vertex indices, no two consecutive equal) by
- * ear clipping.  Returns -1 when no ear can be found (edges that cross, or corners on a
+ * ear clipping.  Returns -1 when its edges cross or no ear can be found (corners on a
  * line). */
 static int clip_ears(sph_mesh *m, const int *poly, int n)
 {
@@ -82,8 +97,8 @@ static int clip_ears(sph_mesh *m, const int *poly, int n)
     int *at = malloc((size_t)n * sizeof *at); /* the remaining corners, as indices into xy */
     for (int k = 0; k < n; k++)
         at[k] = k;
-    int left = n, rc = 0;
-    while (left > 3) {
+    int left = n, rc = edges_cross(xy, n) ? -1 : 0;
+    while (rc == 0 && left > 3) {
         int ear = -1;
         for (int k = 0; k < left && ear < 0; k++) {
             const int a = at[(k + left - 1) % left], b = at[k], c = at[(k + 1) % left];
@@ -179,10 +194,8 @@ int sph_mesh_solid(sph_solid_kind kind, const double *pts, int npts, sph_mesh *m
             triangle(m, base[k], base[(k + 1) % nb], apex);
     }
     free(base), free(top);
-    if (!rc && sph_mesh_close(m, err, len))
+    if (!rc && sph_mesh_close(m, err, len)) /* (it refuses a surface of no volume too) */
         rc = -1;
-    if (!rc && !(m->volume > 0))
-        rc = fail(err, len, what, "it encloses no volume");
     if (rc)
         sph_mesh_free(m);
     return rc;

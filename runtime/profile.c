@@ -20,7 +20,8 @@
 int sph_profile_on;
 int sph_profile_phase = SPH_PHASE_SETUP; /* sph_main sets the phases as the run goes */
 
-static const char *const phase_name[] = {"steps", "checks", "set-up"};
+static const char *const phase_name[] = {
+    [SPH_PHASE_STEPS] = "steps", [SPH_PHASE_CHECKS] = "checks", [SPH_PHASE_SETUP] = "set-up"};
 
 static struct {
     const char *name;

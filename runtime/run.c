@@ -534,6 +534,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
     if (r.opt.threads > 0)
         omp_set_num_threads(r.opt.threads);
     sph_profile_on = r.opt.profile;
+    sph_profile_phase = SPH_PHASE_SETUP;
     r.t_end = r.opt.t_end > 0 ? r.opt.t_end : m->t_end;
     r.t_out = r.opt.t_out > 0 ? r.opt.t_out : m->t_out;
     r.t_frames = r.opt.t_frames > 0 ? r.opt.t_frames : r.t_out;

@@ -88,6 +88,6 @@ endforeach()
 execute_process(COMMAND ${cpu} --quiet --threads 1 --end ${END} --out ${WORKDIR}/plain_out
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out)
 file(READ ${WORKDIR}/plain_out/summary.json json)
-if(json MATCHES "\"profile\"" OR out MATCHES "profile of")
+if(json MATCHES "\"profile\"" OR out MATCHES "steps, [0-9.]+ s \\(per step")
   message(FATAL_ERROR "a profile without --profile:\n${out}")
 endif()

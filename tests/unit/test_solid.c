@@ -8,7 +8,7 @@
  * height 1.5, volume 1.5; a pyramid over a rectangle with corners in the middle of two
  * edges (volume 2); GenCase's slope, a triangle given as four corners, one repeated
  * (area 4.75, 2 deep: 9.5), with inside and outside points and a distance.  Refused, with
- * what is wrong: a base whose edges cross, a base with all corners on a line, a prism with
+ * what is wrong: a base whose edges cross (a bow tie, a pentagram), a base with all corners on a line, a prism with
  * an odd number of corners, a pyramid of two base corners, a polygon of 1001 corners (1000
  * are built: a pyramid over the regular 1000-gon, volume (m/2) sin(2 pi/m) / 3). */
 #include <math.h>
@@ -122,6 +122,10 @@ static void test_refused(void)
     const double bowtie[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
                              0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1};
     check_refused(SPH_SOLID_PRISM, bowtie, 8, "not a simple polygon", "prism, base a bow tie");
+    const double star[] = {0, 0, 1, /* apex, then a pentagram: every other corner of a pentagon */
+                           1, 0, 0, -0.809017, 0.587785, 0, 0.309017, -0.951057, 0,
+                           0.309017, 0.951057, 0, -0.809017, -0.587785, 0};
+    check_refused(SPH_SOLID_PYRAMID, star, 6, "not a simple polygon", "pyramid over a pentagram");
     const double line[] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0};
     check_refused(SPH_SOLID_PYRAMID, line, 5, "not a simple polygon",
                   "pyramid, base corners on a line");
