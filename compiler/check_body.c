@@ -238,6 +238,12 @@ static void push_prim(Region *r, ShapePrim p)
     r->prims[r->n++] = p;
 }
 
+/* Whether s is primitives joined by + only: a - (b + c) is (a - b) - c, in order. */
+static int unions_only(const ShapeExpr *s)
+{
+    return s->op == 0 || (s->op == '+' && unions_only(s->lhs) && unions_only(s->rhs));
+}
+
 /* Flatten a shape tree into an ordered list: union adds, difference subtracts. */
 static int flatten(const Model *m, const ShapeExpr *s, int subtract, Region *r)
 {
@@ -251,8 +257,9 @@ static int flatten(const Model *m, const ShapeExpr *s, int subtract, Region *r)
     }
     if (flatten(m, s->lhs, subtract, r))
         return -1;
-    if (s->op == '-' && s->rhs->op != 0) {
-        diag_error(s->rhs->loc, "only a single shape can be subtracted (write a - b - c)");
+    if (s->op == '-' && !unions_only(s->rhs)) {
+        diag_error(s->rhs->loc, "only a shape or a union of shapes can be subtracted (write "
+                                "a - b - c or a - (b + c))");
         return -1;
     }
     return flatten(m, s->rhs, s->op == '-' ? 1 : subtract, r);

@@ -17,8 +17,13 @@
  * free drawing mode in force (<setfrdrawmode auto="true|false"/>) for --xml-fill=gencase.
  * <drawfilevtk file autofill="true"/> and <drawfilestl ...> are the closed surface in the file
  * (relative to the case file), filled: the sph surface(file "...").
- * xml_shape.c turns the drawings of an mk into the shape of a body or of a `near`. */
+ * <drawprism>, <drawpyramid> and <drawextrude> are the sph prism or pyramid of their corners.
+ * Every drawing goes through GenCase's transformation matrix (xml_transform.c), and after
+ * <setmkvoid/> its mk is XML_MK_VOID: it only takes nodes over.  <runlist> runs the commands
+ * of a <list>.  xml_shape.c turns the drawings of an mk into the shape of a body or of a
+ * `near`. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -46,6 +51,20 @@ static long gc_round(double v)
 }
 
 /* ------------------------------------------------------------------ <definition> */
+
+static void set_var(XmlCtx *x, const char *name, double v)
+{
+    for (int i = 0; i < x->nvars; i++)
+        if (!strcmp(x->var_names[i], name)) {
+            x->var_values[i] = v;
+            return;
+        }
+    x->var_names = ast_room(x->var_names, (size_t)x->nvars, sizeof *x->var_names);
+    x->var_values = ast_room(x->var_values, (size_t)x->nvars, sizeof *x->var_values);
+    x->var_names[x->nvars] = ast_strdup(name);
+    x->var_values[x->nvars++] = v;
+}
+
 
 static int definition(XmlCtx *x, const xmlNode *n)
 {
@@ -83,6 +102,14 @@ static int definition(XmlCtx *x, const xmlNode *n)
     }
     x->dim = x->pmin[1] == x->pmax[1] ? 2 : 3;
     x->has_domain = 1;
+    set_var(x, "Dp", x->dp); /* GenCase's own variables of the domain */
+    for (int a = 0; a < 3; a++) {
+        char name[16];
+        snprintf(name, sizeof name, "PosMin_%c", "xyz"[a]);
+        set_var(x, name, x->pmin[a]);
+        snprintf(name, sizeof name, "PosMax_%c", "xyz"[a]);
+        set_var(x, name, x->pmax[a]);
+    }
     xml_scene_number(x, xml_loc(x, n), "dimension", x->dim);
     xml_scene_number(x, xml_loc(x, n), "dp", x->dp);
     return 0;
@@ -90,28 +117,31 @@ static int definition(XmlCtx *x, const xmlNode *n)
 
 /* ------------------------------------------------------------------ <newvar> */
 
-static void set_var(XmlCtx *x, const char *name, double v)
+static int has_var(const XmlCtx *x, const char *name)
 {
     for (int i = 0; i < x->nvars; i++)
-        if (!strcmp(x->var_names[i], name)) {
-            x->var_values[i] = v;
-            return;
-        }
-    x->var_names = ast_room(x->var_names, (size_t)x->nvars, sizeof *x->var_names);
-    x->var_values = ast_room(x->var_values, (size_t)x->nvars, sizeof *x->var_values);
-    x->var_names[x->nvars] = ast_strdup(name);
-    x->var_values[x->nvars++] = v;
+        if (!strcmp(x->var_names[i], name))
+            return 1;
+    return 0;
 }
 
+/* <newvar a="..">, <newvarcte a="..">: new variables, each value an expression of those
+ * before it; <setvar a=".."> gives an existing one a new value.  Attributes starting with
+ * '_' (GenCase's _rem, _print) are remarks. */
 static int newvar(XmlCtx *x, const xmlNode *n)
 {
+    const int set = xml_is(n, "setvar");
     int bad = 0;
     for (xmlAttr *a = n->properties; a; a = a->next) {
         const char *name = (const char *)a->name;
         double v;
-        if (!strcmp(name, "comment") || !strcmp(name, "units_comment"))
+        if (!strcmp(name, "comment") || !strcmp(name, "units_comment") || name[0] == '_')
             continue;
-        if (xml_number(x, n, name, 1, &v) == 1)
+        if (set && !has_var(x, name)) {
+            diag_error(xml_loc(x, n), "<setvar>: no variable '%s' (define it with <newvar>)",
+                       name);
+            bad = 1;
+        } else if (xml_number(x, n, name, 1, &v) == 1)
             set_var(x, name, v);
         else
             bad = 1;
@@ -162,50 +192,107 @@ static int add_draw(XmlCtx *x, const XmlDraw *d)
     return 0;
 }
 
-/* Nodes of one axis; 0 when some lie in the domain. */
-static int node_range(const XmlCtx *x, int a, double p, double s, long *lo, long *hi)
+/* Nodes of one axis between coordinates lo and hi; 0 when some lie in the domain. */
+static int node_range(const XmlCtx *x, int a, double lo, double hi, long *klo, long *khi)
 {
-    *lo = gc_round((p - x->pmin[a]) / x->dp);
-    *hi = gc_round((p + s - x->pmin[a]) / x->dp);
+    *klo = gc_round((lo - x->pmin[a]) / x->dp);
+    *khi = gc_round((hi - x->pmin[a]) / x->dp);
     if (x->dim == 2 && a == 1) {
-        int hit = *lo <= 0 && *hi >= 0;
-        *lo = *hi = 0;
+        int hit = *klo <= 0 && *khi >= 0;
+        *klo = *khi = 0;
         return hit ? 0 : -1;
     }
-    if (*lo < 0)
-        *lo = 0;
-    if (*hi > x->nodes[a])
-        *hi = x->nodes[a];
-    return *lo <= *hi ? 0 : -1;
+    if (*klo < 0)
+        *klo = 0;
+    if (*khi > x->nodes[a])
+        *khi = x->nodes[a];
+    return *klo <= *khi ? 0 : -1;
 }
 
+static int add_solid(XmlCtx *x, XmlDraw *d, const char *tag);
+
+/* A box the matrix tilts: the prism of its corners, the base its face at its low y and the
+ * top its face at its high y, so that in a 2D case a box turned about y is a prism along y
+ * (re-spanned across the plane of the case by prism_in_plane).  p, q: opposite corners. */
+static int tilted_box(XmlCtx *x, const double p[3], const double q[3], int mk, SrcLoc loc)
+{
+    static const int xz[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}; /* around the face */
+    const XmlMatrix *m = &x->matrix;
+    XmlDraw d = {XD_PRISM, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, loc};
+    if (x->dim == 2) {
+        long klo, khi;
+        if (!xml_matrix_keeps_y(m)) {
+            diag_error(loc, "<drawbox>: in a 2D case a box may be turned about y only (the "
+                            "transformation would tilt it out of the plane of the case)");
+            return -1;
+        }
+        const double y0 = m->a[1][1] * p[1] + m->a[1][3], y1 = m->a[1][1] * q[1] + m->a[1][3];
+        if (node_range(x, 1, fmin(y0, y1), fmax(y0, y1), &klo, &khi))
+            return off_plane(x, "drawbox", loc);
+    }
+    d.pts = ast_alloc(8 * 3 * sizeof *d.pts);
+    d.npts = 8;
+    for (int f = 0; f < 2; f++)
+        for (int k = 0; k < 4; k++) {
+            const double c[3] = {xz[k][0] ? q[0] : p[0], f ? q[1] : p[1], xz[k][1] ? q[2] : p[2]};
+            double *out = d.pts + 3 * (4 * f + k);
+            xml_matrix_point(m, c, out);
+            if (x->dim == 2) /* along y across the plane, whatever the box's own y extent */
+                out[1] = x->pmin[1] + (f ? x->dp : -x->dp);
+        }
+    return add_solid(x, &d, "drawbox");
+}
+
+/* <point> and either <size> or <endpoint>: the box's opposite corners p and q. */
+static int box_corners(XmlCtx *x, const xmlNode *n, double p[3], double q[3])
+{
+    const xmlNode *point = xml_child(n, "point"), *size = xml_child(n, "size");
+    const xmlNode *end = xml_child(n, "endpoint");
+    if (!point || !size == !end) {
+        diag_error(xml_loc(x, n), "<drawbox> needs <point> and either <size> or <endpoint>");
+        return -1;
+    }
+    double s[3];
+    if (xml_point(x, point, p) | xml_point(x, size ? size : end, size ? s : q))
+        return -1;
+    for (int a = 0; a < 3; a++) {
+        if (size && s[a] < 0) {
+            diag_error(xml_loc(x, size), "<size>: %c = %g is negative", "xyz"[a], s[a]);
+            return -1;
+        }
+        if (!size && q[a] < p[a]) {
+            diag_error(xml_loc(x, end), "<endpoint>: %c = %g is below <point>'s %g", "xyz"[a],
+                       q[a], p[a]);
+            return -1;
+        }
+        if (size)
+            q[a] = p[a] + s[a];
+    }
+    return 0;
+}
+
+/* A box GenCase fills node by node (the header comment); through a transformation that
+ * keeps the axes, the box between its moved corners; through one that tilts it, a prism. */
 static int drawbox(XmlCtx *x, const xmlNode *n, int mk)
 {
-    static const char *const kids[] = {"boxfill", "point", "size", NULL};
+    static const char *const kids[] = {"boxfill", "point", "size", "endpoint", NULL};
     static const char *const none[] = {NULL};
     SrcLoc loc = xml_loc(x, n);
     int bad = xml_check_attrs(x, n, none) != 0;
     bad |= xml_check_children(x, n, kids) != 0;
     bad |= boxfill(x, n) != 0;
-    const xmlNode *point = xml_child(n, "point"), *size = xml_child(n, "size");
-    if (!point || !size) {
-        diag_error(loc, "<drawbox> needs <point> and <size>");
+    double p[3], q[3];
+    if (box_corners(x, n, p, q) || bad)
         return -1;
-    }
-    double p[3], s[3];
-    bad |= xml_point(x, point, p) != 0;
-    bad |= xml_point(x, size, s) != 0;
-    if (bad)
-        return -1;
-    if (mk < 0)
+    if (mk == XML_MK_NONE)
         return no_mk("drawbox", loc);
+    if (!xml_matrix_keeps_axes(&x->matrix))
+        return tilted_box(x, p, q, mk, loc);
+    xml_matrix_point(&x->matrix, p, p);
+    xml_matrix_point(&x->matrix, q, q);
     XmlDraw d = {XD_BOX, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, loc};
     for (int a = 0; a < 3; a++) {
-        if (s[a] < 0) {
-            diag_error(xml_loc(x, size), "<size>: %c = %g is negative", "xyz"[a], s[a]);
-            return -1;
-        }
-        if (node_range(x, a, p[a], s[a], &d.lo[a], &d.hi[a]) == 0)
+        if (node_range(x, a, fmin(p[a], q[a]), fmax(p[a], q[a]), &d.lo[a], &d.hi[a]) == 0)
             continue;
         return x->dim == 2 && a == 1 ? off_plane(x, "drawbox", loc) : outside("drawbox", a, loc);
     }
@@ -262,7 +349,25 @@ static int read_round(XmlCtx *x, const xmlNode *n, int mk, const char *tag, int 
         diag_error(d->loc, "<%s> attribute 'radius': must be positive (got %g)", tag, d->r);
         return -1;
     }
-    return mk < 0 ? no_mk(tag, d->loc) : 0;
+    return mk == XML_MK_NONE ? no_mk(tag, d->loc) : 0;
+}
+
+/* A cylinder's or sphere's npoints points through the transformation, its radius scaled
+ * with it; a scale that differs between axes would make it elliptic. */
+static int transform_round(const XmlCtx *x, XmlDraw *d, int npoints, const char *tag)
+{
+    if (xml_matrix_is_identity(&x->matrix))
+        return 0;
+    const double s = xml_matrix_similarity(&x->matrix);
+    if (s == 0) {
+        diag_error(d->loc, "<%s>: a <scale> that differs between axes would make it elliptic, "
+                           "which the importer does not support", tag);
+        return -1;
+    }
+    for (int k = 0; k < npoints; k++)
+        xml_matrix_point(&x->matrix, d->p[k], d->p[k]);
+    d->r *= s;
+    return 0;
 }
 
 /* The nodes that [lo, hi] along axis a covers into d, or an error that the shape is outside
@@ -275,7 +380,8 @@ static int draw_span(XmlCtx *x, const char *tag, int a, double lo, double hi, Xm
 static int drawcylinder(XmlCtx *x, const xmlNode *n, int mk)
 {
     XmlDraw d = {XD_CYLINDER, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, xml_loc(x, n)};
-    if (read_round(x, n, mk, "drawcylinder", 2, "two <point>s (the ends of its axis)", &d))
+    if (read_round(x, n, mk, "drawcylinder", 2, "two <point>s (the ends of its axis)", &d) ||
+        transform_round(x, &d, 2, "drawcylinder"))
         return -1;
     double len2 = 0;
     for (int a = 0; a < 3; a++)
@@ -300,7 +406,8 @@ static int drawcylinder(XmlCtx *x, const xmlNode *n, int mk)
 static int drawsphere(XmlCtx *x, const xmlNode *n, int mk)
 {
     XmlDraw d = {XD_SPHERE, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, xml_loc(x, n)};
-    if (read_round(x, n, mk, "drawsphere", 1, "one <point> (its centre)", &d))
+    if (read_round(x, n, mk, "drawsphere", 1, "one <point> (its centre)", &d) ||
+        transform_round(x, &d, 1, "drawsphere"))
         return -1;
     if (x->dim == 2) { /* the disc in the plane of the case */
         const double off = x->pmin[1] - d.p[0][1];
@@ -379,8 +486,15 @@ static int drawfile(XmlCtx *x, const xmlNode *n, int mk)
         diag_error(loc, "<%s>: surfaces from files are supported in 3D cases only", xml_name(n));
         return -1;
     }
-    if (mk < 0)
+    if (mk == XML_MK_NONE)
         return no_mk(xml_name(n), loc);
+    if (!xml_matrix_is_identity(&x->matrix)) {
+        diag_error(loc, "<%s>: surface files under a transformation (<move>, <rotate>, "
+                        "<scale> before it) are not supported: transform the file itself or "
+                        "reset the transformation (<matrixreset/>) before drawing it",
+                   xml_name(n));
+        return -1;
+    }
     if (surface_file_ok(x, n, file, loc))
         return -1;
     XmlDraw d = {XD_SURFACE, mk, {0}, {0}, {{0}}, 0, file, NULL, 0, x->freedraw, loc};
@@ -394,7 +508,7 @@ static int drawfile(XmlCtx *x, const xmlNode *n, int mk)
 /* In a 2D case a prism must be drawn along y (its top its base moved along y) across the
  * plane of the case: its cut is then the same at every y, and it is redrawn over the y of
  * both that plane and of the boxes' (0), so that a body of boxes and prisms has one plane. */
-static int prism_in_plane(const XmlCtx *x, XmlDraw *d)
+static int prism_in_plane(const XmlCtx *x, XmlDraw *d, const char *tag)
 {
     const int m = d->npts / 2;
     const double dy = d->pts[3 * m + 1] - d->pts[1];
@@ -402,15 +516,15 @@ static int prism_in_plane(const XmlCtx *x, XmlDraw *d)
     for (int k = 0; k < m; k++) {
         const double *b = d->pts + 3 * k, *t = d->pts + 3 * (m + k);
         if (b[1] != d->pts[1] || t[0] != b[0] || t[2] != b[2] || t[1] - b[1] != dy || dy == 0) {
-            diag_error(d->loc, "<drawprism> in a 2D case: only prisms drawn along y (the top "
-                               "the base moved along y) are supported");
+            diag_error(d->loc, "<%s> in a 2D case: only prisms drawn along y (the top "
+                               "the base moved along y) are supported", tag);
             return -1;
         }
         lo = fmin(lo, fmin(b[1], t[1]));
         hi = fmax(hi, fmax(b[1], t[1]));
     }
     if (lo > x->pmin[1] + 1e-9 * x->dp || hi < x->pmin[1] - 1e-9 * x->dp)
-        return off_plane(x, "drawprism", d->loc);
+        return off_plane(x, tag, d->loc);
     const double y0 = fmin(0.0, x->pmin[1]) - x->dp, y1 = fmax(0.0, x->pmin[1]) + x->dp;
     for (int k = 0; k < m; k++) {
         d->pts[3 * k + 1] = y0;
@@ -466,26 +580,84 @@ static int drawsolid(XmlCtx *x, const xmlNode *n, int mk)
                    npoints);
         return -1;
     }
-    if (mk < 0)
+    if (mk == XML_MK_NONE)
         return no_mk(tag, d.loc);
-    if (x->dim == 2 && !prism) {
-        diag_error(d.loc, "<drawpyramid>: pyramids are supported in 3D cases only");
+    for (int k = 0; k < d.npts; k++)
+        xml_matrix_point(&x->matrix, d.pts + 3 * k, d.pts + 3 * k);
+    return add_solid(x, &d, tag);
+}
+
+/* A prism or pyramid d drawn by card tag, its corners transformed: checked in a 2D case,
+ * built once to check it, and added with the nodes of its bounding box. */
+static int add_solid(XmlCtx *x, XmlDraw *d, const char *tag)
+{
+    if (x->dim == 2 && d->kind == XD_PYRAMID) {
+        diag_error(d->loc, "<drawpyramid>: pyramids are supported in 3D cases only");
         return -1;
     }
-    if (x->dim == 2 && prism_in_plane(x, &d))
+    if (x->dim == 2 && prism_in_plane(x, d, tag))
         return -1;
-    if (solid_ok(&d, tag))
+    if (solid_ok(d, tag))
         return -1;
     for (int a = 0; a < 3; a++) { /* the nodes of the bounding box */
         double lo = HUGE_VAL, hi = -HUGE_VAL;
-        for (int k = 0; k < d.npts; k++) {
-            lo = fmin(lo, d.pts[3 * k + a]);
-            hi = fmax(hi, d.pts[3 * k + a]);
+        for (int k = 0; k < d->npts; k++) {
+            lo = fmin(lo, d->pts[3 * k + a]);
+            hi = fmax(hi, d->pts[3 * k + a]);
         }
-        if (!(x->dim == 2 && a == 1) && draw_span(x, tag, a, lo, hi, &d))
+        if (!(x->dim == 2 && a == 1) && draw_span(x, tag, a, lo, hi, d))
             return -1;
     }
-    return add_draw(x, &d);
+    return add_draw(x, d);
+}
+
+/* <drawextrude closed="true"> with the <point>s of a polygon and <extrude x y z>: the
+ * prism whose top is the polygon moved by the extrusion vector.  (closed="false" draws
+ * an open wall of the polyline, not a solid.) */
+static int drawextrude(XmlCtx *x, const xmlNode *n, int mk)
+{
+    static const char *const attrs[] = {"closed", NULL};
+    static const char *const kids[] = {"point", "extrude", NULL};
+    XmlDraw d = {XD_PRISM, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, xml_loc(x, n)};
+    int bad = xml_check_attrs(x, n, attrs) != 0;
+    bad |= xml_check_children(x, n, kids) != 0;
+    const char *closed = xml_attr(n, "closed");
+    const xmlNode *ext = xml_child(n, "extrude");
+    double v[3];
+    int m = 0;
+    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
+        m += xml_is(c, "point");
+    d.pts = ast_alloc(((size_t)m + 1) * 6 * sizeof *d.pts);
+    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
+        if (xml_is(c, "point"))
+            bad |= xml_point(x, c, d.pts + 3 * d.npts++) != 0;
+    if (!ext) {
+        diag_error(d.loc, "<drawextrude> needs <extrude x=\"..\" y=\"..\" z=\"..\"/> (the "
+                          "vector the polygon is extruded along)");
+        return -1;
+    }
+    bad |= xml_point(x, ext, v) != 0;
+    if (bad)
+        return -1;
+    if (closed && strcmp(closed, "true") && strcmp(closed, "1")) {
+        diag_error(d.loc, "<drawextrude> attribute 'closed': only closed polygons (\"true\", "
+                          "the default) extrude into a solid, got '%s'", closed);
+        return -1;
+    }
+    if (m < 3) {
+        diag_error(d.loc, "<drawextrude> needs at least 3 <point>s (the polygon's corners), "
+                          "got %d", m);
+        return -1;
+    }
+    if (mk == XML_MK_NONE)
+        return no_mk("drawextrude", d.loc);
+    for (int k = 0; k < m; k++)
+        for (int a = 0; a < 3; a++)
+            d.pts[3 * (m + k) + a] = d.pts[3 * k + a] + v[a];
+    d.npts = 2 * m;
+    for (int k = 0; k < d.npts; k++)
+        xml_matrix_point(&x->matrix, d.pts + 3 * k, d.pts + 3 * k);
+    return add_solid(x, &d, "drawextrude");
 }
 
 /* Drawings the importer does not handle yet. */
@@ -493,63 +665,133 @@ static int unsupported_drawing(const XmlCtx *x, const xmlNode *n)
 {
     diag_error(xml_loc(x, n), "<%s>: this drawing command is not supported by the importer yet "
                               "(<drawbox>, <drawcylinder>, <drawsphere>, <drawprism>, "
-                              "<drawpyramid>, <drawfilevtk> and <drawfilestl> are)",
+                              "<drawpyramid>, <drawextrude>, <drawfilevtk> and <drawfilestl> are)",
                xml_name(n));
     return -1;
 }
 
-static int command(XmlCtx *x, const xmlNode *n, int *mk)
+static int setmk(XmlCtx *x, const xmlNode *n, int *mk)
 {
-    if (xml_is(n, "newvar"))
-        return newvar(x, n);
-    if (xml_is(n, "setmkbound")) {
-        static const char *const attrs[] = {"mk", NULL};
-        long v;
-        if (xml_check_attrs(x, n, attrs) || xml_integer(x, n, "mk", 1, 0, 65535, &v) != 1)
+    static const char *const attrs[] = {"mk", NULL};
+    static const char *const none[] = {NULL};
+    long v;
+    if (xml_is(n, "setmkvoid")) { /* what follows removes particles */
+        if (xml_check_attrs(x, n, none))
             return -1;
-        *mk = (int)v;
+        *mk = XML_MK_VOID;
         return 0;
     }
+    if (xml_check_attrs(x, n, attrs) || xml_integer(x, n, "mk", 1, 0, 65535, &v) != 1)
+        return -1;
+    *mk = (int)v;
+    return 0;
+}
+
+static int drawing(XmlCtx *x, const xmlNode *n, int mk)
+{
+    if (xml_is(n, "drawbox"))
+        return drawbox(x, n, mk);
+    if (xml_is(n, "drawcylinder"))
+        return drawcylinder(x, n, mk);
+    if (xml_is(n, "drawsphere"))
+        return drawsphere(x, n, mk);
+    if (xml_is(n, "drawfilevtk") || xml_is(n, "drawfilestl"))
+        return drawfile(x, n, mk);
+    if (xml_is(n, "drawprism") || xml_is(n, "drawpyramid"))
+        return drawsolid(x, n, mk);
+    if (xml_is(n, "drawextrude"))
+        return drawextrude(x, n, mk);
+    return unsupported_drawing(x, n);
+}
+
+/* <list>s run by <runlist> may run others: a list that runs itself stops here. */
+#define MAX_LIST_DEPTH 32
+
+static int run_commands(XmlCtx *x, const xmlNode *list, int *mk, int depth);
+
+/* <runlist name="L" times="k"/>: the commands of <list name="L"> k times (default 1). */
+static int runlist(XmlCtx *x, const xmlNode *n, int *mk, int depth)
+{
+    static const char *const attrs[] = {"name", "times", NULL};
+    long times = 1;
+    if (xml_check_attrs(x, n, attrs) || xml_integer(x, n, "times", 0, 0, 100000, &times) < 0)
+        return -1;
+    const char *name = xml_attr(n, "name");
+    const xmlNode *list = NULL;
+    for (xmlNode *c = name ? xml_first(x->commands) : NULL; c && !list; c = xml_next(c)) {
+        const char *cn = xml_is(c, "list") ? xml_attr(c, "name") : NULL;
+        if (cn && !strcmp(cn, name))
+            list = c;
+    }
+    if (!list) {
+        diag_error(xml_loc(x, n), name ? "<runlist>: no <list name=\"%s\"> in <commands>"
+                                       : "<runlist>: missing attribute 'name'%s",
+                   name ? name : "");
+        return -1;
+    }
+    if (depth >= MAX_LIST_DEPTH) {
+        diag_error(xml_loc(x, n), "<runlist name=\"%s\">: lists run one another more than %d "
+                                  "deep (does a list run itself?)", name, MAX_LIST_DEPTH);
+        return -1;
+    }
+    for (long k = 0; k < times; k++)
+        if (run_commands(x, list, mk, depth + 1))
+            return -1;
+    return 0;
+}
+
+static int command(XmlCtx *x, const xmlNode *n, int *mk, int depth)
+{
+    int rc = xml_transform_command(x, n);
+    if (rc <= 0)
+        return rc;
+    if (xml_is(n, "newvar") || xml_is(n, "newvarcte") || xml_is(n, "setvar"))
+        return newvar(x, n);
+    if (xml_is(n, "setmkbound") || xml_is(n, "setmkvoid"))
+        return setmk(x, n, mk);
     if (xml_is(n, "setmkfluid")) {
         diag_error(xml_loc(x, n), "<setmkfluid>: fluids are not supported (sphc simulates "
                                   "deformable solids)");
         return -1;
     }
-    if (xml_is(n, "drawbox"))
-        return drawbox(x, n, *mk);
-    if (xml_is(n, "drawcylinder"))
-        return drawcylinder(x, n, *mk);
-    if (xml_is(n, "drawsphere"))
-        return drawsphere(x, n, *mk);
-    if (xml_is(n, "drawfilevtk") || xml_is(n, "drawfilestl"))
-        return drawfile(x, n, *mk);
-    if (xml_is(n, "drawprism") || xml_is(n, "drawpyramid"))
-        return drawsolid(x, n, *mk);
+    if (xml_is(n, "runlist"))
+        return runlist(x, n, mk, depth);
     if (xml_is(n, "setfrdrawmode"))
         return setfrdrawmode(x, n);
     if (is_accepted(n))
         return 0;
     if (!strncmp(xml_name(n), "draw", 4))
-        return unsupported_drawing(x, n);
+        return drawing(x, n, *mk);
     diag_error(xml_loc(x, n), "<%s>: this GenCase command is not supported by the importer yet",
                xml_name(n));
     return -1;
 }
 
-static int mainlist(XmlCtx *x, const xmlNode *list)
+static int run_commands(XmlCtx *x, const xmlNode *list, int *mk, int depth)
 {
-    int mk = -1, bad = 0;
+    int bad = 0;
     for (xmlNode *c = xml_first(list); c; c = xml_next(c))
-        bad |= command(x, c, &mk) != 0;
+        bad |= command(x, c, mk, depth) != 0;
+    return bad ? -1 : 0;
+}
+
+/* <predefinition>: variables for <definition> itself. */
+static int predefinition(XmlCtx *x, const xmlNode *n)
+{
+    static const char *const kids[] = {"newvar", "newvarcte", "setvar", NULL};
+    int bad = xml_check_children(x, n, kids) != 0;
+    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
+        bad |= newvar(x, c) != 0;
     return bad ? -1 : 0;
 }
 
 int xml_geometry(XmlCtx *x, const xmlNode *geometry)
 {
-    static const char *const kids[] = {"definition", "commands", NULL};
-    static const char *const lists[] = {"mainlist", NULL};
+    static const char *const kids[] = {"predefinition", "definition", "commands", NULL};
+    static const char *const lists[] = {"mainlist", "list", NULL};
     if (xml_check_children(x, geometry, kids))
         return -1;
+    const xmlNode *pre = xml_child(geometry, "predefinition");
     const xmlNode *def = xml_child(geometry, "definition");
     const xmlNode *commands = xml_child(geometry, "commands");
     const xmlNode *list = commands ? xml_child(commands, "mainlist") : NULL;
@@ -558,9 +800,13 @@ int xml_geometry(XmlCtx *x, const xmlNode *geometry)
                                          "<commands><mainlist>");
         return -1;
     }
-    if (definition(x, def) || xml_check_children(x, commands, lists))
+    if ((pre && predefinition(x, pre)) || definition(x, def) ||
+        xml_check_children(x, commands, lists))
         return -1;
-    return mainlist(x, list);
+    x->commands = commands;
+    xml_matrix_identity(&x->matrix);
+    int mk = XML_MK_NONE;
+    return run_commands(x, list, &mk, 0);
 }
 
 /* ------------------------------------------------------------------ drawn mks */

@@ -5,6 +5,7 @@
  *   xml_expr.c      the expression language of attribute values and <userexpression>s
  *   xml_scene.c     <constantsdef> and <execution><parameters>: the scene settings
  *   xml_geometry.c  <geometry>: the GenCase lattice, <drawbox>, <drawcylinder>, <drawfile*>
+ *   xml_transform.c GenCase's transformation matrix (<move>, <rotate>, <scale>, ...)
  *   xml_shape.c     the drawings of an mk as an sph shape (and lattice) of a body or `near`
  *   xml_mathexpr.c  <mathexpressions>: user expressions and their locals (lets)
  *   xml_deform.c    <deformstrucs>: bodies, material and settings cards
@@ -25,6 +26,10 @@
  * axis, or those of the bounding box of another drawing (inclusive; in 2D y is 0..0). */
 typedef enum { XD_BOX, XD_CYLINDER, XD_SURFACE, XD_SPHERE, XD_PRISM, XD_PYRAMID } XmlDrawKind;
 
+/* The mk of drawings made after <setmkvoid/>: they take nodes over from every mk and give
+ * them to none.  Before any <setmk...> the mk is XML_MK_NONE. */
+enum { XML_MK_NONE = -1, XML_MK_VOID = -2 };
+
 typedef struct {
     XmlDrawKind kind;
     int mk;
@@ -38,6 +43,11 @@ typedef struct {
     int freedraw;             /* drawn in GenCase's free drawing mode (<setfrdrawmode>) */
     SrcLoc loc;
 } XmlDraw;
+
+/* GenCase's affine transformation of the drawings (xml_transform.c): x -> A x + a[.][3]. */
+typedef struct {
+    double a[3][4];
+} XmlMatrix;
 
 /* One <userexpression>: its expression with its locals renamed to the model's lets. */
 typedef struct {
@@ -61,6 +71,10 @@ typedef struct {
     XmlDraw *draws;
     int ndraws;
     int freedraw;             /* <setfrdrawmode auto="true"/> in force */
+    const xmlNode *commands;  /* <commands>: the <list>s <runlist> runs */
+    XmlMatrix matrix;         /* the transformation in force, and those <matrixsave/> kept */
+    XmlMatrix *saved;
+    int nsaved;
     /* <mathexpressions> */
     XmlUserExpr *exprs;
     int nexprs;
@@ -149,6 +163,23 @@ SettingList xml_scene_settings(const XmlCtx *x);
 int xml_geometry(XmlCtx *x, const xmlNode *geometry);
 /* Whether something was drawn with mk. */
 int xml_mk_drawn(const XmlCtx *x, int mk);
+
+/* xml_transform.c.  A transformation command (<move>, <rotate>, <rotateline>, <scale>,
+ * <matrixreset>, <matrixsave>, <matrixload>) applied to x->matrix: 0, or -1 after
+ * reporting; 1 when n is none of them. */
+int xml_transform_command(XmlCtx *x, const xmlNode *n);
+void xml_matrix_identity(XmlMatrix *m);
+int xml_matrix_is_identity(const XmlMatrix *m);
+void xml_matrix_point(const XmlMatrix *m, const double p[3], double out[3]);
+/* Whether m takes the axes to axes (moves, scales, turns by multiples of 90 degrees about
+ * an axis): an axis-aligned box stays one. */
+int xml_matrix_keeps_axes(const XmlMatrix *m);
+/* s when m's linear part is s times a rotation or reflection (a circle stays a circle of
+ * s times the radius), else 0. */
+double xml_matrix_similarity(const XmlMatrix *m);
+/* Whether m takes the y axis to itself and the x-z plane to itself (a 2D case's plane stays
+ * parallel to itself). */
+int xml_matrix_keeps_y(const XmlMatrix *m);
 
 /* xml_shape.c: the sph shape of what GenCase gives mk: its drawings in drawing order, less
  * what later drawings of other mks take over (the auxiliary geometry of a `near`). */

@@ -6,7 +6,8 @@
  * drawn (a 2D case's sphere: the disc in its plane), a <drawfilevtk> or
  * <drawfilestl> the sph surface of its file.  A later drawing with another mk takes its
  * nodes over from the earlier ones, so the shape of an mk is its drawings in drawing order
- * less the later drawings of other mks that overlap them.
+ * less the later drawings of other mks that overlap them; drawings after <setmkvoid/> (mk
+ * XML_MK_VOID) are such drawings of no body.
  *
  * Bodies (docs/xml.md, "Geometry"): sph fills cell centres inside the shape, so a drawn
  * cylinder or surface keeps its true volume.  A body whose boxes are joined by other

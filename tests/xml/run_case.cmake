@@ -3,7 +3,7 @@
 #   cmake -DSPHC=sphc -DXML=case.xml -DWORKDIR=dir [-DMAPFACS=1,2,4 -DPARTICLES=a,b,c]
 #         [-DPARTICLES_RANGE=lo,hi] [-DSPHC_ARGS="--xml-fill=gencase"]
 #         [-DEND=1e-5] [-DRUN=OFF] [-DDUMP_CONTAINS=text|text] [-DDUMP_STAGE=ast]
-#         [-DTHREADS=1] [-DCLEAN=ON] -P run_case.cmake
+#         [-DTHREADS=1] [-DCLEAN=ON] [-DBODY_PARTICLES=n1,lo2:hi2,...] -P run_case.cmake
 #
 # For each mapfac in MAPFACS (default: the case as written, compiled where it is) the case
 # is copied with its <mapfac> values replaced, compiled with sphc (and SPHC_ARGS), and
@@ -11,7 +11,8 @@
 # matching number of PARTICLES, or a number in [lo, hi] of PARTICLES_RANGE.
 # DUMP_CONTAINS: texts (separated by |) that `sphc --dump=DUMP_STAGE` must print (default
 # stage: model), e.g. the imported box or measurement plane.  THREADS: the run's threads;
-# CLEAN=ON: remove the run's particle files afterwards (large cases).
+# CLEAN=ON: remove the run's particle files afterwards (large cases).  BODY_PARTICLES: each
+# body's particles in the order of summary.json, a number or a range lo:hi.
 
 foreach(var SPHC XML WORKDIR)
   if(NOT DEFINED ${var})
@@ -95,6 +96,29 @@ foreach(mapfac IN LISTS MAPFACS)
         message(FATAL_ERROR "${name}: ${particles} particles, expected ${expected}")
       endif()
     endif()
+    string(REGEX MATCHALL "\"particles\": [0-9]+" counts "${summary}")
+    list(REMOVE_AT counts 0) # the total
+    string(REPLACE "," ";" body_wanted "${BODY_PARTICLES}")
+    set(body 0)
+    foreach(want IN LISTS body_wanted)
+      list(LENGTH counts nbodies)
+      if(NOT body LESS nbodies)
+        message(FATAL_ERROR "${name}: ${nbodies} bodies in summary.json, expected more")
+      endif()
+      list(GET counts ${body} got)
+      string(REGEX REPLACE "[^0-9]" "" got "${got}")
+      string(REPLACE ":" ";" bounds "${want}")
+      list(GET bounds 0 lo)
+      list(LENGTH bounds nb)
+      set(hi ${lo})
+      if(nb EQUAL 2)
+        list(GET bounds 1 hi)
+      endif()
+      if(got LESS lo OR got GREATER hi)
+        message(FATAL_ERROR "${name}: body ${body} has ${got} particles, expected ${want}")
+      endif()
+      math(EXPR body "${body} + 1")
+    endforeach()
     if(PARTICLES_RANGE)
       list(GET PARTICLES_RANGE 0 lo)
       list(GET PARTICLES_RANGE 1 hi)
