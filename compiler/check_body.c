@@ -111,13 +111,66 @@ static int check_box(const Model *m, const NamedCall *c, ShapePrim *p)
     return 0;
 }
 
-/* surface(file "name"): a closed surface from a VTK or STL file (runtime/mesh.h), read and
- * checked now and read again by the program, which gets its absolute path. */
-static int check_surface(const NamedCall *c, ShapePrim *p)
+/* The map that moves a surface (sph_mesh_load_moved: the columns of its matrix, then the
+ * translation) from `scale s`, or `matrix [row 1] [row 2] [row 3]`, and `move [b]`; p->pts
+ * stays NULL when none is given. */
+static int surface_map(const Model *m, const NamedCall *c, ShapePrim *p)
 {
-    static const char *const args[] = {"file"};
+    const Setting *scale = find_arg(c, "scale"), *matrix = find_arg(c, "matrix");
+    const Setting *move = find_arg(c, "move");
+    double a[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, b[3] = {0, 0, 0};
+    if (!scale && !matrix && !move)
+        return 0;
+    if (scale && matrix) {
+        diag_error(matrix->loc, "surface() takes 'scale' or 'matrix', not both");
+        return -1;
+    }
+    if ((scale && scale->nvalues != 1) || (move && move->nvalues != 1)) {
+        diag_error((scale && scale->nvalues != 1 ? scale : move)->loc, "argument '%s' takes one "
+                   "value", scale && scale->nvalues != 1 ? "scale" : "move");
+        return -1;
+    }
+    if (matrix && matrix->nvalues != 3) {
+        diag_error(matrix->loc, "argument 'matrix' takes the matrix's 3 rows (got %d)",
+                   matrix->nvalues);
+        return -1;
+    }
+    double sc = 1.0;
+    if (scale && check_const_expr(m, scale->values[0], "scale", &sc))
+        return -1;
+    for (int r = 0; r < 3; r++) {
+        if (matrix && check_vec3(m, matrix->values[r], "matrix", a[r]))
+            return -1;
+        a[r][r] *= sc;
+    }
+    if (move && check_vec3(m, move->values[0], "move", b))
+        return -1;
+    const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                       a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                       a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    if (!(fabs(det) > 0) || !isfinite(det)) {
+        diag_error((matrix ? matrix : scale)->loc, "the %s flattens the surface (its "
+                   "determinant is %g)", matrix ? "matrix" : "scale", det);
+        return -1;
+    }
+    p->pts = ast_alloc(12 * sizeof *p->pts);
+    p->npts = 4;
+    for (int col = 0; col < 3; col++)
+        for (int r = 0; r < 3; r++)
+            p->pts[3 * col + r] = a[r][col];
+    memcpy(p->pts + 9, b, sizeof b);
+    return 0;
+}
+
+/* surface(file "name" [scale s | matrix [r1] [r2] [r3]] [move [b]]): the closed surface in a
+ * VTK or STL file (runtime/mesh.h), each point x of it moved to A x + b (A = s I or the
+ * matrix), read and checked now and read again by the program, which gets its absolute
+ * path. */
+static int check_surface(const Model *m, const NamedCall *c, ShapePrim *p)
+{
+    static const char *const args[] = {"file", "scale", "matrix", "move"};
     p->kind = SHAPE_SURFACE;
-    if (check_arg_names(c, args, 1, 0))
+    if (check_arg_names(c, args, 4, 1) || surface_map(m, c, p))
         return -1;
     const Setting *s = find_arg(c, "file");
     if (!s) {
@@ -126,7 +179,7 @@ static int check_surface(const NamedCall *c, ShapePrim *p)
     }
     char *path = source_beside(s->loc.file, s->text), err[1024], full[PATH_MAX];
     sph_mesh mesh;
-    if (sph_mesh_load(path, &mesh, err, sizeof err)) {
+    if (sph_mesh_load_moved(path, p->pts, &mesh, err, sizeof err)) {
         diag_error(s->loc, "%s", err);
         free(path);
         return -1;
@@ -224,7 +277,7 @@ static int check_prim(const Model *m, const NamedCall *c, ShapePrim *p)
         return 0;
     }
     if (strcmp(c->name, "surface") == 0)
-        return check_surface(c, p);
+        return check_surface(m, c, p);
     if (strcmp(c->name, "prism") == 0 || strcmp(c->name, "pyramid") == 0)
         return check_solid(m, c, p);
     diag_error(c->loc, "unknown shape '%s' (expected box, cylinder, sphere, surface, prism or "

@@ -497,8 +497,9 @@ void emit_where(FILE *out, SrcLoc loc)
     emit_c_string(out, buf);
 }
 
-/* The corners of the prisms and pyramids of region `name`, one table each (NAME_corners_K),
- * which its sph_shape table then points to. */
+/* The corners of the prisms and pyramids of region `name`, and the maps that move its
+ * surfaces (4 vectors: sph_mesh_load_moved), one table each (NAME_corners_K), which its
+ * sph_shape table then points to. */
 static void region_corners(Emitter *E, const char *name, const Region *r)
 {
     for (int k = 0; k < r->n; k++) {

@@ -17,7 +17,8 @@ typedef struct {
                              * its bounding box */
     int subtract;
     char *file;             /* surface: the file, absolute (read by the program at run time) */
-    double *pts;            /* prism, pyramid: npts corners, as sph_shape's */
+    double *pts;            /* prism, pyramid: npts corners, as sph_shape's; surface: NULL
+                             * or the map that moves it (npts 4, sph_mesh_load_moved) */
     int npts;
     double volume;          /* surface, prism, pyramid: the volume it encloses */
 } ShapePrim;

@@ -13,8 +13,8 @@ static void region(FILE *out, const char *what, const Region *r)
         fprintf(out, " %s%s a=[%g %g %g] b=[%g %g %g] r=%g", s->subtract ? "- " : k ? "+ " : "",
                 kinds[s->kind], s->a[0], s->a[1], s->a[2], s->b[0], s->b[1], s->b[2], s->r);
         if (s->kind == SHAPE_SURFACE)
-            fprintf(out, " volume=%.6g file=%s", s->volume, s->file);
-        if (s->npts)
+            fprintf(out, " volume=%.6g file=%s%s", s->volume, s->file, s->npts ? " moved" : "");
+        else if (s->npts)
             fprintf(out, " volume=%.6g corners=%d", s->volume, s->npts);
     }
     fputs("\n", out);

@@ -218,7 +218,7 @@ static int tilted_box(XmlCtx *x, const double p[3], const double q[3], int mk, S
 {
     static const int xz[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}; /* around the face */
     const XmlMatrix *m = &x->matrix;
-    XmlDraw d = {XD_PRISM, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, loc};
+    XmlDraw d = {XD_PRISM, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, loc, NULL};
     if (x->dim == 2) {
         long klo, khi;
         if (!xml_matrix_keeps_y(m)) {
@@ -290,7 +290,7 @@ static int drawbox(XmlCtx *x, const xmlNode *n, int mk)
         return tilted_box(x, p, q, mk, loc);
     xml_matrix_point(&x->matrix, p, p);
     xml_matrix_point(&x->matrix, q, q);
-    XmlDraw d = {XD_BOX, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, loc};
+    XmlDraw d = {XD_BOX, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, loc, NULL};
     for (int a = 0; a < 3; a++) {
         if (node_range(x, a, fmin(p[a], q[a]), fmax(p[a], q[a]), &d.lo[a], &d.hi[a]) == 0)
             continue;
@@ -335,16 +335,15 @@ static int read_round(XmlCtx *x, const xmlNode *n, int mk, const char *tag, int 
     int bad = xml_check_attrs(x, n, attrs) != 0;
     bad |= xml_check_children(x, n, kids) != 0;
     bad |= xml_number(x, n, "radius", 1, &d->r) != 1;
-    int npoints = 0;
-    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
-        if (xml_is(c, "point") && npoints++ < want)
-            bad |= xml_point(x, c, d->p[npoints - 1]) != 0;
-    if (bad)
+    int npoints;
+    const double *pts = xml_points(x, n, 1, &npoints);
+    if (bad || !pts)
         return -1;
     if (npoints != want) {
         diag_error(d->loc, "<%s> needs %s, got %d", tag, points, npoints);
         return -1;
     }
+    memcpy(d->p, pts, (size_t)want * sizeof d->p[0]);
     if (!(d->r > 0)) {
         diag_error(d->loc, "<%s> attribute 'radius': must be positive (got %g)", tag, d->r);
         return -1;
@@ -379,7 +378,7 @@ static int draw_span(XmlCtx *x, const char *tag, int a, double lo, double hi, Xm
 
 static int drawcylinder(XmlCtx *x, const xmlNode *n, int mk)
 {
-    XmlDraw d = {XD_CYLINDER, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, xml_loc(x, n)};
+    XmlDraw d = {XD_CYLINDER, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, xml_loc(x, n), NULL};
     if (read_round(x, n, mk, "drawcylinder", 2, "two <point>s (the ends of its axis)", &d) ||
         transform_round(x, &d, 2, "drawcylinder"))
         return -1;
@@ -405,7 +404,7 @@ static int drawcylinder(XmlCtx *x, const xmlNode *n, int mk)
  * the sphere cuts from the plane y = pointmin.y. */
 static int drawsphere(XmlCtx *x, const xmlNode *n, int mk)
 {
-    XmlDraw d = {XD_SPHERE, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, xml_loc(x, n)};
+    XmlDraw d = {XD_SPHERE, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, xml_loc(x, n), NULL};
     if (read_round(x, n, mk, "drawsphere", 1, "one <point> (its centre)", &d) ||
         transform_round(x, &d, 1, "drawsphere"))
         return -1;
@@ -450,15 +449,22 @@ static int setfrdrawmode(XmlCtx *x, const xmlNode *n)
 
 /* The surface file of a drawing, beside the case file: it must open and be a closed surface
  * (the model's checker reads it again with the body; here the error can name the card). */
-static int surface_file_ok(const XmlCtx *x, const xmlNode *n, const char *file, SrcLoc loc)
+static int surface_file_ok(const XmlCtx *x, const xmlNode *n, const char *file,
+                           const XmlMatrix *map, double lo[3], double hi[3], SrcLoc loc)
 {
     char *path = source_beside(x->file, file), err[1024];
+    double xf[12];
     sph_mesh mesh;
-    int rc = sph_mesh_load(path, &mesh, err, sizeof err);
+    if (map)
+        xml_matrix_columns(map, xf);
+    int rc = sph_mesh_load_moved(path, map ? xf : NULL, &mesh, err, sizeof err);
     if (rc)
         diag_error(loc, "<%s> attribute 'file': %s", xml_name(n), err);
-    else
+    else {
+        memcpy(lo, mesh.lo, sizeof mesh.lo);
+        memcpy(hi, mesh.hi, sizeof mesh.hi);
         sph_mesh_free(&mesh);
+    }
     free(path);
     return rc ? -1 : 0;
 }
@@ -488,18 +494,18 @@ static int drawfile(XmlCtx *x, const xmlNode *n, int mk)
     }
     if (mk == XML_MK_NONE)
         return no_mk(xml_name(n), loc);
+    XmlDraw d = {XD_SURFACE, mk, {0}, {0}, {{0}}, 0, file, NULL, 0, x->freedraw, loc, NULL};
     if (!xml_matrix_is_identity(&x->matrix)) {
-        diag_error(loc, "<%s>: surface files under a transformation (<move>, <rotate>, "
-                        "<scale> before it) are not supported: transform the file itself or "
-                        "reset the transformation (<matrixreset/>) before drawing it",
-                   xml_name(n));
-        return -1;
+        XmlMatrix *map = ast_alloc(sizeof *map);
+        *map = x->matrix;
+        d.map = map;
     }
-    if (surface_file_ok(x, n, file, loc))
+    double lo[3], hi[3];
+    if (surface_file_ok(x, n, file, d.map, lo, hi, loc))
         return -1;
-    XmlDraw d = {XD_SURFACE, mk, {0}, {0}, {{0}}, 0, file, NULL, 0, x->freedraw, loc};
-    for (int a = 0; a < 3; a++)
-        d.hi[a] = x->nodes[a];
+    for (int a = 0; a < 3; a++) /* the nodes of its bounding box */
+        if (draw_span(x, xml_name(n), a, lo[a], hi[a], &d))
+            return -1;
     return add_draw(x, &d);
 }
 
@@ -560,17 +566,13 @@ static int drawsolid(XmlCtx *x, const xmlNode *n, int mk)
     const int prism = xml_is(n, "drawprism");
     const char *tag = xml_name(n);
     XmlDraw d = {prism ? XD_PRISM : XD_PYRAMID, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0,
-                 x->freedraw, xml_loc(x, n)};
+                 x->freedraw, xml_loc(x, n), NULL};
     int bad = xml_check_attrs(x, n, attrs) != 0;
     bad |= xml_check_children(x, n, kids) != 0;
-    int npoints = 0;
-    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
-        npoints += xml_is(c, "point");
-    d.pts = ast_alloc(((size_t)npoints + 1) * 3 * sizeof *d.pts);
-    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
-        if (xml_is(c, "point"))
-            bad |= xml_point(x, c, d.pts + 3 * d.npts++) != 0;
-    if (bad)
+    int npoints;
+    d.pts = xml_points(x, n, 1, &npoints);
+    d.npts = npoints;
+    if (bad || !d.pts)
         return -1;
     if (prism ? npoints < 6 || npoints % 2 : npoints < 4) {
         diag_error(d.loc, "<%s> needs %s, got %d <point>s", tag,
@@ -618,19 +620,15 @@ static int drawextrude(XmlCtx *x, const xmlNode *n, int mk)
 {
     static const char *const attrs[] = {"closed", NULL};
     static const char *const kids[] = {"point", "extrude", NULL};
-    XmlDraw d = {XD_PRISM, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, xml_loc(x, n)};
+    XmlDraw d = {XD_PRISM, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, xml_loc(x, n), NULL};
     int bad = xml_check_attrs(x, n, attrs) != 0;
     bad |= xml_check_children(x, n, kids) != 0;
     const char *closed = xml_attr(n, "closed");
     const xmlNode *ext = xml_child(n, "extrude");
     double v[3];
-    int m = 0;
-    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
-        m += xml_is(c, "point");
-    d.pts = ast_alloc(((size_t)m + 1) * 6 * sizeof *d.pts);
-    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
-        if (xml_is(c, "point"))
-            bad |= xml_point(x, c, d.pts + 3 * d.npts++) != 0;
+    int m;
+    d.pts = xml_points(x, n, 2, &m); /* room for the top */
+    bad |= !d.pts;
     if (!ext) {
         diag_error(d.loc, "<drawextrude> needs <extrude x=\"..\" y=\"..\" z=\"..\"/> (the "
                           "vector the polygon is extruded along)");

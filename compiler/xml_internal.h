@@ -26,6 +26,11 @@
  * axis, or those of the bounding box of another drawing (inclusive; in 2D y is 0..0). */
 typedef enum { XD_BOX, XD_CYLINDER, XD_SURFACE, XD_SPHERE, XD_PRISM, XD_PYRAMID } XmlDrawKind;
 
+/* GenCase's affine transformation of the drawings (xml_transform.c): x -> A x + a[.][3]. */
+typedef struct {
+    double a[3][4];
+} XmlMatrix;
+
 /* The mk of drawings made after <setmkvoid/>: they take nodes over from every mk and give
  * them to none.  Before any <setmk...> the mk is XML_MK_NONE. */
 enum { XML_MK_NONE = -1, XML_MK_VOID = -2 };
@@ -33,7 +38,7 @@ enum { XML_MK_NONE = -1, XML_MK_VOID = -2 };
 typedef struct {
     XmlDrawKind kind;
     int mk;
-    long lo[3], hi[3];        /* a surface: the whole domain (its file is read later) */
+    long lo[3], hi[3];
     double p[2][3], r;        /* <drawcylinder>: the ends of its axis and its radius;
                                  <drawsphere>: its centre (p[0]) and radius (in a 2D case
                                  the disc it cuts from the plane of the case) */
@@ -42,12 +47,8 @@ typedef struct {
     int npts;                 /* the card (a prism: the base's, then the top's) */
     int freedraw;             /* drawn in GenCase's free drawing mode (<setfrdrawmode>) */
     SrcLoc loc;
+    const XmlMatrix *map;     /* a surface drawn under a transformation: it, else NULL */
 } XmlDraw;
-
-/* GenCase's affine transformation of the drawings (xml_transform.c): x -> A x + a[.][3]. */
-typedef struct {
-    double a[3][4];
-} XmlMatrix;
 
 /* One <userexpression>: its expression with its locals renamed to the model's lets. */
 typedef struct {
@@ -132,6 +133,11 @@ int xml_card_bool(const XmlCtx *x, const xmlNode *n, int *out);
 /* x, y and z of a point element such as <point x=".." y=".." z=".."/> (all required). */
 int xml_point(const XmlCtx *x, const xmlNode *n, double out[3]);
 
+/* The <point> children of n: their number in *count, their coordinates (3 a point) in an
+ * array with room for `copies` times as many points; NULL after reporting an error in one
+ * of them. */
+double *xml_points(const XmlCtx *x, const xmlNode *n, int copies, int *count);
+
 /* A double as the shortest decimal within tol of it (geometry computed from the lattice,
  * so that -1.5e-3 - 0.5e-3 reads -0.002 again). */
 double xml_snap(double v, double tol);
@@ -180,6 +186,8 @@ double xml_matrix_similarity(const XmlMatrix *m);
 /* Whether m takes the y axis to itself and the x-z plane to itself (a 2D case's plane stays
  * parallel to itself). */
 int xml_matrix_keeps_y(const XmlMatrix *m);
+/* m as the map of sph_mesh_load_moved: its matrix's columns, then its translation. */
+void xml_matrix_columns(const XmlMatrix *m, double xf[12]);
 
 /* xml_shape.c: the sph shape of what GenCase gives mk: its drawings in drawing order, less
  * what later drawings of other mks take over (the auxiliary geometry of a `near`). */

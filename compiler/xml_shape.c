@@ -76,10 +76,29 @@ static ShapeExpr *sphere_shape(const XmlDraw *d)
     return ast_shape_prim(call);
 }
 
+/* surface(file "..."), under a transformation with its matrix (rows) and move. */
 static ShapeExpr *surface_shape(const XmlDraw *d)
 {
     NamedCall call = {ast_strdup("surface"), d->loc, {0}};
     ast_push_setting(&call.args, ast_setting_text(d->loc, "file", d->file));
+    if (d->map) { /* its entries to 15 digits: a turn by 90 degrees reads 0, not 6e-17 */
+        double row[3][3], move[3], big = 0;
+        for (int r = 0; r < 3; r++)
+            for (int c = 0; c < 3; c++)
+                big = fmax(big, fabs(d->map->a[r][c]));
+        for (int r = 0; r < 3; r++) {
+            for (int c = 0; c < 3; c++)
+                row[r][c] = fabs(d->map->a[r][c]) <= 1e-15 * big
+                                ? 0.0
+                                : xml_snap(d->map->a[r][c], 1e-15 * big);
+            move[r] = d->map->a[r][3];
+        }
+        Setting m = ast_setting(d->loc, "matrix", vec3(d->loc, row[0]));
+        ast_push_expr(&m.values, &m.nvalues, vec3(d->loc, row[1]));
+        ast_push_expr(&m.values, &m.nvalues, vec3(d->loc, row[2]));
+        ast_push_setting(&call.args, m);
+        ast_push_setting(&call.args, ast_setting(d->loc, "move", vec3(d->loc, move)));
+    }
     return ast_shape_prim(call);
 }
 

@@ -106,24 +106,22 @@ static int rotateline(XmlCtx *x, const xmlNode *n, XmlMatrix *t)
 {
     static const char *const attrs[] = {"ang", NULL};
     static const char *const kids[] = {"point", NULL};
-    double p[2][3], v[3], deg;
-    int np = 0, bad = xml_check_attrs(x, n, attrs) != 0;
+    double v[3], deg;
+    int np, bad = xml_check_attrs(x, n, attrs) != 0;
     bad |= xml_check_children(x, n, kids) != 0;
     bad |= xml_number(x, n, "ang", 1, &deg) != 1;
-    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
-        if (xml_is(c, "point") && np++ < 2)
-            bad |= xml_point(x, c, p[np - 1]) != 0;
-    if (bad)
+    const double *p = xml_points(x, n, 1, &np);
+    if (bad || !p)
         return -1;
     if (np != 2) {
         diag_error(xml_loc(x, n), "<rotateline> needs two <point>s (its axis), got %d", np);
         return -1;
     }
     for (int a = 0; a < 3; a++)
-        v[a] = p[1][a] - p[0][a];
+        v[a] = p[3 + a] - p[a];
     if (zero_axis(x, n, v))
         return -1;
-    rotation(deg, p[0], v, t);
+    rotation(deg, p, v, t);
     return 0;
 }
 
@@ -253,4 +251,11 @@ int xml_matrix_keeps_y(const XmlMatrix *m)
     const double tol = TILT_EPS * largest_entry(m);
     return fabs(m->a[1][0]) <= tol && fabs(m->a[1][2]) <= tol && fabs(m->a[0][1]) <= tol &&
            fabs(m->a[2][1]) <= tol;
+}
+
+void xml_matrix_columns(const XmlMatrix *m, double xf[12])
+{
+    for (int c = 0; c < 4; c++)
+        for (int r = 0; r < 3; r++)
+            xf[3 * c + r] = m->a[r][c];
 }

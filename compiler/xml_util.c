@@ -257,6 +257,21 @@ int xml_point(const XmlCtx *x, const xmlNode *n, double out[3])
     return bad ? -1 : 0;
 }
 
+double *xml_points(const XmlCtx *x, const xmlNode *n, int copies, int *count)
+{
+    int bad = 0;
+    *count = 0;
+    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
+        *count += xml_is(c, "point");
+    double *pts = ast_alloc(((size_t)*count * (size_t)copies + 1) * 3 * sizeof *pts), *p = pts;
+    for (xmlNode *c = xml_first(n); c; c = xml_next(c))
+        if (xml_is(c, "point")) {
+            bad |= xml_point(x, c, p) != 0;
+            p += 3;
+        }
+    return bad ? NULL : pts;
+}
+
 double xml_snap(double v, double tol)
 {
     char buf[40];

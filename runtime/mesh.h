@@ -50,6 +50,11 @@ int sph_mesh_close(sph_mesh *m, char *err, size_t len);
 
 /* sph_mesh_read and sph_mesh_close. */
 int sph_mesh_load(const char *path, sph_mesh *m, char *err, size_t len);
+/* The same with every vertex moved by the affine map xf (NULL: none), 4 vectors of 3: the
+ * images of the unit vectors along x, y and z (the columns of its matrix), then the
+ * translation.  A map that mirrors the surface is fine: sph_mesh_close orients it. */
+int sph_mesh_load_moved(const char *path, const double *xf, sph_mesh *m, char *err,
+                        size_t len);
 void sph_mesh_free(sph_mesh *m);
 
 /* mesh_ray.c: whether the ray from p along +z crosses triangle k, at height *z.  Points of
@@ -73,9 +78,10 @@ enum { SPH_SOLID_MAX_CORNERS = 1000 }; /* per polygon */
 int sph_mesh_solid(sph_solid_kind kind, const double *pts, int npts, sph_mesh *m, char *err,
                    size_t len);
 
-/* mesh_cache.c: the surface in file, loaded, checked and indexed on first use (thread
- * safe); prints the error and exits with status 4 (set-up failed) when it cannot be. */
-const sph_mesh *sph_mesh_get(const char *file);
+/* mesh_cache.c: the surface in file moved by xf (NULL: as it is; sph_mesh_load_moved),
+ * loaded, checked and indexed on first use (thread safe); prints the error and exits with
+ * status 4 (set-up failed) when it cannot be.  A map is known by its address. */
+const sph_mesh *sph_mesh_get(const char *file, const double *xf);
 /* The same for the solid of npts corners pts, known by the address of its corners. */
 const sph_mesh *sph_mesh_get_solid(sph_solid_kind kind, const double *pts, int npts);
 

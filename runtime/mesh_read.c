@@ -488,8 +488,19 @@ int sph_mesh_read(const char *path, sph_mesh *m, char *err, size_t len)
 
 int sph_mesh_load(const char *path, sph_mesh *m, char *err, size_t len)
 {
+    return sph_mesh_load_moved(path, NULL, m, err, len);
+}
+
+int sph_mesh_load_moved(const char *path, const double *xf, sph_mesh *m, char *err, size_t len)
+{
     if (sph_mesh_read(path, m, err, len))
         return -1;
+    for (int i = 0; xf && i < m->nv; i++) { /* x -> x e1' + y e2' + z e3' + b */
+        double *v = m->v + 3 * i, q[3];
+        for (int a = 0; a < 3; a++)
+            q[a] = xf[a] * v[0] + xf[3 + a] * v[1] + xf[6 + a] * v[2] + xf[9 + a];
+        v[0] = q[0], v[1] = q[1], v[2] = q[2];
+    }
     if (sph_mesh_close(m, err, len)) {
         sph_mesh_free(m);
         return -1;

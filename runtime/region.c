@@ -101,7 +101,7 @@ static sph_shape prim_for_dim(const sph_shape *s, int dim, double y)
 static const sph_mesh *prim_mesh(const sph_shape *s)
 {
     switch (s->kind) {
-    case SPH_MESH: return sph_mesh_get(s->file);
+    case SPH_MESH: return sph_mesh_get(s->file, s->pts);
     case SPH_PRISM: return sph_mesh_get_solid(SPH_SOLID_PRISM, s->pts, s->npts);
     case SPH_PYRAMID: return sph_mesh_get_solid(SPH_SOLID_PYRAMID, s->pts, s->npts);
     default: return NULL;

@@ -61,7 +61,9 @@ typedef struct {
     int subtract;/* 1: this primitive is removed from the union of the previous ones */
     const char *file; /* mesh: a closed surface, VTK or STL (mesh.h); loaded at first use */
     const double *pts;/* prism: the base's corners, then the top's; pyramid: the apex, then */
-    int npts;         /* the base's corners (npts points, mesh.h); its surface built at first use */
+    int npts;         /* the base's corners (npts points, mesh.h); its surface built at first use;
+                       * mesh: NULL, or the map that moves the file's surface (4 points:
+                       * sph_mesh_load_moved) */
 } sph_shape;
 
 typedef struct {

@@ -1,4 +1,4 @@
-# run_case.cmake — an XML case imports, compiles and runs a few steps.
+# run_case.cmake — an XML case (or a .sph model) imports, compiles and runs a few steps.
 #
 #   cmake -DSPHC=sphc -DXML=case.xml -DWORKDIR=dir [-DMAPFACS=1,2,4 -DPARTICLES=a,b,c]
 #         [-DPARTICLES_RANGE=lo,hi] [-DSPHC_ARGS="--xml-fill=gencase"]

@@ -2,7 +2,7 @@
 # model as the case itself.
 #
 #   cmake -DSPHC=sphc -DXML=dir/case.xml -DWORKDIR=dir [-DGOLDEN=case.sph.golden]
-#         [-DSPHC_ARGS="--xml-fill=gencase"] -P run_to_sph.cmake
+#         [-DSPHC_ARGS="--xml-fill=gencase"] [-DCOPY=file.stl] -P run_to_sph.cmake
 #
 # The printed model is written to WORKDIR/case.sph; `sphc --dump=model` of both must agree
 # except for the first line (model name and file), the source lines of statements and the
@@ -11,7 +11,8 @@
 # fracture items included, which --dump=model does not show), up to how a negative number
 # is held: a literal in the importer's tree, a negated one in the parser's.
 # GOLDEN: the printed model must equal this file (sphc runs in the case's folder, so the
-# first line names the case without folders).
+# first line names the case without folders).  COPY: files beside the case (surface files)
+# that the printed model, which names them as the case does, needs beside it too.
 
 foreach(var SPHC XML WORKDIR)
   if(NOT DEFINED ${var})
@@ -23,6 +24,9 @@ get_filename_component(file "${XML}" NAME)
 get_filename_component(stem "${XML}" NAME_WE)
 file(MAKE_DIRECTORY "${WORKDIR}")
 set(model "${WORKDIR}/${stem}.sph")
+foreach(f IN LISTS COPY)
+  file(COPY "${dir}/${f}" DESTINATION "${WORKDIR}")
+endforeach()
 separate_arguments(sphc_args UNIX_COMMAND "${SPHC_ARGS}")
 
 execute_process(COMMAND "${SPHC}" ${sphc_args} --to-sph "${file}" WORKING_DIRECTORY "${dir}"
@@ -49,6 +53,11 @@ function(dump stage src result)
   # An imported case also writes SoliDualSPHysics' files; the printed model does not.
   string(REGEX REPLACE "  outputs: also SoliDualSPHysics'[^\n]*\n" "" out "${out}")
   string(REGEX REPLACE " \\(line [0-9]+\\)" "" out "${out}")
+  # COPY'd surface files: the same file, beside the case or beside the printed model.
+  foreach(f IN LISTS COPY)
+    string(REPLACE "${dir}/${f}" "${f}" out "${out}")
+    string(REPLACE "${WORKDIR}/${f}" "${f}" out "${out}")
+  endforeach()
   set(${result} "${out}" PARENT_SCOPE)
 endfunction()
 
