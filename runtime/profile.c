@@ -33,9 +33,11 @@ static int nentries;
 
 int sph_profile_slot(const char *pass)
 {
+    for (int k = 0; k < nentries; k++) /* the pass's own name first: no string compared */
+        if (entry[k].phase == sph_profile_phase && entry[k].name == pass)
+            return k;
     for (int k = 0; k < nentries; k++)
-        if (entry[k].phase == sph_profile_phase &&
-            (entry[k].name == pass || strcmp(entry[k].name, pass) == 0))
+        if (entry[k].phase == sph_profile_phase && strcmp(entry[k].name, pass) == 0)
             return k;
     if (nentries == PROFILE_MAX)
         return PROFILE_MAX - 1; /* (never, with the passes sphc generates) */
@@ -106,11 +108,15 @@ void sph_profile_print(FILE *f, const char *model, long steps, const sph_profile
     int order[PROFILE_MAX];
     const int n = by_time(order);
     const double per = steps > 0 ? 1e3 / (double)steps : 0; /* s -> ms per step */
-    double passes = 0;
-    for (int k = 0; k < n; k++)
+    double passes = 0, stages = 0;
+    for (int k = 0; k < n; k++) {
         passes += entry[k].phase == SPH_PHASE_STEPS ? entry[k].seconds : 0;
+        stages += entry[k].phase == SPH_PHASE_SETUP ? entry[k].seconds : 0;
+    }
     fprintf(f, "%s: set-up %.3f s:\n", model, t->setup);
     print_rows(f, order, n, SPH_PHASE_SETUP, 1, "s ", t->setup);
+    fprintf(f, "  %-44s %11.4f s  %6.1f %%\n", "(the rest: start, copies, other)",
+            t->setup - stages, t->setup > 0 ? 100 * (t->setup - stages) / t->setup : 0.0);
     fprintf(f, "%s: %ld steps, %.3f s (per step; share of the steps' time):\n", model, steps,
             t->steps);
     print_rows(f, order, n, SPH_PHASE_STEPS, per, "ms", t->steps);
