@@ -6,6 +6,7 @@
 
 #include "check.h"
 #include "diag.h"
+#include "mesh.h"
 #include "source.h"
 #include "eval.h"
 
@@ -340,6 +341,48 @@ static int check_scene_item(Model *m, const Program *p)
     return check_scene(m, scene) != 0;
 }
 
+/* Surfaces region r adds to the program's cache (runtime/mesh_cache.c) beyond those in
+ * seen[0..*nseen-1], the files of unmoved surfaces counted so far (each counted once). */
+static int meshes_of(const Region *r, const char **seen, int *nseen)
+{
+    int count = 0;
+    for (int k = 0; k < r->n; k++) {
+        const ShapePrim *s = &r->prims[k];
+        if (s->kind != SHAPE_SURFACE || s->npts) {
+            count += s->kind == SHAPE_SURFACE || s->kind == SHAPE_PRISM ||
+                     s->kind == SHAPE_PYRAMID;
+            continue;
+        }
+        int known = 0;
+        for (int q = 0; q < *nseen && !known; q++)
+            known = !strcmp(seen[q], s->file);
+        if (!known && *nseen < SPH_MESH_MAX + 1)
+            seen[(*nseen)++] = s->file;
+        count += !known;
+    }
+    return count;
+}
+
+/* The program keeps at most SPH_MESH_MAX surfaces (files, moved files, prisms, pyramids). */
+static int check_mesh_count(const Model *m, SrcLoc at)
+{
+    const char *seen[SPH_MESH_MAX + 1];
+    int nseen = 0;
+    long count = 0;
+    for (int b = 0; b < m->nbodies; b++) {
+        const BodyModel *body = &m->bodies[b];
+        count += meshes_of(&body->region, seen, &nseen);
+        for (int k = 0; k < body->nbcs; k++)
+            if (body->bcs[k].has_near)
+                count += meshes_of(&body->bcs[k].near, seen, &nseen);
+    }
+    if (count <= SPH_MESH_MAX)
+        return 0;
+    diag_error(at, "the model's shapes need %ld surfaces (surface files, prisms, pyramids), "
+                   "more than the %d a program keeps", count, SPH_MESH_MAX);
+    return -1;
+}
+
 static int check_bodies(Model *m, const Program *p)
 {
     int bad = 0;
@@ -354,12 +397,12 @@ static int check_bodies(Model *m, const Program *p)
             }
         bad |= check_body(m, d, &m->bodies[m->nbodies++]) != 0;
     }
+    SrcLoc top = {p->file, 1, 1};
     if (!m->nbodies && !bad) {
-        SrcLoc top = {p->file, 1, 1};
         diag_error(top, "the model has no body");
         bad = 1;
     }
-    return bad;
+    return bad || check_mesh_count(m, top) != 0;
 }
 
 int check_program(const Program *p, Model *m)

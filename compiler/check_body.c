@@ -315,6 +315,11 @@ static int flatten(const Model *m, const ShapeExpr *s, int subtract, Region *r)
                                 "a - b - c or a - (b + c))");
         return -1;
     }
+    if (s->op == '+' && !unions_only(s->rhs)) { /* a + (b - c) is not (a + b) - c */
+        diag_error(s->rhs->loc, "only a shape or a union of shapes can be added (write "
+                                "a + b - c to cut c from both, or put the difference first)");
+        return -1;
+    }
     return flatten(m, s->rhs, s->op == '-' ? 1 : subtract, r);
 }
 

@@ -65,7 +65,6 @@ static void set_var(XmlCtx *x, const char *name, double v)
     x->var_values[x->nvars++] = v;
 }
 
-
 static int definition(XmlCtx *x, const xmlNode *n)
 {
     static const char *const attrs[] = {"dp", NULL};
@@ -230,11 +229,17 @@ static int tilted_box(XmlCtx *x, const double p[3], const double q[3], int mk, S
         if (node_range(x, 1, fmin(y0, y1), fmax(y0, y1), &klo, &khi))
             return off_plane(x, "drawbox", loc);
     }
+    double lo[3], hi[3]; /* a flat box is one layer of nodes: half a spacing each side */
+    for (int a = 0; a < 3; a++) {
+        lo[a] = p[a] - (q[a] == p[a] ? 0.5 * x->dp : 0.0);
+        hi[a] = q[a] + (q[a] == p[a] ? 0.5 * x->dp : 0.0);
+    }
     d.pts = ast_alloc(8 * 3 * sizeof *d.pts);
     d.npts = 8;
     for (int f = 0; f < 2; f++)
         for (int k = 0; k < 4; k++) {
-            const double c[3] = {xz[k][0] ? q[0] : p[0], f ? q[1] : p[1], xz[k][1] ? q[2] : p[2]};
+            const double c[3] = {xz[k][0] ? hi[0] : lo[0], f ? hi[1] : lo[1],
+                                 xz[k][1] ? hi[2] : lo[2]};
             double *out = d.pts + 3 * (4 * f + k);
             xml_matrix_point(m, c, out);
             if (x->dim == 2) /* along y across the plane, whatever the box's own y extent */
@@ -378,7 +383,8 @@ static int draw_span(XmlCtx *x, const char *tag, int a, double lo, double hi, Xm
 
 static int drawcylinder(XmlCtx *x, const xmlNode *n, int mk)
 {
-    XmlDraw d = {XD_CYLINDER, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, xml_loc(x, n), NULL};
+    XmlDraw d = {XD_CYLINDER, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw,
+                 xml_loc(x, n), NULL};
     if (read_round(x, n, mk, "drawcylinder", 2, "two <point>s (the ends of its axis)", &d) ||
         transform_round(x, &d, 2, "drawcylinder"))
         return -1;
@@ -404,7 +410,8 @@ static int drawcylinder(XmlCtx *x, const xmlNode *n, int mk)
  * the sphere cuts from the plane y = pointmin.y. */
 static int drawsphere(XmlCtx *x, const xmlNode *n, int mk)
 {
-    XmlDraw d = {XD_SPHERE, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, xml_loc(x, n), NULL};
+    XmlDraw d = {XD_SPHERE, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw,
+                 xml_loc(x, n), NULL};
     if (read_round(x, n, mk, "drawsphere", 1, "one <point> (its centre)", &d) ||
         transform_round(x, &d, 1, "drawsphere"))
         return -1;
@@ -620,7 +627,8 @@ static int drawextrude(XmlCtx *x, const xmlNode *n, int mk)
 {
     static const char *const attrs[] = {"closed", NULL};
     static const char *const kids[] = {"point", "extrude", NULL};
-    XmlDraw d = {XD_PRISM, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, xml_loc(x, n), NULL};
+    XmlDraw d = {XD_PRISM, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw,
+                 xml_loc(x, n), NULL};
     int bad = xml_check_attrs(x, n, attrs) != 0;
     bad |= xml_check_children(x, n, kids) != 0;
     const char *closed = xml_attr(n, "closed");
@@ -704,6 +712,9 @@ static int drawing(XmlCtx *x, const xmlNode *n, int mk)
 
 /* <list>s run by <runlist> may run others: a list that runs itself stops here. */
 #define MAX_LIST_DEPTH 32
+/* Commands a case may run, lists included: lists that run lists many times would
+ * otherwise run for ever in effect (10^5 times 10^5 moves). */
+#define MAX_COMMANDS 1000000L
 
 static int run_commands(XmlCtx *x, const xmlNode *list, int *mk, int depth);
 
@@ -721,10 +732,12 @@ static int runlist(XmlCtx *x, const xmlNode *n, int *mk, int depth)
         if (cn && !strcmp(cn, name))
             list = c;
     }
+    if (!name) {
+        diag_error(xml_loc(x, n), "<runlist>: missing attribute 'name'");
+        return -1;
+    }
     if (!list) {
-        diag_error(xml_loc(x, n), name ? "<runlist>: no <list name=\"%s\"> in <commands>"
-                                       : "<runlist>: missing attribute 'name'%s",
-                   name ? name : "");
+        diag_error(xml_loc(x, n), "<runlist>: no <list name=\"%s\"> in <commands>", name);
         return -1;
     }
     if (depth >= MAX_LIST_DEPTH) {
@@ -765,11 +778,22 @@ static int command(XmlCtx *x, const xmlNode *n, int *mk, int depth)
     return -1;
 }
 
+/* The commands of the mainlist (depth 0; every error reported) or of a list (which stops at
+ * its first error: it may be run many times). */
 static int run_commands(XmlCtx *x, const xmlNode *list, int *mk, int depth)
 {
     int bad = 0;
-    for (xmlNode *c = xml_first(list); c; c = xml_next(c))
+    for (xmlNode *c = xml_first(list); c; c = xml_next(c)) {
+        if (++x->ncommands > MAX_COMMANDS) {
+            if (x->ncommands == MAX_COMMANDS + 1)
+                diag_error(xml_loc(x, c), "<%s>: the case runs more than %ld commands (its "
+                                          "lists included)", xml_name(c), MAX_COMMANDS);
+            return -1;
+        }
         bad |= command(x, c, mk, depth) != 0;
+        if (bad && depth > 0)
+            return -1;
+    }
     return bad ? -1 : 0;
 }
 

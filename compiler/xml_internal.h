@@ -76,6 +76,7 @@ typedef struct {
     XmlMatrix matrix;         /* the transformation in force, and those <matrixsave/> kept */
     XmlMatrix *saved;
     int nsaved;
+    long ncommands;           /* commands run so far, lists included */
     /* <mathexpressions> */
     XmlUserExpr *exprs;
     int nexprs;

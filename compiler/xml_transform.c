@@ -30,9 +30,11 @@ void xml_matrix_identity(XmlMatrix *m)
 
 int xml_matrix_is_identity(const XmlMatrix *m)
 {
-    XmlMatrix id;
-    xml_matrix_identity(&id);
-    return memcmp(m, &id, sizeof id) == 0;
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 4; c++)
+            if (m->a[r][c] != (r == c ? 1.0 : 0.0))
+                return 0;
+    return 1;
 }
 
 void xml_matrix_point(const XmlMatrix *m, const double p[3], double out[3])
@@ -43,7 +45,22 @@ void xml_matrix_point(const XmlMatrix *m, const double p[3], double out[3])
     memcpy(out, q, sizeof q);
 }
 
-/* m = m t: t applies to a point first. */
+/* Entries below this fraction of the largest are round-off of a turn by a multiple of 90
+ * degrees (cos 90 = 6e-17), not a tilt. */
+#define TILT_EPS 1e-12
+
+static double largest_entry(const XmlMatrix *m)
+{
+    double big = 0;
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            big = fmax(big, fabs(m->a[r][c]));
+    return big;
+}
+
+/* m = m t: t applies to a point first.  The round-off of turns by multiples of 90 degrees
+ * is set to 0, so that such turns keep the axes exactly (a box a box, a 2D case's plane its
+ * plane). */
 static void right_multiply(XmlMatrix *m, const XmlMatrix *t)
 {
     XmlMatrix o;
@@ -54,6 +71,11 @@ static void right_multiply(XmlMatrix *m, const XmlMatrix *t)
                 v += m->a[r][k] * t->a[k][c];
             o.a[r][c] = v;
         }
+    const double tol = TILT_EPS * largest_entry(&o);
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            if (fabs(o.a[r][c]) <= tol)
+                o.a[r][c] = 0.0;
     *m = o;
 }
 
@@ -73,6 +95,7 @@ static void rotation(double deg, const double p[3], const double v[3], XmlMatrix
         t->a[r][3] = p[r] - (t->a[r][0] * p[0] + t->a[r][1] * p[1] + t->a[r][2] * p[2]);
 }
 
+/* The attributes x, y, z of a command with the attributes attrs and no children. */
 static int read_xyz(XmlCtx *x, const xmlNode *n, const char *const *attrs, double v[3])
 {
     static const char *const xyz[] = {"x", "y", "z"}, *const none[] = {NULL};
@@ -83,6 +106,7 @@ static int read_xyz(XmlCtx *x, const xmlNode *n, const char *const *attrs, doubl
     return bad ? -1 : 0;
 }
 
+/* An error (-1) when the axis v of a turn has no direction. */
 static int zero_axis(const XmlCtx *x, const xmlNode *n, const double v[3])
 {
     if (v[0] != 0 || v[1] != 0 || v[2] != 0)
@@ -91,6 +115,7 @@ static int zero_axis(const XmlCtx *x, const xmlNode *n, const double v[3])
     return -1;
 }
 
+/* <rotate ang x y z/>: about the line through the origin along (x, y, z). */
 static int rotate(XmlCtx *x, const xmlNode *n, XmlMatrix *t)
 {
     static const char *const attrs[] = {"ang", "x", "y", "z", NULL};
@@ -102,6 +127,7 @@ static int rotate(XmlCtx *x, const xmlNode *n, XmlMatrix *t)
     return 0;
 }
 
+/* <rotateline ang> with two <point>s: about the line through them. */
 static int rotateline(XmlCtx *x, const xmlNode *n, XmlMatrix *t)
 {
     static const char *const attrs[] = {"ang", NULL};
@@ -125,6 +151,7 @@ static int rotateline(XmlCtx *x, const xmlNode *n, XmlMatrix *t)
     return 0;
 }
 
+/* <scale x y z/>: along each axis, about the origin; none may be 0. */
 static int scale(XmlCtx *x, const xmlNode *n, XmlMatrix *t)
 {
     static const char *const attrs[] = {"x", "y", "z", NULL};
@@ -141,12 +168,14 @@ static int scale(XmlCtx *x, const xmlNode *n, XmlMatrix *t)
     return 0;
 }
 
+/* A command without attributes or children. */
 static int no_arguments(XmlCtx *x, const xmlNode *n)
 {
     static const char *const none[] = {NULL};
     return xml_check_attrs(x, n, none) || xml_check_children(x, n, none) ? -1 : 0;
 }
 
+/* <matrixreset/>, <matrixsave/> (push M), <matrixload/> (pop it). */
 static int matrix_stack(XmlCtx *x, const xmlNode *n)
 {
     if (no_arguments(x, n))
@@ -201,19 +230,6 @@ int xml_transform_command(XmlCtx *x, const xmlNode *n)
 }
 
 /* ------------------------------------------------------------------ what M keeps */
-
-/* Entries below this fraction of the largest are round-off of a turn by a multiple of 90
- * degrees (cos 90 = 6e-17), not a tilt. */
-#define TILT_EPS 1e-12
-
-static double largest_entry(const XmlMatrix *m)
-{
-    double big = 0;
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            big = fmax(big, fabs(m->a[r][c]));
-    return big;
-}
 
 int xml_matrix_keeps_axes(const XmlMatrix *m)
 {

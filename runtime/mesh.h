@@ -78,7 +78,10 @@ enum { SPH_SOLID_MAX_CORNERS = 1000 }; /* per polygon */
 int sph_mesh_solid(sph_solid_kind kind, const double *pts, int npts, sph_mesh *m, char *err,
                    size_t len);
 
-/* mesh_cache.c: the surface in file moved by xf (NULL: as it is; sph_mesh_load_moved),
+/* mesh_cache.c: at most this many surfaces in a run (the compiler checks a model against
+ * it): unmoved surfaces of one file count once, every moved one, prism and pyramid once. */
+enum { SPH_MESH_MAX = 4096 };
+/* The surface in file moved by xf (NULL: as it is; sph_mesh_load_moved),
  * loaded, checked and indexed on first use (thread safe); prints the error and exits with
  * status 4 (set-up failed) when it cannot be.  A map is known by its address. */
 const sph_mesh *sph_mesh_get(const char *file, const double *xf);

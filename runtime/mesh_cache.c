@@ -1,7 +1,8 @@
 /* mesh_cache.c — each surface loaded or built once per run (mesh.h).
  *
  * Shapes name their surface by file and the address of the map that moves it (in the
- * generated program; NULL for none), or (prisms and pyramids) by their table of corners; region.c asks for it at every point it tests, from many threads.
+ * generated program; NULL for none), or (prisms and pyramids) by their table of corners;
+ * region.c asks for it at every point it tests, from many threads.
  * The table is only appended to: a new entry is written completely, under a lock, before
  * the count that makes it visible is published (an atomic store), so readers scan the
  * published entries without locking. */
@@ -13,13 +14,11 @@
 #include "mesh.h"
 #include "sphrt.h"
 
-enum { MAX_MESHES = 256 };
-
 static struct {
     const char *file;  /* a surface file, or NULL */
     const double *pts; /* a solid's corners, or a file's map (the program's own tables) */
     sph_mesh mesh;
-} table[MAX_MESHES];
+} table[SPH_MESH_MAX];
 static atomic_int published;
 
 static const sph_mesh *find(const char *file, const double *pts, int n)
@@ -44,8 +43,8 @@ static const sph_mesh *get(const char *file, sph_solid_kind kind, const double *
         m = find(file, pts, n);
         if (!m) {
             char err[1024];
-            if (n == MAX_MESHES) {
-                sph_error("more than %d surface files and solids", MAX_MESHES);
+            if (n == SPH_MESH_MAX) {
+                sph_error("more than %d surface files and solids", SPH_MESH_MAX);
                 exit(SPH_EXIT_SETUP);
             }
             if (file ? sph_mesh_load_moved(file, pts, &table[n].mesh, err, sizeof err)
