@@ -184,6 +184,18 @@ static int outside(const char *tag, int a, SrcLoc loc)
     return -1;
 }
 
+/* A drawing of kind by mk at loc, in the free drawing mode in force, its fields zero. */
+static XmlDraw new_draw(const XmlCtx *x, XmlDrawKind kind, int mk, SrcLoc loc)
+{
+    XmlDraw d;
+    memset(&d, 0, sizeof d);
+    d.kind = kind;
+    d.mk = mk;
+    d.freedraw = x->freedraw;
+    d.loc = loc;
+    return d;
+}
+
 static int add_draw(XmlCtx *x, const XmlDraw *d)
 {
     x->draws = ast_room(x->draws, (size_t)x->ndraws, sizeof *x->draws);
@@ -217,7 +229,7 @@ static int tilted_box(XmlCtx *x, const double p[3], const double q[3], int mk, S
 {
     static const int xz[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}; /* around the face */
     const XmlMatrix *m = &x->matrix;
-    XmlDraw d = {XD_PRISM, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, loc, NULL};
+    XmlDraw d = new_draw(x, XD_PRISM, mk, loc);
     if (x->dim == 2) {
         long klo, khi;
         if (!xml_matrix_keeps_y(m)) {
@@ -295,7 +307,7 @@ static int drawbox(XmlCtx *x, const xmlNode *n, int mk)
         return tilted_box(x, p, q, mk, loc);
     xml_matrix_point(&x->matrix, p, p);
     xml_matrix_point(&x->matrix, q, q);
-    XmlDraw d = {XD_BOX, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw, loc, NULL};
+    XmlDraw d = new_draw(x, XD_BOX, mk, loc);
     for (int a = 0; a < 3; a++) {
         if (node_range(x, a, fmin(p[a], q[a]), fmax(p[a], q[a]), &d.lo[a], &d.hi[a]) == 0)
             continue;
@@ -378,13 +390,20 @@ static int transform_round(const XmlCtx *x, XmlDraw *d, int npoints, const char 
  * the domain. */
 static int draw_span(XmlCtx *x, const char *tag, int a, double lo, double hi, XmlDraw *d)
 {
-    return node_span(x, a, lo, hi, &d->lo[a], &d->hi[a]) ? outside(tag, a, d->loc) : 0;
+    if (node_span(x, a, lo, hi, &d->lo[a], &d->hi[a]))
+        return outside(tag, a, d->loc);
+    d->reach[0][a] = lo;
+    d->reach[1][a] = hi;
+    /* GenCase has no node beyond the domain: past half a spacing from its first or last node
+     * a shape is cut (xml_shape.c) */
+    d->beyond |= (lo < x->pmin[a] - 0.5 * x->dp) << 2 * a;
+    d->beyond |= (hi > x->pmin[a] + ((double)x->nodes[a] + 0.5) * x->dp) << (2 * a + 1);
+    return 0;
 }
 
 static int drawcylinder(XmlCtx *x, const xmlNode *n, int mk)
 {
-    XmlDraw d = {XD_CYLINDER, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw,
-                 xml_loc(x, n), NULL};
+    XmlDraw d = new_draw(x, XD_CYLINDER, mk, xml_loc(x, n));
     if (read_round(x, n, mk, "drawcylinder", 2, "two <point>s (the ends of its axis)", &d) ||
         transform_round(x, &d, 2, "drawcylinder"))
         return -1;
@@ -410,8 +429,7 @@ static int drawcylinder(XmlCtx *x, const xmlNode *n, int mk)
  * the sphere cuts from the plane y = pointmin.y. */
 static int drawsphere(XmlCtx *x, const xmlNode *n, int mk)
 {
-    XmlDraw d = {XD_SPHERE, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw,
-                 xml_loc(x, n), NULL};
+    XmlDraw d = new_draw(x, XD_SPHERE, mk, xml_loc(x, n));
     if (read_round(x, n, mk, "drawsphere", 1, "one <point> (its centre)", &d) ||
         transform_round(x, &d, 1, "drawsphere"))
         return -1;
@@ -501,7 +519,8 @@ static int drawfile(XmlCtx *x, const xmlNode *n, int mk)
     }
     if (mk == XML_MK_NONE)
         return no_mk(xml_name(n), loc);
-    XmlDraw d = {XD_SURFACE, mk, {0}, {0}, {{0}}, 0, file, NULL, 0, x->freedraw, loc, NULL};
+    XmlDraw d = new_draw(x, XD_SURFACE, mk, loc);
+    d.file = file;
     if (!xml_matrix_is_identity(&x->matrix)) {
         XmlMatrix *map = ast_alloc(sizeof *map);
         *map = x->matrix;
@@ -572,8 +591,7 @@ static int drawsolid(XmlCtx *x, const xmlNode *n, int mk)
     static const char *const kids[] = {"point", NULL};
     const int prism = xml_is(n, "drawprism");
     const char *tag = xml_name(n);
-    XmlDraw d = {prism ? XD_PRISM : XD_PYRAMID, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0,
-                 x->freedraw, xml_loc(x, n), NULL};
+    XmlDraw d = new_draw(x, prism ? XD_PRISM : XD_PYRAMID, mk, xml_loc(x, n));
     int bad = xml_check_attrs(x, n, attrs) != 0;
     bad |= xml_check_children(x, n, kids) != 0;
     int npoints;
@@ -627,8 +645,7 @@ static int drawextrude(XmlCtx *x, const xmlNode *n, int mk)
 {
     static const char *const attrs[] = {"closed", NULL};
     static const char *const kids[] = {"point", "extrude", NULL};
-    XmlDraw d = {XD_PRISM, mk, {0}, {0}, {{0}}, 0, NULL, NULL, 0, x->freedraw,
-                 xml_loc(x, n), NULL};
+    XmlDraw d = new_draw(x, XD_PRISM, mk, xml_loc(x, n));
     int bad = xml_check_attrs(x, n, attrs) != 0;
     bad |= xml_check_children(x, n, kids) != 0;
     const char *closed = xml_attr(n, "closed");

@@ -48,6 +48,8 @@ typedef struct {
     int freedraw;             /* drawn in GenCase's free drawing mode (<setfrdrawmode>) */
     SrcLoc loc;
     const XmlMatrix *map;     /* a surface drawn under a transformation: it, else NULL */
+    double reach[2][3];       /* a drawing other than a box: its bounding box, and */
+    int beyond;               /* bit 2a (2a + 1): it reaches below (above) the domain on axis a */
 } XmlDraw;
 
 /* One <userexpression>: its expression with its locals renamed to the model's lets. */

@@ -190,9 +190,58 @@ static ShapeExpr *combine(const XmlCtx *x, int mk, SrcLoc loc, int which, ShapeE
     return s;
 }
 
+/* The slab beyond the domain on side `side` (bit of XmlDraw.beyond) that covers what of
+ * [lo, hi] lies there: from half a spacing past the domain's last node on. */
+static ShapeExpr *slab(const XmlCtx *x, int side, const double lo[3], const double hi[3],
+                       SrcLoc loc)
+{
+    const int a = side / 2;
+    double from[3], to[3];
+    for (int k = 0; k < 3; k++) {
+        const int flat = x->dim == 2 && k == 1; /* boxes of a 2D case span y = 0 only */
+        from[k] = flat ? 0.0 : xml_snap(lo[k] - x->dp, 1e-9 * x->dp);
+        to[k] = flat ? 0.0 : xml_snap(hi[k] + x->dp, 1e-9 * x->dp);
+    }
+    if (side % 2)
+        from[a] = xml_snap(x->pmin[a] + ((double)x->nodes[a] + 0.5) * x->dp, 1e-9 * x->dp);
+    else
+        to[a] = xml_snap(x->pmin[a] - 0.5 * x->dp, 1e-9 * x->dp);
+    NamedCall call = {ast_strdup("box"), loc, {0}};
+    ast_push_setting(&call.args, ast_setting(loc, "from", vec3(loc, from)));
+    ast_push_setting(&call.args, ast_setting(loc, "to", vec3(loc, to)));
+    return ast_shape_prim(call);
+}
+
+/* s less what of mk's drawings lies beyond the domain, where GenCase has no nodes (a box's
+ * nodes are clipped already, xml_geometry.c): s - (slab + slab ...), one slab per side some
+ * drawing reaches past. */
+static ShapeExpr *within_domain(const XmlCtx *x, int mk, ShapeExpr *s, SrcLoc loc)
+{
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    int beyond = 0;
+    for (int i = 0; i < x->ndraws; i++) {
+        const XmlDraw *d = &x->draws[i];
+        if (d->mk != mk || !d->beyond)
+            continue;
+        beyond |= d->beyond;
+        for (int k = 0; k < 3; k++) {
+            lo[k] = fmin(lo[k], d->reach[0][k]);
+            hi[k] = fmax(hi[k], d->reach[1][k]);
+        }
+    }
+    if (!s || !beyond)
+        return s;
+    ShapeExpr *cut[6];
+    int n = 0;
+    for (int side = 0; side < 6; side++)
+        if (beyond >> side & 1)
+            cut[n++] = slab(x, side, lo, hi, loc);
+    return ast_shape_op(loc, '-', s, union_of(loc, cut, n));
+}
+
 ShapeExpr *xml_mk_shape(const XmlCtx *x, int mk, SrcLoc loc)
 {
-    return combine(x, mk, loc, -1, NULL);
+    return within_domain(x, mk, combine(x, mk, loc, -1, NULL), loc);
 }
 
 int xml_mk_boxes_only(const XmlCtx *x, int mk)
@@ -273,7 +322,9 @@ ShapeExpr *xml_mk_body_shape(const XmlCtx *x, int mk, SrcLoc loc, int *has_corne
         }
         if (axis >= 0) {
             *has_corner = 1;
-            return combine(x, mk, loc, free_cyl, freedraw_cylinder(x, d, axis, corner));
+            return within_domain(x, mk,
+                                 combine(x, mk, loc, free_cyl, freedraw_cylinder(x, d, axis, corner)),
+                                 loc);
         }
         diag_warning(d->loc, "<drawcylinder>: with --xml-fill=gencase, sphc models free drawing "
                              "for cylinders along x, y or z only; this one is filled with "
