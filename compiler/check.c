@@ -39,6 +39,48 @@ static int check_let(Model *m, const Item *it)
     return 0;
 }
 
+/* Constant folding and the material laws write a function's calls out (eval.c, law.c), so
+ * a chain of functions that each call the one before twice would cost 2^n: a function may
+ * stand for at most this many nodes, its calls written out. */
+#define FN_MAX_SIZE 1e6
+
+/* Nodes of e with calls of user functions written out, or -1 after reporting a call of fn
+ * itself. */
+static double written_out(const Model *m, const Item *fn, const Expr *e)
+{
+    double n = 1;
+    if (e->kind == EX_CALL && !strcmp(e->name, fn->name)) {
+        diag_error(e->loc, "function '%s' calls itself: recursion is not supported", fn->name);
+        return -1;
+    }
+    if (e->kind == EX_CALL) {
+        const FnDef *f = model_find_fn(m, e->name);
+        if (f && f->body != fn->value)
+            n += f->size;
+    }
+    for (int i = 0; i < e->nargs; i++) {
+        const double a = written_out(m, fn, e->args[i]);
+        if (a < 0)
+            return -1;
+        n += a;
+    }
+    return n;
+}
+
+/* The size of fn (its body e) into f, or -1 after reporting recursion or a size too large. */
+static int fn_size(const Model *m, const Item *fn, const Expr *e, FnDef *f)
+{
+    f->size = written_out(m, fn, e);
+    if (f->size < 0)
+        return -1;
+    if (f->size > FN_MAX_SIZE) {
+        diag_error(fn->loc, "function '%s' written out with the functions it calls has %.3g "
+                   "operations, more than %g", fn->name, f->size, FN_MAX_SIZE);
+        return -1;
+    }
+    return 0;
+}
+
 static int check_fn(Model *m, const Item *it)
 {
     if (name_taken(m, it->name, it->loc))
@@ -51,10 +93,16 @@ static int check_fn(Model *m, const Item *it)
                 return -1;
             }
     ExprScope s = {m, it->params, it->nparams, 0, 0, "the body of a function"};
-    /* Register first so that the body can be checked; recursion is refused below. */
-    m->fns[m->nfns++] = (FnDef){it->name, it->params, it->nparams, it->value, it->loc};
+    /* Register first so that the body can be checked; recursion is refused below (a
+     * function sees only those defined before it, so only a call of itself can recur). */
+    m->fns[m->nfns++] = (FnDef){it->name, it->params, it->nparams, it->value, it->loc, 0};
     if (check_scalar_expr(&s, it->value, 0)) {
         m->nfns--;
+        return -1;
+    }
+    if (fn_size(m, it, it->value, &m->fns[m->nfns - 1])) {
+        m->fns[m->nfns - 1].body = ast_num(it->loc, 0.0); /* known, and harmless to use */
+        m->fns[m->nfns - 1].size = 1;
         return -1;
     }
     return 0;

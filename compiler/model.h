@@ -40,6 +40,7 @@ typedef struct {
     int nparams;
     Expr *body;
     SrcLoc loc;
+    double size;    /* nodes of its body with every call of a function written out */
 } FnDef;
 
 typedef struct {

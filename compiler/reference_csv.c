@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "check.h"
 #include "diag.h"
@@ -47,6 +48,12 @@ int reference_csv_read(const char *path, SrcLoc loc, double **t, double **v, int
         diag_error(loc, "cannot open the reference file '%s': %s", path, strerror(errno));
         return -1;
     }
+    struct stat st;
+    if (fstat(fileno(f), &st) || !S_ISREG(st.st_mode)) { /* /dev/zero would never end */
+        diag_error(loc, "the reference file '%s' is not a regular file", path);
+        fclose(f);
+        return -1;
+    }
     char line[4096];
     int cap = 64, lineno = 0, bad = 0, header = 0;
     *n = 0;
@@ -54,6 +61,12 @@ int reference_csv_read(const char *path, SrcLoc loc, double **t, double **v, int
     *v = malloc(cap * sizeof **v);
     while (!bad && fgets(line, sizeof line, f)) {
         lineno++;
+        if (!strchr(line, '\n') && !feof(f)) {
+            diag_error(loc, "%s:%d: the line is longer than %d characters", path, lineno,
+                       (int)sizeof line - 2);
+            bad = 1;
+            break;
+        }
         if (blank(line))
             continue;
         double a, b;

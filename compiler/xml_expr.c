@@ -27,7 +27,7 @@ typedef struct {
     const char *start;   /* its first character */
     char op[3];
     double num;
-    char name[128];
+    char name[XML_MAX_NAME + 1];
     int nesting;         /* parse_unary calls under way: every nested operand is one */
     int failed;
 } Parser;

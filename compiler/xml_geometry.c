@@ -196,8 +196,17 @@ static XmlDraw new_draw(const XmlCtx *x, XmlDrawKind kind, int mk, SrcLoc loc)
     return d;
 }
 
+/* Drawings a case may make: each body's shape is found by comparing its drawings with the
+ * others' (xml_shape.c), which at worst takes their number squared. */
+#define MAX_DRAWINGS 100000
+
 static int add_draw(XmlCtx *x, const XmlDraw *d)
 {
+    if (x->ndraws == MAX_DRAWINGS) {
+        diag_error(d->loc, "more than %d drawings: give so fine a shape as a surface file",
+                   MAX_DRAWINGS);
+        return -1;
+    }
     x->draws = ast_room(x->draws, (size_t)x->ndraws, sizeof *x->draws);
     x->draws[x->ndraws++] = *d;
     return 0;

@@ -147,6 +147,9 @@ double xml_snap(double v, double tol);
 
 /* ---------------------------------------------------------------- xml_expr.c */
 
+/* The longest name of an expression or a local. */
+#define XML_MAX_NAME 127
+
 /* Parses text in the expression language of SoliDualSPHysics (paper section 3.4: Table 3
  * precedence, if(c, a, b), skip/Skip).  Names may carry GenCase's '#' marker, which is
  * dropped.  Every node is located at loc; errors name `what` (e.g. "<expression>

@@ -75,8 +75,9 @@ static void push_local(Locals *l, const char *name, const char *let, double v)
 static const char *let_for(XmlCtx *x, long id, const char *name, double v, Expr *value,
                            SrcLoc loc)
 {
-    char buf[200];
-    snprintf(buf, sizeof buf, "%s", name);
+    const size_t size = strlen(name) + 48; /* every candidate fits whole: none repeats */
+    char *buf = ast_alloc(size);
+    snprintf(buf, size, "%s", name);
     for (int round = 0;; round++) {
         int i = find_let(x, buf);
         if (i >= 0 && x->lets[i].value->kind == EX_NUM && x->lets[i].value->num == v)
@@ -86,14 +87,14 @@ static const char *let_for(XmlCtx *x, long id, const char *name, double v, Expr 
         if (!taken)
             break;
         if (round == 0)
-            snprintf(buf, sizeof buf, "e%ld_%s", id, name);
+            snprintf(buf, size, "e%ld_%s", id, name);
         else
-            snprintf(buf, sizeof buf, "e%ld_%s_%d", id, name, round + 1);
+            snprintf(buf, size, "e%ld_%s_%d", id, name, round + 1);
     }
     Item it = {0};
     it.kind = IT_LET;
     it.loc = loc;
-    it.name = ast_strdup(buf);
+    it.name = buf;
     it.value = value->kind == EX_NUM ? value : ast_num(loc, v);
     x->lets = ast_room(x->lets, (size_t)x->nlets, sizeof *x->lets);
     x->lets[x->nlets++] = it;
@@ -120,7 +121,12 @@ static int local(XmlCtx *x, long id, char *entry, SrcLoc loc, Locals *l)
         diag_error(loc, "%s: '%s' is not a valid name", what, name);
         return -1;
     }
-    char vwhat[160];
+    if (strlen(name) > XML_MAX_NAME) { /* as in expressions (xml_expr.c) */
+        diag_error(loc, "%s: the name '%.20s...' is longer than %d characters", what, name,
+                   XML_MAX_NAME);
+        return -1;
+    }
+    char vwhat[256];
     snprintf(vwhat, sizeof vwhat, "%s, value of '%s'", what, name);
     Expr *e = xml_parse_expr(eq + 1, loc, vwhat);
     double v;

@@ -18,6 +18,7 @@
  * and the grown cylinder that reproduce the one count known of GenCase's free drawing
  * (docs/xml.md): a lattice with a cell corner on the axis across it and a layer on the first
  * end point along it, filled within dp / sqrt(2) of the cylinder. */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -139,13 +140,25 @@ static int overlap(const XmlDraw *a, const XmlDraw *b)
     return 1;
 }
 
-/* Whether draw i overlaps one of mk's draws before it. */
-static int takes_over(const XmlCtx *x, int i, int mk)
+/* Whether draw i overlaps one of mk's draws before it; `before` holds the nodes of their
+ * bounding box (lo > hi: none), which most draws of other mks miss. */
+static int takes_over(const XmlCtx *x, int i, int mk, const XmlDraw *before)
 {
+    if (!overlap(before, &x->draws[i]))
+        return 0;
     for (int j = 0; j < i; j++)
         if (x->draws[j].mk == mk && overlap(&x->draws[j], &x->draws[i]))
             return 1;
     return 0;
+}
+
+/* Grows the node box `box` to cover draw d. */
+static void cover(XmlDraw *box, const XmlDraw *d)
+{
+    for (int k = 0; k < 3; k++) {
+        box->lo[k] = d->lo[k] < box->lo[k] ? d->lo[k] : box->lo[k];
+        box->hi[k] = d->hi[k] > box->hi[k] ? d->hi[k] : box->hi[k];
+    }
 }
 
 /* The union of shapes p[0..n-1] as a balanced tree (union is associative), so that an mk
@@ -166,10 +179,16 @@ static ShapeExpr *union_of(SrcLoc loc, ShapeExpr **p, int n)
 static ShapeExpr *combine(const XmlCtx *x, int mk, SrcLoc loc, int which, ShapeExpr *own)
 {
     ShapeExpr *s = NULL, **run = ast_alloc(((size_t)x->ndraws + 1) * sizeof *run);
+    XmlDraw mine_box = {0};
     int nrun = 0, adding = 1;
+    for (int k = 0; k < 3; k++)
+        mine_box.lo[k] = LONG_MAX, mine_box.hi[k] = LONG_MIN; /* empty */
     for (int i = 0; i <= x->ndraws; i++) {
         const XmlDraw *d = i < x->ndraws ? &x->draws[i] : NULL;
-        const int mine = d && d->mk == mk, other = d && !mine && takes_over(x, i, mk);
+        const int mine = d && d->mk == mk;
+        const int other = d && !mine && takes_over(x, i, mk, &mine_box);
+        if (mine)
+            cover(&mine_box, d);
         if (nrun && (!d || (mine && !adding) || (other && adding))) {
             ShapeExpr *u = union_of(loc, run, nrun);
             s = !s ? u : ast_shape_op(loc, adding ? '+' : '-', s, u);

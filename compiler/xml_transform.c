@@ -72,7 +72,7 @@ static void right_multiply(XmlMatrix *m, const XmlMatrix *t)
             o.a[r][c] = v;
         }
     const double tol = TILT_EPS * largest_entry(&o);
-    for (int r = 0; r < 3; r++)
+    for (int r = 0; r < 3 && isfinite(tol); r++) /* (an overflow is reported, not hidden) */
         for (int c = 0; c < 3; c++)
             if (fabs(o.a[r][c]) <= tol)
                 o.a[r][c] = 0.0;
@@ -226,6 +226,13 @@ int xml_transform_command(XmlCtx *x, const xmlNode *n)
     if (rc)
         return -1;
     right_multiply(&x->matrix, &t);
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 4; c++)
+            if (!isfinite(x->matrix.a[r][c])) {
+                diag_error(xml_loc(x, n), "<%s>: the transformation it makes has an entry "
+                                          "that is not a finite number", xml_name(n));
+                return -1;
+            }
     return 0;
 }
 

@@ -20,6 +20,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "mesh.h"
 
@@ -106,7 +107,7 @@ static int ascii_number(reader *r, double *out)
         return -1;
     errno = 0;
     *out = strtod(w, &end);
-    return *end || errno == ERANGE ? -1 : 0;
+    return *end || errno == ERANGE || !isfinite(*out) ? -1 : 0;
 }
 
 static uint64_t big_endian(const unsigned char *p, int bytes)
@@ -186,7 +187,8 @@ static int vtk_points(reader *r)
         double x[3];
         for (int c = 0; c < 3; c++)
             if (vtk_value(r, bytes, is_float, &x[c]))
-                return fail(r, "VTK: the POINTS data end early");
+                return fail(r, "VTK: the POINTS data end early or hold a value that is "
+                               "not a finite number");
         push_vertex(r, x[0], x[1], x[2]);
     }
     return 0;
@@ -215,7 +217,7 @@ static int vtk_cells_classic(reader *r, long ncells, long total, int keep, int s
     long cap = 0, used = 0;
     for (long c = 0; c < ncells; c++) {
         double cnt;
-        if (vtk_value(r, 4, 0, &cnt) || cnt < 0 || cnt > 1e8)
+        if (vtk_value(r, 4, 0, &cnt) || !(cnt >= 0 && cnt <= 1e8))
             break;
         long m = (long)cnt;
         if (m > cap) {
@@ -263,10 +265,12 @@ static int vtk_cells_offsets(reader *r, long noffsets, long nconn, int keep, int
                 bad = fail(r, "VTK: the cell data end early");
     }
     for (long c = 0; c + 1 < noffsets && !bad; c++) {
-        long a = (long)off[c], b = (long)off[c + 1];
-        if (a < 0 || b < a || b > nconn)
+        if (!(off[c] >= 0 && off[c] <= off[c + 1] && off[c + 1] <= (double)nconn)) {
             bad = fail(r, "VTK: bad OFFSETS");
-        else if (keep)
+            break;
+        }
+        long a = (long)off[c], b = (long)off[c + 1];
+        if (keep)
             bad = add_cell(r, conn + a, b - a, strip, r->nv);
     }
     free(off);
@@ -439,6 +443,12 @@ static unsigned char *read_file(const char *path, size_t *n, char *err, size_t l
         snprintf(err, len, "%s: cannot open: %s", path, strerror(errno));
         return NULL;
     }
+    struct stat st;
+    if (fstat(fileno(f), &st) || !S_ISREG(st.st_mode)) { /* a device could be endless */
+        snprintf(err, len, "%s: not a regular file", path);
+        fclose(f);
+        return NULL;
+    }
     size_t cap = 1 << 16, got;
     unsigned char *buf = malloc(cap);
     *n = 0;
@@ -472,6 +482,9 @@ int sph_mesh_read(const char *path, sph_mesh *m, char *err, size_t len)
     free(text);
     if (!bad && r.nt == 0)
         bad = fail(&r, "the file holds no triangles");
+    for (long k = 0; !bad && k < 3 * (long)r.nv; k++)
+        if (!isfinite(r.v[k]))
+            bad = fail(&r, "vertex %ld has a coordinate that is not a finite number", k / 3);
     if (bad) {
         free(r.v);
         free(r.t);

@@ -162,6 +162,9 @@ int sph_mesh_solid(sph_solid_kind kind, const double *pts, int npts, sph_mesh *m
     if (m_corners > SPH_SOLID_MAX_CORNERS) /* ear clipping takes up to m^3 steps */
         return fail(err, len, what, "has more than 1000 corners in a polygon (give such a "
                                     "shape as a surface file)");
+    for (int k = 0; k < 3 * npts; k++) /* (a NaN would never equal a vertex kept) */
+        if (!isfinite(pts[k]))
+            return fail(err, len, what, "a corner's coordinate is not a finite number");
     m->file = strdup(what);
     m->v = malloc((size_t)npts * 3 * sizeof *m->v);
     m->t = malloc((size_t)(4 * npts + 8) * 3 * sizeof *m->t);
