@@ -43,15 +43,14 @@ static int row(const char *line, double *t, double *v)
 
 int reference_csv_read(const char *path, SrcLoc loc, double **t, double **v, int *n)
 {
+    struct stat st; /* (before opening: opening a pipe waits for a writer) */
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) { /* /dev/zero would never end */
+        diag_error(loc, "the reference file '%s' is not a regular file", path);
+        return -1;
+    }
     FILE *f = fopen(path, "r");
     if (!f) {
         diag_error(loc, "cannot open the reference file '%s': %s", path, strerror(errno));
-        return -1;
-    }
-    struct stat st;
-    if (fstat(fileno(f), &st) || !S_ISREG(st.st_mode)) { /* /dev/zero would never end */
-        diag_error(loc, "the reference file '%s' is not a regular file", path);
-        fclose(f);
         return -1;
     }
     char line[4096];

@@ -203,8 +203,9 @@ static XmlDraw new_draw(const XmlCtx *x, XmlDrawKind kind, int mk, SrcLoc loc)
 static int add_draw(XmlCtx *x, const XmlDraw *d)
 {
     if (x->ndraws == MAX_DRAWINGS) {
-        diag_error(d->loc, "more than %d drawings: give so fine a shape as a surface file",
-                   MAX_DRAWINGS);
+        if (!x->refused_drawings++) /* (reported once) */
+            diag_error(d->loc, "more than %d drawings: give so fine a shape as a surface file",
+                       MAX_DRAWINGS);
         return -1;
     }
     x->draws = ast_room(x->draws, (size_t)x->ndraws, sizeof *x->draws);
@@ -401,12 +402,8 @@ static int draw_span(XmlCtx *x, const char *tag, int a, double lo, double hi, Xm
 {
     if (node_span(x, a, lo, hi, &d->lo[a], &d->hi[a]))
         return outside(tag, a, d->loc);
-    d->reach[0][a] = lo;
+    d->reach[0][a] = lo; /* (where it leaves the domain, xml_shape.c cuts it) */
     d->reach[1][a] = hi;
-    /* GenCase has no node beyond the domain: past half a spacing from its first or last node
-     * a shape is cut (xml_shape.c) */
-    d->beyond |= (lo < x->pmin[a] - 0.5 * x->dp) << 2 * a;
-    d->beyond |= (hi > x->pmin[a] + ((double)x->nodes[a] + 0.5) * x->dp) << (2 * a + 1);
     return 0;
 }
 

@@ -48,8 +48,7 @@ typedef struct {
     int freedraw;             /* drawn in GenCase's free drawing mode (<setfrdrawmode>) */
     SrcLoc loc;
     const XmlMatrix *map;     /* a surface drawn under a transformation: it, else NULL */
-    double reach[2][3];       /* a drawing other than a box: its bounding box, and */
-    int beyond;               /* bit 2a (2a + 1): it reaches below (above) the domain on axis a */
+    double reach[2][3];       /* a drawing other than a box: its bounding box */
 } XmlDraw;
 
 /* One <userexpression>: its expression with its locals renamed to the model's lets. */
@@ -73,6 +72,7 @@ typedef struct {
     /* the mainlist */
     XmlDraw *draws;
     int ndraws;
+    int refused_drawings;     /* drawings beyond the most a case may make */
     int freedraw;             /* <setfrdrawmode auto="true"/> in force */
     const xmlNode *commands;  /* <commands>: the <list>s <runlist> runs */
     XmlMatrix matrix;         /* the transformation in force, and those <matrixsave/> kept */

@@ -200,19 +200,33 @@ static ShapeExpr *combine(const XmlCtx *x, int mk, SrcLoc loc, int which, ShapeE
         }
     }
     free(run);
-    if (s && s->depth > AST_MAX_DEPTH) { /* thousands of alternations: walks would overflow */
+    if (s && s->depth > AST_MAX_DEPTH - 2) { /* thousands of alternations: walks would overflow
+                                               (2 levels kept for within_domain's cut) */
         diag_error(loc, "the drawings of mk %d and the later drawings of other mks that take "
                         "nodes over from them alternate more than %d times",
-                   mk, AST_MAX_DEPTH / 2);
+                   mk, (AST_MAX_DEPTH - 2) / 2);
         return NULL;
     }
     return s;
 }
 
-/* The slab beyond the domain on side `side` (bit of XmlDraw.beyond) that covers what of
- * [lo, hi] lies there: from half a spacing past the domain's last node on. */
-static ShapeExpr *slab(const XmlCtx *x, int side, const double lo[3], const double hi[3],
-                       SrcLoc loc)
+/* Where a shape is cut on side `side` of the domain (2a: below, 2a + 1: above along axis a).
+ * GenCase has no node beyond the domain, and on its node lattice the cut lies half a
+ * spacing past the first or last node.  A free-drawn cylinder's lattice is its own
+ * (freedraw_cylinder), with layers that may fall on those planes: GenCase keeps its
+ * particles inside [pointmin, pointmax], so it is cut there (a millionth of a spacing out). */
+static double cut_plane(const XmlCtx *x, int side, int free)
+{
+    const int a = side / 2;
+    const double past = free ? 1e-6 * x->dp : 0.5 * x->dp;
+    if (side % 2)
+        return (free ? x->pmax[a] : x->pmin[a] + (double)x->nodes[a] * x->dp) + past;
+    return x->pmin[a] - past;
+}
+
+/* The slab beyond the cut on side `side` covering what of [lo, hi] lies there. */
+static ShapeExpr *slab(const XmlCtx *x, int side, int free, const double lo[3],
+                       const double hi[3], SrcLoc loc)
 {
     const int a = side / 2;
     double from[3], to[3];
@@ -221,31 +235,38 @@ static ShapeExpr *slab(const XmlCtx *x, int side, const double lo[3], const doub
         from[k] = flat ? 0.0 : xml_snap(lo[k] - x->dp, 1e-9 * x->dp);
         to[k] = flat ? 0.0 : xml_snap(hi[k] + x->dp, 1e-9 * x->dp);
     }
+    const double plane = xml_snap(cut_plane(x, side, free), 1e-12 * x->dp);
     if (side % 2)
-        from[a] = xml_snap(x->pmin[a] + ((double)x->nodes[a] + 0.5) * x->dp, 1e-9 * x->dp);
+        from[a] = plane;
     else
-        to[a] = xml_snap(x->pmin[a] - 0.5 * x->dp, 1e-9 * x->dp);
+        to[a] = plane;
     NamedCall call = {ast_strdup("box"), loc, {0}};
     ast_push_setting(&call.args, ast_setting(loc, "from", vec3(loc, from)));
     ast_push_setting(&call.args, ast_setting(loc, "to", vec3(loc, to)));
     return ast_shape_prim(call);
 }
 
-/* s less what of mk's drawings lies beyond the domain, where GenCase has no nodes (a box's
- * nodes are clipped already, xml_geometry.c): s - (slab + slab ...), one slab per side some
- * drawing reaches past. */
-static ShapeExpr *within_domain(const XmlCtx *x, int mk, ShapeExpr *s, SrcLoc loc)
+/* s less what of mk's drawings lies beyond the domain (a box's nodes are clipped already,
+ * xml_geometry.c): s - (slab + slab ...), one slab per side some drawing reaches past.
+ * free: mk is one free-drawn cylinder, grown by `grow` (freedraw_cylinder). */
+static ShapeExpr *within_domain(const XmlCtx *x, int mk, ShapeExpr *s, int free, double grow,
+                                SrcLoc loc)
 {
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
     int beyond = 0;
     for (int i = 0; i < x->ndraws; i++) {
         const XmlDraw *d = &x->draws[i];
-        if (d->mk != mk || !d->beyond)
+        if (d->mk != mk || d->kind == XD_BOX)
             continue;
-        beyond |= d->beyond;
-        for (int k = 0; k < 3; k++) {
-            lo[k] = fmin(lo[k], d->reach[0][k]);
-            hi[k] = fmax(hi[k], d->reach[1][k]);
+        for (int a = 0; a < 3; a++) {
+            if (x->dim == 2 && a == 1)
+                continue; /* (the plane of the case) */
+            const double dlo = d->reach[0][a] - grow, dhi = d->reach[1][a] + grow;
+            const int below = dlo < cut_plane(x, 2 * a, free);
+            const int above = dhi > cut_plane(x, 2 * a + 1, free);
+            beyond |= below << 2 * a | above << (2 * a + 1);
+            lo[a] = fmin(lo[a], dlo);
+            hi[a] = fmax(hi[a], dhi);
         }
     }
     if (!s || !beyond)
@@ -254,13 +275,13 @@ static ShapeExpr *within_domain(const XmlCtx *x, int mk, ShapeExpr *s, SrcLoc lo
     int n = 0;
     for (int side = 0; side < 6; side++)
         if (beyond >> side & 1)
-            cut[n++] = slab(x, side, lo, hi, loc);
+            cut[n++] = slab(x, side, free, lo, hi, loc);
     return ast_shape_op(loc, '-', s, union_of(loc, cut, n));
 }
 
 ShapeExpr *xml_mk_shape(const XmlCtx *x, int mk, SrcLoc loc)
 {
-    return within_domain(x, mk, combine(x, mk, loc, -1, NULL), loc);
+    return within_domain(x, mk, combine(x, mk, loc, -1, NULL), 0, 0.0, loc);
 }
 
 int xml_mk_boxes_only(const XmlCtx *x, int mk)
@@ -341,9 +362,9 @@ ShapeExpr *xml_mk_body_shape(const XmlCtx *x, int mk, SrcLoc loc, int *has_corne
         }
         if (axis >= 0) {
             *has_corner = 1;
-            return within_domain(x, mk,
-                                 combine(x, mk, loc, free_cyl, freedraw_cylinder(x, d, axis, corner)),
-                                 loc);
+            ShapeExpr *grown = freedraw_cylinder(x, d, axis, corner);
+            return within_domain(x, mk, combine(x, mk, loc, free_cyl, grown), 1,
+                                 x->dp / sqrt(2.0), loc);
         }
         diag_warning(d->loc, "<drawcylinder>: with --xml-fill=gencase, sphc models free drawing "
                              "for cylinders along x, y or z only; this one is filled with "

@@ -233,6 +233,15 @@ int xml_transform_command(XmlCtx *x, const xmlNode *n)
                                           "that is not a finite number", xml_name(n));
                 return -1;
             }
+    const double (*a)[4] = x->matrix.a;
+    const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                       a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                       a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    if (det == 0) { /* (a scale of 1e-13 beside 1 is round-off to the snapping above) */
+        diag_error(xml_loc(x, n), "<%s>: the transformation it makes flattens the drawings",
+                   xml_name(n));
+        return -1;
+    }
     return 0;
 }
 

@@ -438,15 +438,14 @@ static void weld(reader *r)
 
 static unsigned char *read_file(const char *path, size_t *n, char *err, size_t len)
 {
+    struct stat st; /* (before opening: opening a pipe waits for a writer) */
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) { /* a device could be endless */
+        snprintf(err, len, "%s: not a regular file", path);
+        return NULL;
+    }
     FILE *f = fopen(path, "rb");
     if (!f) {
         snprintf(err, len, "%s: cannot open: %s", path, strerror(errno));
-        return NULL;
-    }
-    struct stat st;
-    if (fstat(fileno(f), &st) || !S_ISREG(st.st_mode)) { /* a device could be endless */
-        snprintf(err, len, "%s: not a regular file", path);
-        fclose(f);
         return NULL;
     }
     size_t cap = 1 << 16, got;
