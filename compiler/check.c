@@ -55,7 +55,7 @@ static double written_out(const Model *m, const Item *fn, const Expr *e)
     }
     if (e->kind == EX_CALL) {
         const FnDef *f = model_find_fn(m, e->name);
-        if (f && f->body != fn->value)
+        if (f)
             n += f->size;
     }
     for (int i = 0; i < e->nargs; i++) {

@@ -145,20 +145,18 @@ static int surface_map(const Model *m, const NamedCall *c, ShapePrim *p)
     }
     if (move && check_vec3(m, move->values[0], "move", b))
         return -1;
-    const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-                       a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-                       a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-    if (!(fabs(det) > 0) || !isfinite(det)) {
-        diag_error((matrix ? matrix : scale)->loc, "the %s flattens the surface (its "
-                   "determinant is %g)", matrix ? "matrix" : "scale", det);
-        return -1;
-    }
     p->pts = ast_alloc(12 * sizeof *p->pts);
     p->npts = 4;
     for (int col = 0; col < 3; col++)
         for (int r = 0; r < 3; r++)
             p->pts[3 * col + r] = a[r][col];
     memcpy(p->pts + 9, b, sizeof b);
+    const double det = sph_mesh_map_det(p->pts);
+    if (!(fabs(det) > 0) || !isfinite(det)) {
+        diag_error((matrix ? matrix : scale)->loc, "the %s flattens the surface (its "
+                   "determinant is %g)", matrix ? "matrix" : "scale", det);
+        return -1;
+    }
     return 0;
 }
 

@@ -615,8 +615,7 @@ static int drawsolid(XmlCtx *x, const xmlNode *n, int mk)
     }
     if (mk == XML_MK_NONE)
         return no_mk(tag, d.loc);
-    for (int k = 0; k < d.npts; k++)
-        xml_matrix_point(&x->matrix, d.pts + 3 * k, d.pts + 3 * k);
+    xml_matrix_points(&x->matrix, d.pts, d.npts);
     return add_solid(x, &d, tag);
 }
 
@@ -684,8 +683,7 @@ static int drawextrude(XmlCtx *x, const xmlNode *n, int mk)
         for (int a = 0; a < 3; a++)
             d.pts[3 * (m + k) + a] = d.pts[3 * k + a] + v[a];
     d.npts = 2 * m;
-    for (int k = 0; k < d.npts; k++)
-        xml_matrix_point(&x->matrix, d.pts + 3 * k, d.pts + 3 * k);
+    xml_matrix_points(&x->matrix, d.pts, d.npts);
     return add_solid(x, &d, "drawextrude");
 }
 

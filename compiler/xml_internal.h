@@ -183,6 +183,8 @@ int xml_transform_command(XmlCtx *x, const xmlNode *n);
 void xml_matrix_identity(XmlMatrix *m);
 int xml_matrix_is_identity(const XmlMatrix *m);
 void xml_matrix_point(const XmlMatrix *m, const double p[3], double out[3]);
+/* The n points pts (3 coordinates each) through m, in place. */
+void xml_matrix_points(const XmlMatrix *m, double *pts, int n);
 /* Whether m takes the axes to axes (moves, scales, turns by multiples of 90 degrees about
  * an axis): an axis-aligned box stays one. */
 int xml_matrix_keeps_axes(const XmlMatrix *m);

@@ -82,16 +82,10 @@ static ShapeExpr *surface_shape(const XmlDraw *d)
 {
     NamedCall call = {ast_strdup("surface"), d->loc, {0}};
     ast_push_setting(&call.args, ast_setting_text(d->loc, "file", d->file));
-    if (d->map) { /* its entries to 15 digits: a turn by 90 degrees reads 0, not 6e-17 */
-        double row[3][3], move[3], big = 0;
-        for (int r = 0; r < 3; r++)
-            for (int c = 0; c < 3; c++)
-                big = fmax(big, fabs(d->map->a[r][c]));
+    if (d->map) { /* (a quarter turn's round-off is 0 already: xml_transform.c) */
+        double row[3][3], move[3];
         for (int r = 0; r < 3; r++) {
-            for (int c = 0; c < 3; c++)
-                row[r][c] = fabs(d->map->a[r][c]) <= 1e-15 * big
-                                ? 0.0
-                                : xml_snap(d->map->a[r][c], 1e-15 * big);
+            memcpy(row[r], d->map->a[r], sizeof row[r]);
             move[r] = d->map->a[r][3];
         }
         Setting m = ast_setting(d->loc, "matrix", vec3(d->loc, row[0]));

@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "diag.h"
+#include "mesh.h"
 #include "xml_internal.h"
 
 /* Nesting of <matrixsave/> without <matrixload/>: far beyond any case, and finite. */
@@ -233,11 +234,9 @@ int xml_transform_command(XmlCtx *x, const xmlNode *n)
                                           "that is not a finite number", xml_name(n));
                 return -1;
             }
-    const double (*a)[4] = x->matrix.a;
-    const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-                       a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-                       a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-    if (det == 0) { /* (a scale of 1e-13 beside 1 is round-off to the snapping above) */
+    double xf[12];
+    xml_matrix_columns(&x->matrix, xf);
+    if (sph_mesh_map_det(xf) == 0) { /* (a scale of 1e-13 beside 1 is round-off to the snapping above) */
         diag_error(xml_loc(x, n), "<%s>: the transformation it makes flattens the drawings",
                    xml_name(n));
         return -1;
@@ -247,16 +246,12 @@ int xml_transform_command(XmlCtx *x, const xmlNode *n)
 
 /* ------------------------------------------------------------------ what M keeps */
 
+/* (right_multiply has set the round-off of quarter turns to 0: the zeros are exact.) */
 int xml_matrix_keeps_axes(const XmlMatrix *m)
 {
-    const double tol = TILT_EPS * largest_entry(m);
-    for (int r = 0; r < 3; r++) {
-        int nonzero = 0;
-        for (int c = 0; c < 3; c++)
-            nonzero += fabs(m->a[r][c]) > tol;
-        if (nonzero != 1)
+    for (int r = 0; r < 3; r++)
+        if ((m->a[r][0] != 0) + (m->a[r][1] != 0) + (m->a[r][2] != 0) != 1)
             return 0;
-    }
     return 1;
 }
 
@@ -280,9 +275,13 @@ double xml_matrix_similarity(const XmlMatrix *m)
 
 int xml_matrix_keeps_y(const XmlMatrix *m)
 {
-    const double tol = TILT_EPS * largest_entry(m);
-    return fabs(m->a[1][0]) <= tol && fabs(m->a[1][2]) <= tol && fabs(m->a[0][1]) <= tol &&
-           fabs(m->a[2][1]) <= tol;
+    return m->a[1][0] == 0 && m->a[1][2] == 0 && m->a[0][1] == 0 && m->a[2][1] == 0;
+}
+
+void xml_matrix_points(const XmlMatrix *m, double *pts, int n)
+{
+    for (int k = 0; k < n; k++)
+        xml_matrix_point(m, pts + 3 * k, pts + 3 * k);
 }
 
 void xml_matrix_columns(const XmlMatrix *m, double xf[12])

@@ -55,6 +55,8 @@ int sph_mesh_load(const char *path, sph_mesh *m, char *err, size_t len);
  * translation.  A map that mirrors the surface is fine: sph_mesh_close orients it. */
 int sph_mesh_load_moved(const char *path, const double *xf, sph_mesh *m, char *err,
                         size_t len);
+/* The determinant of the map xf's matrix (its volume ratio; 0: it flattens). */
+double sph_mesh_map_det(const double *xf);
 void sph_mesh_free(sph_mesh *m);
 
 /* mesh_ray.c: whether the ray from p along +z crosses triangle k, at height *z.  Points of

@@ -503,8 +503,19 @@ int sph_mesh_load(const char *path, sph_mesh *m, char *err, size_t len)
     return sph_mesh_load_moved(path, NULL, m, err, len);
 }
 
+double sph_mesh_map_det(const double *xf)
+{
+    const double *e1 = xf, *e2 = xf + 3, *e3 = xf + 6; /* the matrix's columns */
+    return e1[0] * (e2[1] * e3[2] - e2[2] * e3[1]) - e2[0] * (e1[1] * e3[2] - e1[2] * e3[1]) +
+           e3[0] * (e1[1] * e2[2] - e1[2] * e2[1]);
+}
+
 int sph_mesh_load_moved(const char *path, const double *xf, sph_mesh *m, char *err, size_t len)
 {
+    if (xf && !(fabs(sph_mesh_map_det(xf)) > 0 && isfinite(sph_mesh_map_det(xf)))) {
+        snprintf(err, len, "%s: the map that moves it flattens it", path);
+        return -1;
+    }
     if (sph_mesh_read(path, m, err, len))
         return -1;
     for (int i = 0; xf && i < m->nv; i++) { /* x -> x e1' + y e2' + z e3' + b */
