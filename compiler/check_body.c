@@ -153,8 +153,9 @@ static int surface_map(const Model *m, const NamedCall *c, ShapePrim *p)
     memcpy(p->pts + 9, b, sizeof b);
     const double det = sph_mesh_map_det(p->pts);
     if (!(fabs(det) > 0) || !isfinite(det)) {
-        diag_error((matrix ? matrix : scale)->loc, "the %s flattens the surface (its "
-                   "determinant is %g)", matrix ? "matrix" : "scale", det);
+        diag_error((matrix ? matrix : scale)->loc, "the %s %s the surface (its determinant is "
+                   "%g)", matrix ? "matrix" : "scale", isfinite(det) ? "flattens" : "is too large for",
+                   det);
         return -1;
     }
     return 0;

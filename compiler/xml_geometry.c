@@ -500,14 +500,15 @@ static int surface_file_ok(const XmlCtx *x, const xmlNode *n, const char *file,
     return rc ? -1 : 0;
 }
 
-/* A closed surface from a file, filled (autofill="true").  The file is read and checked
+/* A closed surface from a file, filled (autofill="true"), under the transformation in force
+ * and its own <drawscale> or <drawmove> (xml_file_transform).  The file is read and checked
  * with the body (check_body.c), relative to the case file. */
 static int drawfile(XmlCtx *x, const xmlNode *n, int mk)
 {
     static const char *const attrs[] = {"file", "objname", "autofill", NULL};
-    static const char *const none[] = {NULL};
     SrcLoc loc = xml_loc(x, n);
-    if (xml_check_attrs(x, n, attrs) || xml_check_children(x, n, none))
+    XmlMatrix m;
+    if (xml_check_attrs(x, n, attrs) || xml_file_transform(x, n, &m))
         return -1;
     const char *file = xml_attr(n, "file"), *fill = xml_attr(n, "autofill");
     if (!file || !*file) {
@@ -527,9 +528,9 @@ static int drawfile(XmlCtx *x, const xmlNode *n, int mk)
         return no_mk(xml_name(n), loc);
     XmlDraw d = new_draw(x, XD_SURFACE, mk, loc);
     d.file = file;
-    if (!xml_matrix_is_identity(&x->matrix)) {
+    if (!xml_matrix_is_identity(&m)) {
         XmlMatrix *map = ast_alloc(sizeof *map);
-        *map = x->matrix;
+        *map = m;
         d.map = map;
     }
     double lo[3], hi[3];

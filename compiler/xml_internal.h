@@ -180,6 +180,10 @@ int xml_mk_drawn(const XmlCtx *x, int mk);
  * <matrixreset>, <matrixsave>, <matrixload>) applied to x->matrix: 0, or -1 after
  * reporting; 1 when n is none of them. */
 int xml_transform_command(XmlCtx *x, const xmlNode *n);
+/* The map of a surface file's drawing (<drawfilestl>, <drawfilevtk>): x->matrix times its
+ * own <drawscale> or <drawmove> (either, not both), which apply first: 0, or -1 after
+ * reporting. */
+int xml_file_transform(XmlCtx *x, const xmlNode *n, XmlMatrix *map);
 void xml_matrix_identity(XmlMatrix *m);
 int xml_matrix_is_identity(const XmlMatrix *m);
 void xml_matrix_point(const XmlMatrix *m, const double p[3], double out[3]);

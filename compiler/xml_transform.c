@@ -96,15 +96,22 @@ static void rotation(double deg, const double p[3], const double v[3], XmlMatrix
         t->a[r][3] = p[r] - (t->a[r][0] * p[0] + t->a[r][1] * p[1] + t->a[r][2] * p[2]);
 }
 
-/* The attributes x, y, z of a command with the attributes attrs and no children. */
-static int read_xyz(XmlCtx *x, const xmlNode *n, const char *const *attrs, double v[3])
+/* The attributes names[0..2] of a command with the attributes attrs and no children. */
+static int read_three(XmlCtx *x, const xmlNode *n, const char *const *attrs,
+                      const char *const names[3], double v[3])
 {
-    static const char *const xyz[] = {"x", "y", "z"}, *const none[] = {NULL};
+    static const char *const none[] = {NULL};
     int bad = xml_check_attrs(x, n, attrs) != 0;
     bad |= xml_check_children(x, n, none) != 0;
     for (int k = 0; k < 3; k++)
-        bad |= xml_number(x, n, xyz[k], 1, &v[k]) != 1;
+        bad |= xml_number(x, n, names[k], 1, &v[k]) != 1;
     return bad ? -1 : 0;
+}
+
+static int read_xyz(XmlCtx *x, const xmlNode *n, const char *const *attrs, double v[3])
+{
+    static const char *const xyz[] = {"x", "y", "z"};
+    return read_three(x, n, attrs, xyz, v);
 }
 
 /* An error (-1) when the axis v of a turn has no direction. */
@@ -203,6 +210,32 @@ static int matrix_stack(XmlCtx *x, const xmlNode *n)
     return 0;
 }
 
+/* 0 when m is finite and flattens nothing, else -1 after reporting n. */
+static int usable(const XmlCtx *x, const xmlNode *n, const XmlMatrix *m)
+{
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 4; c++)
+            if (!isfinite(m->a[r][c])) {
+                diag_error(xml_loc(x, n), "<%s>: the transformation it makes has an entry "
+                                          "that is not a finite number", xml_name(n));
+                return -1;
+            }
+    double xf[12];
+    xml_matrix_columns(m, xf);
+    const double det = sph_mesh_map_det(xf);
+    if (det == 0) { /* (a scale of 1e-13 beside 1 is round-off to the snapping above) */
+        diag_error(xml_loc(x, n), "<%s>: the transformation it makes flattens the drawings",
+                   xml_name(n));
+        return -1;
+    }
+    if (!isfinite(det)) {
+        diag_error(xml_loc(x, n), "<%s>: the transformation it makes is too large (its "
+                                  "determinant is not a finite number)", xml_name(n));
+        return -1;
+    }
+    return 0;
+}
+
 int xml_transform_command(XmlCtx *x, const xmlNode *n)
 {
     if (xml_is(n, "matrixreset") || xml_is(n, "matrixsave") || xml_is(n, "matrixload"))
@@ -227,21 +260,80 @@ int xml_transform_command(XmlCtx *x, const xmlNode *n)
     if (rc)
         return -1;
     right_multiply(&x->matrix, &t);
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 4; c++)
-            if (!isfinite(x->matrix.a[r][c])) {
-                diag_error(xml_loc(x, n), "<%s>: the transformation it makes has an entry "
-                                          "that is not a finite number", xml_name(n));
-                return -1;
-            }
-    double xf[12];
-    xml_matrix_columns(&x->matrix, xf);
-    if (sph_mesh_map_det(xf) == 0) { /* (a scale of 1e-13 beside 1 is round-off to the snapping above) */
-        diag_error(xml_loc(x, n), "<%s>: the transformation it makes flattens the drawings",
+    return usable(x, n, &x->matrix);
+}
+
+/* ------------------------------------------------------------------ a surface file's own */
+
+/* <drawscale x y z/> (none 0) or <drawmove x y z/> of a surface file's drawing into t. */
+static int file_command(XmlCtx *x, const xmlNode *c, XmlMatrix *t)
+{
+    static const char *const attrs[] = {"x", "y", "z", NULL};
+    double v[3];
+    if (read_xyz(x, c, attrs, v))
+        return -1;
+    for (int a = 0; a < 3; a++) {
+        if (xml_is(c, "drawmove")) {
+            t->a[a][3] = v[a];
+            continue;
+        }
+        if (v[a] == 0) {
+            diag_error(xml_loc(x, c), "<drawscale>: %c = 0 flattens the surface", "xyz"[a]);
+            return -1;
+        }
+        t->a[a][a] = v[a];
+    }
+    return 0;
+}
+
+/* <drawrotate angx angy angz/>: only all three 0 (GenCase's order of the three turns and
+ * their sense are not documented). */
+static int file_rotate(XmlCtx *x, const xmlNode *c)
+{
+    static const char *const attrs[] = {"angx", "angy", "angz", NULL};
+    double v[3];
+    int bad = read_three(x, c, attrs, attrs, v);
+    if (bad || (v[0] == 0 && v[1] == 0 && v[2] == 0))
+        return bad;
+    diag_error(xml_loc(x, c), "<drawrotate> with an angle other than 0 is not supported (in "
+                              "which order and sense GenCase turns by the three angles is not "
+                              "documented): turn the surface with <rotate> before the drawing");
+    return -1;
+}
+
+int xml_file_transform(XmlCtx *x, const xmlNode *n, XmlMatrix *map)
+{
+    static const char *const kids[] = {"drawscale", "drawmove", "drawrotate", NULL};
+    XmlMatrix scale_t, move_t;
+    xml_matrix_identity(&scale_t);
+    xml_matrix_identity(&move_t);
+    *map = x->matrix;
+    if (xml_check_children(x, n, kids))
+        return -1;
+    int bad = 0, seen[3] = {0, 0, 0};
+    for (xmlNode *c = xml_first(n); c; c = xml_next(c)) {
+        const int k = xml_is(c, "drawscale") ? 0 : xml_is(c, "drawmove") ? 1 : 2;
+        if (seen[k]++) {
+            diag_error(xml_loc(x, c), "<%s> is given twice in <%s>", xml_name(c), xml_name(n));
+            bad = 1;
+        } else if (k == 2)
+            bad |= file_rotate(x, c) != 0;
+        else
+            bad |= file_command(x, c, k == 0 ? &scale_t : &move_t) != 0;
+    }
+    if (bad)
+        return -1;
+    if (!xml_matrix_is_identity(&scale_t) && !xml_matrix_is_identity(&move_t)) {
+        diag_error(xml_loc(x, n), "<%s> with both <drawscale> and <drawmove> is not supported "
+                                  "(whether GenCase moves before or after it scales is not "
+                                  "documented): give the move and the scale as <move> and "
+                                  "<scale> before the drawing, in the order meant",
                    xml_name(n));
         return -1;
     }
-    return 0;
+    right_multiply(map, &move_t); /* (one of the two is the identity) */
+    right_multiply(map, &scale_t);
+    return usable(x, n, map);
 }
 
 /* ------------------------------------------------------------------ what M keeps */

@@ -512,8 +512,14 @@ double sph_mesh_map_det(const double *xf)
 
 int sph_mesh_load_moved(const char *path, const double *xf, sph_mesh *m, char *err, size_t len)
 {
-    if (xf && !(fabs(sph_mesh_map_det(xf)) > 0 && isfinite(sph_mesh_map_det(xf)))) {
+    const double det = xf ? sph_mesh_map_det(xf) : 1.0;
+    if (!(fabs(det) > 0)) {
         snprintf(err, len, "%s: the map that moves it flattens it", path);
+        return -1;
+    }
+    if (!isfinite(det)) {
+        snprintf(err, len, "%s: the map that moves it is too large (its determinant is not a "
+                           "finite number)", path);
         return -1;
     }
     if (sph_mesh_read(path, m, err, len))
