@@ -763,7 +763,8 @@ void emit_model_desc(Emitter *E)
             m->nexpects ? "EXPECTS" : "NULL", m->nexpects, m->compat_outputs,
             lambda_on,
             model_has_contact(m) ? "    .contact = &CONTACT,\n" : "",
-            E->cuda ? "    .sync_host = model_sync_host,\n    .monitor = model_monitor,\n"
+            E->cuda ? "    .sync_host = model_sync_host,\n    .copy_state = model_copy_state,\n"
+                      "    .monitor = model_monitor,\n"
                       "    .advance = model_advance,\n"
                     : "");
 }

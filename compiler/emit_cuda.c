@@ -71,6 +71,13 @@ static void scene_step_cuda(Emitter *E)
           "static void model_sync_host(sph_sim *s)\n{\n", out);
     for (int i = 0; i < m->nbodies; i++)
         fprintf(out, "    sph_cuda_to_host(&s->bodies[%d], DEV[%d]);\n", i, i);
+    fputs("}\n\n/* The whole state between the device and the host bodies: to the host for a\n"
+          " * checkpoint, to the device for a run resumed from one. */\n"
+          "static void model_copy_state(sph_sim *s, int to_device)\n{\n", out);
+    for (int i = 0; i < m->nbodies; i++)
+        fprintf(out, "    sph_cuda_state_copy(&s->bodies[%d], DEV[%d], to_device);\n", i, i);
+    if (contact)
+        fputs("    if (to_device)\n        sph_cuda_contact_from_host(&CONTACT_DEV, s);\n", out);
     fputs("}\n\n/* Cauchy stress of every particle, for output (from the host copy). */\n"
           "static void model_stress_output(sph_sim *s)\n{\n", out);
     for (int i = 0; i < m->nbodies; i++)

@@ -162,6 +162,33 @@ void sph_contact_set(sph_sim *s, double stored, double dissipated, double w2max)
     s->contact->w2max = w2max;
 }
 
+int sph_contact_checkpoint(const sph_sim *s, double sums[3], const double **x0, size_t *nx0)
+{
+    const sph_contact *c = s->contact;
+    if (!s->m->contact)
+        return 0;
+    sums[0] = c ? c->stored : 0, sums[1] = c ? c->dissipated : 0, sums[2] = c ? c->w2max : 0;
+    const int built = c && c->search.built; /* (a device target builds no lists) */
+    *x0 = built ? c->search.x0 : NULL;
+    *nx0 = built ? (size_t)c->n * (size_t)c->dim : 0;
+    return 1;
+}
+
+int sph_contact_restore(sph_sim *s, const double sums[3], const double *x0, size_t nx0)
+{
+    sph_contact_set(s, sums[0], sums[1], sums[2]);
+    sph_contact *c = s->contact;
+    if (!nx0)
+        return 0;
+    if (nx0 != (size_t)c->n * (size_t)c->dim) {
+        sph_error("cannot restart: the checkpoint's contact holds %zu coordinates, the scene %zu",
+                  nx0, (size_t)c->n * (size_t)c->dim);
+        return -1;
+    }
+    sph_csearch_build_at(&c->search, x0); /* the lists the run had, in their order */
+    return 0;
+}
+
 double sph_contact_dt(const sph_sim *s)
 {
     const sph_contact *c = s->contact;
@@ -179,6 +206,11 @@ void sph_contact_energies(const sph_sim *s, double *stored, double *dissipated)
 {
     *stored = s->contact ? s->contact->stored : 0;
     *dissipated = s->contact ? s->contact->dissipated : 0;
+}
+
+double sph_contact_w2max(const sph_sim *s)
+{
+    return s->contact ? s->contact->w2max : 0;
 }
 
 void sph_contact_free(sph_sim *s)

@@ -124,12 +124,23 @@ static void rebuild(sph_csearch *c, const double *x)
     c->built = 1;
 }
 
+static void allocate(sph_csearch *c)
+{
+    if (c->x0)
+        return;
+    c->x0 = malloc((size_t)c->n * c->dim * sizeof *c->x0);
+    c->active = malloc(((size_t)c->n + 1) * sizeof *c->active);
+}
+
+void sph_csearch_build_at(sph_csearch *c, const double *x0)
+{
+    allocate(c);
+    rebuild(c, x0);
+}
+
 int sph_csearch_update(sph_csearch *c, const double *x)
 {
-    if (!c->x0) {
-        c->x0 = malloc((size_t)c->n * c->dim * sizeof *c->x0);
-        c->active = malloc(((size_t)c->n + 1) * sizeof *c->active);
-    }
+    allocate(c);
     if (c->built) {
         double moved2 = 0;
         const size_t nd = (size_t)c->n * c->dim;

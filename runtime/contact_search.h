@@ -23,6 +23,9 @@ typedef struct {
 /* Brings the candidates up to date with positions x (n*dim): rebuilds when a particle has
  * moved more than skin/2 since the last rebuild.  Returns 1 when it rebuilt. */
 int sph_csearch_update(sph_csearch *c, const double *x);
+/* The candidates built at positions x0, as the last rebuild at x0 made them (a resumed run's,
+ * from its checkpoint). */
+void sph_csearch_build_at(sph_csearch *c, const double *x0);
 void sph_csearch_free(sph_csearch *c);
 
 #endif

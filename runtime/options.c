@@ -1,6 +1,7 @@
 /* options.c — the command line of a generated program.
  *
- *   --out DIR  --threads N  --end T  --every T  --frames T  --quiet  --profile  --help | -h
+ *   --out DIR  --threads N  --end T  --every T  --frames T  --checkpoint T  --restart FILE
+ *   --quiet  --profile  --help | -h
  *
  * Options with a value also accept the spelling --opt=value. */
 #include "output.h"
@@ -12,7 +13,8 @@
 #include <string.h>
 
 typedef enum {
-    OPT_OUT, OPT_THREADS, OPT_END, OPT_EVERY, OPT_FRAMES, OPT_QUIET, OPT_PROFILE, OPT_HELP
+    OPT_OUT, OPT_THREADS, OPT_END, OPT_EVERY, OPT_FRAMES, OPT_CHECKPOINT, OPT_RESTART,
+    OPT_QUIET, OPT_PROFILE, OPT_HELP
 } opt_id;
 
 typedef struct {
@@ -23,8 +25,9 @@ typedef struct {
 
 static const opt_info OPTIONS[] = {
     {"--out", OPT_OUT, 1},     {"--threads", OPT_THREADS, 1}, {"--end", OPT_END, 1},
-    {"--every", OPT_EVERY, 1}, {"--frames", OPT_FRAMES, 1},   {"--quiet", OPT_QUIET, 0},
-    {"--profile", OPT_PROFILE, 0}, {"--help", OPT_HELP, 0},       {"-h", OPT_HELP, 0},
+    {"--every", OPT_EVERY, 1}, {"--frames", OPT_FRAMES, 1},   {"--checkpoint", OPT_CHECKPOINT, 1},
+    {"--restart", OPT_RESTART, 1}, {"--quiet", OPT_QUIET, 0},  {"--profile", OPT_PROFILE, 0},
+    {"--help", OPT_HELP, 0},       {"-h", OPT_HELP, 0},
 };
 #define NOPTIONS (int)(sizeof OPTIONS / sizeof OPTIONS[0])
 
@@ -49,6 +52,10 @@ static void usage(FILE *f, const char *prog, const char *model)
             "  --every T     output interval in seconds (default: the model's)\n"
             "  --frames T    interval of the particle files (default: every output; the\n"
             "                energies and measurements are written at every output)\n"
+            "  --checkpoint T  write the state to DIR/checkpoint.bin every T seconds of\n"
+            "                simulated time (at output times) and at the end of the run\n"
+            "  --restart FILE  resume the run of FILE, a checkpoint of this model, in its\n"
+            "                folder (unless --out is given) to the end time\n"
             "  --quiet       no progress line\n"
             "  --profile     the time each pass of the step takes, printed at the end and\n"
             "                written to summary.json\n"
@@ -120,13 +127,18 @@ static int set_value(sph_options *o, opt_id id, const char *name, const char *va
     case OPT_END:     bad = parse_positive_double(value, &o->t_end); break;
     case OPT_EVERY:   bad = parse_positive_double(value, &o->t_out); break;
     case OPT_FRAMES:  bad = parse_positive_double(value, &o->t_frames); break;
+    case OPT_CHECKPOINT: bad = parse_positive_double(value, &o->t_checkpoint); break;
+    case OPT_RESTART:
+        bad = value[0] == '\0';
+        o->restart = value;
+        break;
     default: break;
     }
     if (!bad)
         return 0;
     fprintf(stderr, "%s: error: invalid value '%s' for %s%s\n", prog, value, name,
             id == OPT_OUT ? "" : id == OPT_THREADS ? " (expected a positive integer)"
-                                                   : " (expected a positive number)");
+                       : id == OPT_RESTART ? "" : " (expected a positive number)");
     usage(stderr, prog, model);
     return -1;
 }
@@ -148,12 +160,28 @@ static const char *default_out_dir(const char *model)
     return dir;
 }
 
+/* The folder of a file ("." for a bare name), kept for the life of the program (an earlier
+ * one may still be in use by an earlier sph_options). */
+static const char *folder_of(const char *file)
+{
+    const char *slash = strrchr(file, '/');
+    if (!slash)
+        return ".";
+    const size_t len = slash == file ? 1 : (size_t)(slash - file);
+    char *dir = malloc(len + 1);
+    if (!dir)
+        return ".";
+    memcpy(dir, file, len);
+    dir[len] = '\0';
+    return dir;
+}
+
 int sph_parse_options(sph_options *o, const char *model_name, int argc, char **argv)
 {
     const char *model = model_name && model_name[0] ? model_name : "sph";
     const char *prog = program_name(argc, argv, model);
     *o = (sph_options){.out_dir = NULL, .threads = 0, .t_end = -1, .t_out = -1, .t_frames = -1,
-                       .quiet = 0, .profile = 0};
+                       .t_checkpoint = -1, .restart = NULL, .quiet = 0, .profile = 0};
     for (int i = 1; i < argc; i++) {
         const char *value;
         const opt_info *opt = find_option(argv[i], &value);
@@ -180,6 +208,6 @@ int sph_parse_options(sph_options *o, const char *model_name, int argc, char **a
             return -1;
     }
     if (!o->out_dir)
-        o->out_dir = default_out_dir(model);
+        o->out_dir = o->restart ? folder_of(o->restart) : default_out_dir(model);
     return 0;
 }

@@ -27,12 +27,19 @@ typedef struct {
     FILE *f;
     int ncols;
     char sep;
+    char *path;
 } sph_csv;
 int sph_csv_open(sph_csv *c, const char *path, const char *const *columns, int ncols);
 int sph_csv_open_sep(sph_csv *c, const char *path, const char *const *columns, int ncols,
                      char sep);
 int sph_csv_row(sph_csv *c, const double *values); /* ncols values, %.10g */
 void sph_csv_close(sph_csv *c);
+/* The CSV files open now and their lengths in bytes, for a checkpoint: n, with paths[k]
+ * and lengths[k] (k < n) in arrays the caller frees (not the strings). */
+int sph_csv_open_files(const char ***paths, long **lengths);
+/* A run resumed from a checkpoint: from now on opening one of these n files keeps it, cut
+ * back to its length, and appends to it (no header); opening any other is an error. */
+void sph_csv_resume(const char *const *paths, const long *lengths, int n);
 
 /* A small JSON writer (pretty-printed, 2-space indent) for summary.json. */
 typedef struct {
@@ -77,6 +84,8 @@ typedef struct {
     double t_end;         /* --end T   (< 0: model's) */
     double t_out;         /* --every T (< 0: model's) */
     double t_frames;      /* --frames T: particle files every T (< 0: every output) */
+    double t_checkpoint;  /* --checkpoint T: the state every T (< 0: none) */
+    const char *restart;  /* --restart FILE: resume from this checkpoint (NULL: none) */
     int quiet;            /* --quiet */
     int profile;          /* --profile: the time of each pass of the step */
 } sph_options;

@@ -832,4 +832,27 @@ static void sph_cuda_to_host(sph_body *h, const sph_body *d)
      * host's initial ones are the device's) */
 }
 
+/* Every state array of host body h and device view d (sph_body_state_arrays), to the host
+ * for a checkpoint or to the device for a run resumed from one; to the device also the sums
+ * the next time step comes from (where a body's compression bounds it, 1 / (1 / x) may differ
+ * from x in its last bit: the resumed run may then take a time step a last bit apart). */
+static void sph_cuda_state_copy(sph_body *h, const sph_body *d, int to_device)
+{
+    sph_state_array ha[SPH_STATE_ARRAYS], da[SPH_STATE_ARRAYS];
+    const int n = sph_body_state_arrays(h, h->desc->nstate, ha);
+    sph_body_state_arrays(const_cast<sph_body *>(d), h->desc->nstate, da); /* (the same list) */
+    SPH_CUDA_CHECK(cudaDeviceSynchronize());
+    sph_cuda_profile_collect(); /* (the host has waited) */
+    for (int k = 0; k < n; k++)
+        SPH_CUDA_CHECK(to_device ? cudaMemcpy(da[k].data, ha[k].data, ha[k].bytes,
+                                              cudaMemcpyHostToDevice)
+                                 : cudaMemcpy(ha[k].data, da[k].data, ha[k].bytes,
+                                              cudaMemcpyDeviceToHost));
+    if (!to_device)
+        return;
+    const double red[5] = {h->vmax2, h->amax2, 1.0 / h->lam2min, h->visc_rate,
+                           h->visc_dissipated}; /* SPH_RED_VMAX2 .. SPH_RED_VISC_DISSIPATED */
+    SPH_CUDA_CHECK(cudaMemcpy(d->red, red, sizeof red, cudaMemcpyHostToDevice));
+}
+
 #endif

@@ -237,6 +237,15 @@ static const double *sph_cuda_contact_w2(const sph_cuda_contact *c)
     return c->sum + SPH_CSUM_W2;
 }
 
+/* The host runtime's contact sums onto the device (a run resumed from a checkpoint). */
+static void sph_cuda_contact_from_host(sph_cuda_contact *c, const sph_sim *s)
+{
+    double sum[SPH_NCSUM] = {0};
+    sph_contact_energies(s, &sum[SPH_CSUM_STORED], &sum[SPH_CSUM_DISSIPATED]);
+    sum[SPH_CSUM_W2] = sph_contact_w2max(s);
+    SPH_CUDA_CHECK(cudaMemcpy(c->sum, sum, sizeof sum, cudaMemcpyHostToDevice));
+}
+
 /* The device's contact sums into the host runtime (time step, energies). */
 static void sph_cuda_contact_to_host(const sph_cuda_contact *c, sph_sim *s)
 {

@@ -312,6 +312,10 @@ typedef struct {
      * arrays before the runtime reads them (outputs, energies, the stability monitor);
      * NULL on the CPU, where the host arrays are the state. */
     void (*sync_host)(sph_sim *s);
+    /* Device targets: every state array of the bodies (sph_body_state_arrays) and their sums
+     * between the device and the host, to_device 0 for a checkpoint, 1 for a run resumed
+     * from one (also the contact's sums); NULL on the CPU. */
+    void (*copy_state)(sph_sim *s, int to_device);
     /* Device targets: the stability monitor's look at every body without copying its state
      * to the host (sph_monitor_sums, one per body); NULL on the CPU.  The runtime copies the
      * state and looks itself only when these show something wrong (runtime/monitor.c). */
@@ -452,6 +456,32 @@ struct sph_body {
     double visc_rate, visc_dissipated;
 };
 
+/* The arrays of body b that its passes carry from one step to the next: what a checkpoint
+ * saves (checkpoint.c) and a device target copies both ways for it (sph_cuda.h), in this
+ * order, those the body has.  nstate: the law's state values per particle (b->desc->nstate;
+ * a device view has no desc).  The rest (Q, Cv, A, sigma) every step or output makes anew. */
+#define SPH_STATE_ARRAYS 15
+typedef struct {
+    const char *name;
+    void *data;
+    size_t bytes;
+} sph_state_array;
+static inline int sph_body_state_arrays(sph_body *b, int nstate, sph_state_array *out)
+{
+    const size_t n = (size_t)b->n, n1 = n * sizeof(double), nd = n1 * (size_t)b->dim;
+    const sph_state_array all[SPH_STATE_ARRAYS] = {
+        {"u", b->u, nd},       {"v", b->v, nd},        {"a", b->a, nd},
+        {"work", b->work, nd}, {"F", b->F, 9 * n1},    {"psi", b->psi, n1},
+        {"fix", b->fix, n},    {"lam2", b->lam2, n1},  {"state", b->state, n1 * (size_t)nstate},
+        {"s", b->s, n1},       {"sd", b->sd, n1},      {"sdd", b->sdd, n1},
+        {"H", b->H, n1},       {"lap", b->lap, n1},    {"sd_n", b->sd_n, n1}};
+    int k = 0;
+    for (int i = 0; i < SPH_STATE_ARRAYS; i++)
+        if (all[i].data && all[i].bytes)
+            out[k++] = all[i];
+    return k;
+}
+
 typedef struct sph_contact sph_contact;
 
 struct sph_sim {
@@ -544,6 +574,8 @@ double sph_contact_dt(const sph_sim *s);
 /* The energy stored in the contacts now and the energy the contacts' damping and friction
  * have dissipated so far (both 0 without contact). */
 void sph_contact_energies(const sph_sim *s, double *stored, double *dissipated);
+/* The largest omega^2 of the contacts of the last contact pass (0 without contact). */
+double sph_contact_w2max(const sph_sim *s);
 /* Frees the contact state (sph_sim_free calls it). */
 void sph_contact_free(sph_sim *s);
 

@@ -87,6 +87,29 @@ static void test_separate_values(void)
     CHECK(o.quiet == 1, "quiet");
 }
 
+static void test_checkpoints(void)
+{
+    printf("--checkpoint T --restart FILE: the output folder is FILE's unless --out is given\n");
+    sph_options o;
+    const char *args[] = {"--checkpoint", "0.5", "--restart", "runs/a/checkpoint.bin", NULL};
+    CHECK(parse(&o, args, out, err, sizeof out) == 0, "returns 0 (stderr: %s)", err);
+    CHECK(o.t_checkpoint == 0.5, "t_checkpoint 0.5");
+    CHECK(o.restart && strcmp(o.restart, "runs/a/checkpoint.bin") == 0, "restart");
+    CHECK(strcmp(o.out_dir, "runs/a") == 0, "out_dir runs/a, got %s", o.out_dir);
+    const char *bare[] = {"--restart=checkpoint.bin", NULL};
+    CHECK(parse(&o, bare, out, err, sizeof out) == 0 && strcmp(o.out_dir, ".") == 0,
+          "a bare file name: out_dir ., got %s", o.out_dir);
+    const char *root[] = {"--restart", "/checkpoint.bin", NULL};
+    CHECK(parse(&o, root, out, err, sizeof out) == 0 && strcmp(o.out_dir, "/") == 0,
+          "a file in /: out_dir /, got %s", o.out_dir);
+    const char *given[] = {"--restart", "a/checkpoint.bin", "--out", "b", NULL};
+    CHECK(parse(&o, given, out, err, sizeof out) == 0 && strcmp(o.out_dir, "b") == 0,
+          "--out given: out_dir b, got %s", o.out_dir);
+    const char *none[] = {NULL};
+    CHECK(parse(&o, none, out, err, sizeof out) == 0 && o.t_checkpoint == -1 && !o.restart,
+          "defaults: no checkpoints, no restart");
+}
+
 static void test_equals_spelling(void)
 {
     printf("--opt=value spellings; a later option wins\n");
@@ -127,6 +150,7 @@ static void test_errors(void)
         {"--frames", "0"},     {"--frames", "-1"},
         {"--out="},            {"--quiet=1"},          {"--help=1"},
         {"--outdir", "x"},     {"--end", "1s"},        {"-hx"},
+        {"--checkpoint", "0"}, {"--checkpoint"},       {"--restart="},
     };
     int ncases = (int)(sizeof cases / sizeof cases[0]);
     for (int c = 0; c < ncases; c++) {
@@ -146,6 +170,7 @@ int main(void)
     setvbuf(stdout, NULL, _IOLBF, 0);
     test_defaults();
     test_separate_values();
+    test_checkpoints();
     test_equals_spelling();
     test_help();
     test_errors();

@@ -1,0 +1,346 @@
+/* checkpoint.c — a run's state in one file (the program's --checkpoint), and the state read
+ * back from it to resume the run (--restart).
+ *
+ * The file is a list of named records, each its name, its length in bytes and its bytes, after
+ * a header that names the format and this machine's byte order and sizes:
+ *
+ *     "SPHCKPT\n"  u32 version  u32 0x01020304  u32 sizeof(double)  u32 sizeof(long)
+ *     { u32 name length, name, u64 length, bytes } ...  "end" record
+ *
+ * so a checkpoint is read back on a machine of the same kind only, which the header checks.
+ * It is written beside its final name and renamed over it once complete: a run stopped while
+ * writing keeps its previous checkpoint.  The simulation's part (sph_sim_checkpoint): each
+ * body's state arrays (sph_body_state_arrays), its sums of the last step (the next time step
+ * comes from them), the time, step and time step, and the contact's sums and the positions
+ * its candidate lists were built at, so that the resumed run builds the same lists.  The
+ * set-up (particles, neighbours, gradients, tables) is made again from the model; each body's
+ * particle count and a hash of its reference positions must match the checkpoint's.  run.c
+ * adds the run's own records (output times, time series, the files' lengths). */
+#include <errno.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "checkpoint.h"
+
+static const char MAGIC[8] = {'S', 'P', 'H', 'C', 'K', 'P', 'T', '\n'};
+enum { VERSION = 1 };
+
+/* ------------------------------------------------------------------ writing */
+
+static void put_raw(sph_ckpt_writer *w, const void *data, size_t bytes)
+{
+    if (!w->bad && bytes && fwrite(data, 1, bytes, w->f) != bytes)
+        w->bad = errno ? errno : EIO;
+}
+
+static void put_u32(sph_ckpt_writer *w, uint32_t v) { put_raw(w, &v, sizeof v); }
+
+int sph_ckpt_create(sph_ckpt_writer *w, const char *path)
+{
+    memset(w, 0, sizeof *w);
+    const size_t len = strlen(path);
+    w->path = malloc(len + 1);
+    w->tmp = malloc(len + 8);
+    if (!w->path || !w->tmp) {
+        free(w->path), free(w->tmp);
+        sph_error("cannot write %s: out of memory", path);
+        return -1;
+    }
+    memcpy(w->path, path, len + 1);
+    snprintf(w->tmp, len + 8, "%s.part", path);
+    w->f = fopen(w->tmp, "wb");
+    if (!w->f) {
+        sph_error("cannot write %s: %s", w->tmp, strerror(errno));
+        free(w->path), free(w->tmp);
+        return -1;
+    }
+    errno = 0;
+    put_raw(w, MAGIC, sizeof MAGIC);
+    put_u32(w, VERSION);
+    put_u32(w, 0x01020304u);
+    put_u32(w, (uint32_t)sizeof(double));
+    put_u32(w, (uint32_t)sizeof(long));
+    return 0;
+}
+
+void sph_ckpt_put(sph_ckpt_writer *w, const char *name, const void *data, size_t bytes)
+{
+    const uint64_t n = bytes;
+    put_u32(w, (uint32_t)strlen(name));
+    put_raw(w, name, strlen(name));
+    put_raw(w, &n, sizeof n);
+    put_raw(w, data, bytes);
+}
+
+int sph_ckpt_commit(sph_ckpt_writer *w)
+{
+    sph_ckpt_put(w, "end", NULL, 0);
+    if (fflush(w->f) && !w->bad)
+        w->bad = errno ? errno : EIO;
+    if (fclose(w->f) && !w->bad)
+        w->bad = errno ? errno : EIO;
+    if (!w->bad && rename(w->tmp, w->path))
+        w->bad = errno ? errno : EIO;
+    if (w->bad) {
+        sph_error("cannot write %s: %s", w->tmp, strerror(w->bad));
+        remove(w->tmp);
+    }
+    free(w->path), free(w->tmp);
+    return w->bad ? -1 : 0;
+}
+
+/* ------------------------------------------------------------------ reading */
+
+static int corrupt(const char *path, const char *why)
+{
+    sph_error("cannot restart from %s: %s", path, why);
+    return -1;
+}
+
+/* Walks the records: 0 when they are well formed and end with "end". */
+static int walk(const sph_ckpt *c)
+{
+    size_t at = sizeof MAGIC + 4 * sizeof(uint32_t);
+    for (;;) {
+        uint32_t nl;
+        uint64_t nb;
+        if (c->len - at < sizeof nl)
+            return -1;
+        memcpy(&nl, c->buf + at, sizeof nl);
+        at += sizeof nl;
+        if (c->len - at < (size_t)nl + sizeof nb)
+            return -1;
+        const int end = nl == 3 && !memcmp(c->buf + at, "end", 3);
+        at += nl;
+        memcpy(&nb, c->buf + at, sizeof nb);
+        at += sizeof nb;
+        if (c->len - at < nb)
+            return -1;
+        at += (size_t)nb;
+        if (end)
+            return at == c->len ? 0 : -1;
+    }
+}
+
+int sph_ckpt_read(sph_ckpt *c, const char *path)
+{
+    memset(c, 0, sizeof *c);
+    c->path = path;
+    struct stat st; /* (before opening: opening a pipe waits for a writer) */
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
+        return corrupt(path, "not a regular file");
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return corrupt(path, strerror(errno));
+    const long len = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
+    c->buf = len > 0 ? malloc((size_t)len) : NULL;
+    const int got = c->buf && fseek(f, 0, SEEK_SET) == 0 &&
+                    fread(c->buf, 1, (size_t)len, f) == (size_t)len;
+    fclose(f);
+    if (!got) {
+        sph_ckpt_free(c);
+        return corrupt(path, len <= 0 ? "the file is empty" : "it could not be read");
+    }
+    c->len = (size_t)len;
+    uint32_t head[4];
+    if (c->len < sizeof MAGIC + sizeof head || memcmp(c->buf, MAGIC, sizeof MAGIC)) {
+        sph_ckpt_free(c);
+        return corrupt(path, "not a checkpoint of an sphc program");
+    }
+    memcpy(head, c->buf + sizeof MAGIC, sizeof head);
+    const char *why = head[0] != VERSION ? "it was written by another version of sphc"
+                      : head[1] != 0x01020304u || head[2] != sizeof(double) ||
+                              head[3] != sizeof(long)
+                          ? "it was written on a machine of another kind (byte order or sizes)"
+                      : walk(c) ? "it is cut short or damaged"
+                                : NULL;
+    if (why) {
+        sph_ckpt_free(c);
+        return corrupt(path, why);
+    }
+    return 0;
+}
+
+const void *sph_ckpt_find(const sph_ckpt *c, const char *name, size_t *bytes)
+{
+    size_t at = sizeof MAGIC + 4 * sizeof(uint32_t);
+    const size_t want = strlen(name);
+    for (;;) { /* (walk has checked every length) */
+        uint32_t nl;
+        uint64_t nb;
+        memcpy(&nl, c->buf + at, sizeof nl);
+        const unsigned char *key = c->buf + at + sizeof nl;
+        at += sizeof nl + nl;
+        memcpy(&nb, c->buf + at, sizeof nb);
+        at += sizeof nb;
+        if (nl == want && !memcmp(key, name, want)) {
+            *bytes = (size_t)nb;
+            return c->buf + at;
+        }
+        if (nl == 3 && !memcmp(key, "end", 3))
+            return NULL;
+        at += (size_t)nb;
+    }
+}
+
+int sph_ckpt_take(const sph_ckpt *c, const char *name, void *data, size_t bytes)
+{
+    size_t got;
+    const void *p = sph_ckpt_find(c, name, &got);
+    if (!p || got != bytes) {
+        sph_error("cannot restart from %s: %s '%s'%s (is it a checkpoint of this model?)",
+                  c->path, p ? "the size of" : "no record", name, p ? " differs" : "");
+        return -1;
+    }
+    if (bytes)
+        memcpy(data, p, bytes);
+    return 0;
+}
+
+void sph_ckpt_free(sph_ckpt *c)
+{
+    free(c->buf);
+    c->buf = NULL;
+    c->len = 0;
+}
+
+/* ------------------------------------------------------------------ the simulation */
+
+/* FNV-1a over the reference positions: the same particles in the same order. */
+static uint64_t positions_hash(const sph_body *b)
+{
+    const unsigned char *p = (const unsigned char *)b->X;
+    uint64_t h = 1469598103934665603ull;
+    for (size_t k = 0; k < (size_t)b->n * (size_t)b->dim * sizeof(double); k++)
+        h = (h ^ p[k]) * 1099511628211ull;
+    return h;
+}
+
+/* What identifies body b's particles: count, dimension, state values, and the hash. */
+static void body_shape(const sph_body *b, uint64_t shape[4])
+{
+    shape[0] = (uint64_t)b->n;
+    shape[1] = (uint64_t)b->dim;
+    shape[2] = (uint64_t)b->desc->nstate;
+    shape[3] = positions_hash(b);
+}
+
+static void key(char *out, size_t len, int body, const char *what)
+{
+    snprintf(out, len, "body.%d.%s", body, what);
+}
+
+void sph_sim_checkpoint(sph_ckpt_writer *w, const sph_sim *s)
+{
+    char name[96];
+    sph_ckpt_put(w, "model", s->m->name, strlen(s->m->name));
+    const double clock[3] = {s->t, s->dt, s->dt_factor};
+    sph_ckpt_put(w, "sim.clock", clock, sizeof clock);
+    sph_ckpt_put(w, "sim.step", &s->step, sizeof s->step);
+    for (int i = 0; i < s->nbodies; i++) {
+        sph_body *b = &s->bodies[i];
+        uint64_t shape[4];
+        body_shape(b, shape);
+        key(name, sizeof name, i, "shape");
+        sph_ckpt_put(w, name, shape, sizeof shape);
+        const double sums[5] = {b->vmax2, b->amax2, b->lam2min, b->visc_rate,
+                                b->visc_dissipated};
+        key(name, sizeof name, i, "sums");
+        sph_ckpt_put(w, name, sums, sizeof sums);
+        sph_state_array arr[SPH_STATE_ARRAYS];
+        const int na = sph_body_state_arrays(b, b->desc->nstate, arr);
+        for (int k = 0; k < na; k++) {
+            key(name, sizeof name, i, arr[k].name);
+            sph_ckpt_put(w, name, arr[k].data, arr[k].bytes);
+        }
+    }
+    double sums[3];
+    const double *x0;
+    size_t nx0;
+    if (sph_contact_checkpoint(s, sums, &x0, &nx0)) {
+        sph_ckpt_put(w, "contact.sums", sums, sizeof sums);
+        sph_ckpt_put(w, "contact.x0", x0, nx0 * sizeof *x0);
+    }
+}
+
+/* Body i's particles against the checkpoint's: 0 when they are the same. */
+static int same_particles(const sph_ckpt *c, const sph_body *b, int i)
+{
+    char name[96];
+    uint64_t here[4], there[4];
+    size_t bytes;
+    key(name, sizeof name, i, "shape");
+    const void *p = sph_ckpt_find(c, name, &bytes);
+    body_shape(b, here);
+    if (!p || bytes != sizeof there) {
+        sph_error("cannot restart from %s: it has no body %d ('%s'), or is of another model",
+                  c->path, i + 1, b->desc->name);
+        return -1;
+    }
+    memcpy(there, p, sizeof there);
+    if (here[0] != there[0] || here[1] != there[1] || here[2] != there[2]) {
+        sph_error("cannot restart from %s: body '%s' has %llu particles in %lluD with %llu state "
+                  "values there, %llu in %lluD with %llu here (is it a checkpoint of this model?)",
+                  c->path, b->desc->name, (unsigned long long)there[0],
+                  (unsigned long long)there[1], (unsigned long long)there[2],
+                  (unsigned long long)here[0], (unsigned long long)here[1],
+                  (unsigned long long)here[2]);
+        return -1;
+    }
+    if (here[3] != there[3]) {
+        sph_error("cannot restart from %s: body '%s' has its %llu particles in other places "
+                  "there (is it a checkpoint of this model, at this resolution?)",
+                  c->path, b->desc->name, (unsigned long long)here[0]);
+        return -1;
+    }
+    return 0;
+}
+
+static int restore_body(const sph_ckpt *c, sph_body *b, int i)
+{
+    char name[96];
+    double sums[5];
+    key(name, sizeof name, i, "sums");
+    if (same_particles(c, b, i) || sph_ckpt_take(c, name, sums, sizeof sums))
+        return -1;
+    b->vmax2 = sums[0], b->amax2 = sums[1], b->lam2min = sums[2];
+    b->visc_rate = sums[3], b->visc_dissipated = sums[4];
+    sph_state_array arr[SPH_STATE_ARRAYS];
+    const int na = sph_body_state_arrays(b, b->desc->nstate, arr);
+    for (int k = 0; k < na; k++) {
+        key(name, sizeof name, i, arr[k].name);
+        if (sph_ckpt_take(c, name, arr[k].data, arr[k].bytes))
+            return -1;
+    }
+    return 0;
+}
+
+int sph_sim_restore(const sph_ckpt *c, sph_sim *s)
+{
+    size_t bytes;
+    const char *model = sph_ckpt_find(c, "model", &bytes);
+    if (!model || bytes != strlen(s->m->name) || memcmp(model, s->m->name, bytes)) {
+        sph_error("cannot restart from %s: it is a checkpoint of %s%.*s%s, not of '%s'", c->path,
+                  model ? "the model '" : "another model", model ? (int)bytes : 0,
+                  model ? model : "", model ? "'" : "", s->m->name);
+        return -1;
+    }
+    double clock[3];
+    if (sph_ckpt_take(c, "sim.clock", clock, sizeof clock) ||
+        sph_ckpt_take(c, "sim.step", &s->step, sizeof s->step))
+        return -1;
+    s->t = clock[0], s->dt = clock[1], s->dt_factor = clock[2];
+    for (int i = 0; i < s->nbodies; i++)
+        if (restore_body(c, &s->bodies[i], i))
+            return -1;
+    if (!s->m->contact)
+        return 0;
+    double sums[3];
+    const double *x0 = sph_ckpt_find(c, "contact.x0", &bytes);
+    if (sph_ckpt_take(c, "contact.sums", sums, sizeof sums))
+        return -1;
+    return sph_contact_restore(s, sums, x0, bytes / sizeof(double));
+}

@@ -1,0 +1,40 @@
+/* checkpoint.h — a run's state in one file, and read back (checkpoint.c). */
+#ifndef SPHRT_CHECKPOINT_H
+#define SPHRT_CHECKPOINT_H
+
+#include <stdio.h>
+
+#include "internal.h"
+
+/* Writing: records (a name and bytes) into PATH.part, renamed to PATH at the commit.  An I/O
+ * error is reported at the commit, which then returns -1 and leaves the previous PATH. */
+typedef struct {
+    FILE *f;
+    char *path, *tmp;
+    int bad; /* errno of the first failed write */
+} sph_ckpt_writer;
+int sph_ckpt_create(sph_ckpt_writer *w, const char *path);
+void sph_ckpt_put(sph_ckpt_writer *w, const char *name, const void *data, size_t bytes);
+int sph_ckpt_commit(sph_ckpt_writer *w);
+
+/* Reading: the whole file, checked (format, machine, complete); -1 after reporting. */
+typedef struct {
+    const char *path;
+    unsigned char *buf;
+    size_t len;
+} sph_ckpt;
+int sph_ckpt_read(sph_ckpt *c, const char *path);
+/* The record called name (*bytes long), or NULL. */
+const void *sph_ckpt_find(const sph_ckpt *c, const char *name, size_t *bytes);
+/* The record called name into data, which it must fill exactly; -1 after reporting. */
+int sph_ckpt_take(const sph_ckpt *c, const char *name, void *data, size_t bytes);
+void sph_ckpt_free(sph_ckpt *c);
+
+/* The simulation's records: its clock, every body's state and sums, the contact's.  A device
+ * target copies its state to the host first (sph_model.copy_state). */
+void sph_sim_checkpoint(sph_ckpt_writer *w, const sph_sim *s);
+/* The same into s, set up from the same model: -1 after reporting when the checkpoint is of
+ * another model or resolution.  A device target then copies the state to the device. */
+int sph_sim_restore(const sph_ckpt *c, sph_sim *s);
+
+#endif
