@@ -2,10 +2,12 @@
  *
  * Exit codes: 0 success; 1 an expectation of the model failed; 2 bad command line;
  * 3 the run went unstable (stopped by the monitor; the last good output is kept);
- * 4 output could not be written or set-up failed. */
+ * 4 output could not be written or set-up failed; 6 a run with checkpoints stopped by a
+ * signal, after writing one (5, a CUDA failure, is sph_cuda.h's). */
 #include <errno.h>
 #include <math.h>
 #include <omp.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -64,6 +66,27 @@ static double min_h_over_c0(const run_state *r)
 static double dt_floor(const run_state *r)
 {
     return r->m->dt_fixed > 0 ? 0.0 : r->m->dtmin_coef * min_h_over_c0(r);
+}
+
+/* A run with checkpoints that gets SIGTERM (a batch system's notice) or SIGINT stops at the
+ * end of its current batch of steps, writes a checkpoint and exits (SPH_EXIT_STOPPED); a
+ * second signal ends it at once. */
+static volatile sig_atomic_t stop_signal;
+
+static void on_stop_signal(int sig)
+{
+    stop_signal = sig;
+}
+
+static void catch_stop_signals(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_stop_signal;
+    sa.sa_flags = SA_RESETHAND; /* the second one: the default action */
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGTERM, &sa, NULL);
+    sigaction(SIGINT, &sa, NULL);
 }
 
 /* ------------------------------------------------------------------ output */
@@ -333,9 +356,16 @@ static int write_summary(run_state *r, double wall, long particles, long pairs, 
     for (int i = 0; i < s->nbodies; i++)
         body_summary(&j, &s->bodies[i]);
     sph_json_end_array(&j);
-    *failed = r->unstable[0] ? 0
-                             : sph_expect_evaluate(r->m, &r->rec, &j, r->opt.quiet, r->errors,
-                                                   sizeof r->errors);
+    if (stop_signal) { /* a run cut short: its expectations are for the whole run */
+        sph_json_key_object(&j, "stopped");
+        sph_json_str(&j, "signal", stop_signal == SIGINT ? "SIGINT" : "SIGTERM");
+        sph_json_num(&j, "time", s->t);
+        sph_json_end_object(&j);
+    }
+    *failed = r->unstable[0] || stop_signal
+                  ? 0
+                  : sph_expect_evaluate(r->m, &r->rec, &j, r->opt.quiet, r->errors,
+                                        sizeof r->errors);
     return sph_json_close(&j);
 }
 
@@ -663,9 +693,11 @@ static int time_loop(run_state *r)
             r->check_seconds += sph_wall_time() - w0;
         }
         sph_progress_update(&prog, s->t, s->dt, s->step);
+        if (stop_signal) /* (after this output, at most CHECK_EVERY steps after the signal) */
+            break;
     }
     sph_progress_finish(&prog);
-    return r->unstable[0] ? 1 : 0;
+    return r->unstable[0] ? 1 : stop_signal ? 2 : 0;
 }
 
 static int setup(run_state *r, long *particles, long *pairs)
@@ -746,6 +778,8 @@ int sph_main(const sph_model *m, int argc, char **argv)
     r.t_frames = r.opt.t_frames > 0 ? r.opt.t_frames : r.t_out;
     if (too_many_outputs(&r))
         return SPH_EXIT_OPTIONS;
+    if (r.opt.t_checkpoint > 0)
+        catch_stop_signals();
     r.wall0 = sph_wall_time();
     r.next_out = r.t_out;
     r.next_checkpoint = r.opt.t_checkpoint;
@@ -768,7 +802,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
             return SPH_EXIT_SETUP;
     }
     int state = time_loop(&r);
-    if (state == 0 && r.opt.t_checkpoint > 0 && write_checkpoint(&r)) /* to go on from */
+    if (state != 1 && r.opt.t_checkpoint > 0 && write_checkpoint(&r)) /* to go on from */
         state = -1;
     if (state < 0)
         return SPH_EXIT_SETUP;
@@ -789,6 +823,12 @@ int sph_main(const sph_model *m, int argc, char **argv)
         sph_profile_print(stdout, m->name, r.sim.step, &t);
     }
     double ps = (double)particles * (double)r.sim.step;
+    if (state == 2) {
+        sph_error("stopped by %s at t = %g s (step %ld); the checkpoint %s/checkpoint.bin "
+                  "resumes the run (--restart)", stop_signal == SIGINT ? "SIGINT" : "SIGTERM",
+                  r.sim.t, r.sim.step, r.opt.out_dir);
+        return SPH_EXIT_STOPPED;
+    }
     if (state == 1) {
         sph_error("the run went unstable at %s", r.unstable);
         sph_note("the last good output is in %s/ (t = %g s)", r.opt.out_dir,
