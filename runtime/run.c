@@ -792,6 +792,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
     if (r.opt.restart) {
         if (restart(&r, &ckpt))
             return SPH_EXIT_SETUP;
+        r.setup_seconds += sph_wall_time() - r.wall0; /* (the run's set-ups, both) */
     } else {
         sync_host(&r);
         if (initial_state_bad(&r) || open_outputs(&r))
