@@ -5,6 +5,7 @@
 # one thread, so that every sum has one order) and report the same steps and expectations
 # in summary.json.  A checkpoint of another model or resolution, and a damaged one, are
 # refused (-DOTHER=a program of another model).
+include(${CMAKE_CURRENT_LIST_DIR}/same_outputs.cmake)
 file(REMOVE_RECURSE ${OUT})
 function(run)
   execute_process(COMMAND ${PROGRAM} --quiet --threads 1 ${ARGS} ${ARGN}
@@ -17,26 +18,7 @@ run(--end ${END} --out ${OUT}/whole)
 run(--end ${MID} --checkpoint ${MID} --out ${OUT}/part)
 run(--end ${END} --restart ${OUT}/part/checkpoint.bin)
 
-file(GLOB_RECURSE files RELATIVE ${OUT}/whole ${OUT}/whole/*.csv ${OUT}/whole/*.vtu
-     ${OUT}/whole/*.pvd)
-list(LENGTH files n)
-if(n LESS 3)
-  message(FATAL_ERROR "the whole run wrote only ${files}")
-endif()
-foreach(f ${files})
-  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/whole/${f} ${OUT}/part/${f}
-                  RESULT_VARIABLE differ)
-  if(differ)
-    message(FATAL_ERROR "the resumed run's ${f} differs from the whole run's")
-  endif()
-endforeach()
-file(GLOB_RECURSE extra RELATIVE ${OUT}/part ${OUT}/part/*.csv ${OUT}/part/*.vtu
-     ${OUT}/part/*.pvd)
-list(LENGTH extra n_part)
-list(LENGTH files n_whole)
-if(NOT n_part EQUAL n_whole)
-  message(FATAL_ERROR "the resumed run wrote ${n_part} files, the whole run ${n_whole}")
-endif()
+same_outputs(${OUT}/whole ${OUT}/part)
 # summary.json: the same steps, time and expectation results (not the timings)
 foreach(run whole part)
   file(STRINGS ${OUT}/${run}/summary.json lines
@@ -64,4 +46,4 @@ if(DEFINED OTHER)
   refused(${OTHER} "error: cannot restart from .*checkpoint.bin: it is a checkpoint of the model '[a-z0-9_]+', not of '[a-z0-9_]+'"
           --restart ${OUT}/part/checkpoint.bin --out ${OUT}/other_out)
 endif()
-message(STATUS "${n} files the same after the restart at ${MID} s")
+message(STATUS "${compared} files the same after the restart at ${MID} s")

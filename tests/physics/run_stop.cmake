@@ -2,6 +2,7 @@
 # exits with 6; resumed from it, it writes exactly what the whole run writes:
 #   -DPROGRAM= -DOUT= -DEND= -DAFTER=seconds [-DARGS=...]
 # The whole run must take well over AFTER seconds (the signal comes while it steps).
+include(${CMAKE_CURRENT_LIST_DIR}/same_outputs.cmake)
 file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${PROGRAM} --quiet --threads 1 ${ARGS} --end ${END} --out ${OUT}/whole
                 RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
@@ -20,14 +21,5 @@ string(REGEX MATCH "t = [0-9.e-]+ s" when "${err}")
 execute_process(COMMAND ${PROGRAM} --quiet --threads 1 ${ARGS} --end ${END}
                         --restart ${OUT}/part/checkpoint.bin
                 RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
-file(GLOB_RECURSE files RELATIVE ${OUT}/whole ${OUT}/whole/*.csv ${OUT}/whole/*.vtu
-     ${OUT}/whole/*.pvd)
-foreach(f ${files})
-  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/whole/${f} ${OUT}/part/${f}
-                  RESULT_VARIABLE differ)
-  if(differ)
-    message(FATAL_ERROR "the resumed run's ${f} differs from the whole run's")
-  endif()
-endforeach()
-list(LENGTH files n)
-message(STATUS "stopped at ${when}, resumed: the same ${n} files")
+same_outputs(${OUT}/whole ${OUT}/part)
+message(STATUS "stopped at ${when}, resumed: the same ${compared} files")
