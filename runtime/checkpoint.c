@@ -5,8 +5,9 @@
  * a header that names the format and this machine's byte order and sizes:
  *
  *     "SPHCKPT\n"  u32 version  u32 0x01020304  u32 sizeof(double)  u32 sizeof(long)
- *     { u32 name length, name, u64 length, bytes } ...  "end" record
+ *     { u32 name length, name, pad, u64 length, bytes, pad } ...  "end" record
  *
+ * each pad up to a multiple of 8 bytes, so that a record's bytes read in place as doubles,
  * so a checkpoint is read back on a machine of the same kind only, which the header checks.
  * It is written beside its final name and renamed over it once complete: a run stopped while
  * writing keeps its previous checkpoint.  The simulation's part (sph_sim_checkpoint): each
@@ -66,13 +67,20 @@ int sph_ckpt_create(sph_ckpt_writer *w, const char *path)
     return 0;
 }
 
+/* Bytes to the next multiple of 8 after x. */
+static size_t pad(size_t x) { return (8 - x % 8) % 8; }
+
 void sph_ckpt_put(sph_ckpt_writer *w, const char *name, const void *data, size_t bytes)
 {
+    static const char zeros[8] = {0};
     const uint64_t n = bytes;
-    put_u32(w, (uint32_t)strlen(name));
-    put_raw(w, name, strlen(name));
+    const size_t nl = strlen(name);
+    put_u32(w, (uint32_t)nl);
+    put_raw(w, name, nl);
+    put_raw(w, zeros, pad(sizeof(uint32_t) + nl));
     put_raw(w, &n, sizeof n);
     put_raw(w, data, bytes);
+    put_raw(w, zeros, pad(bytes));
 }
 
 int sph_ckpt_commit(sph_ckpt_writer *w)
@@ -100,29 +108,44 @@ static int corrupt(const char *path, const char *why)
     return -1;
 }
 
-/* Walks the records: 0 when they are well formed and end with "end". */
+/* The record at offset *at (a multiple of 8): its name and bytes, *at moved past it; -1 when
+ * it does not fit in the file. */
+typedef struct {
+    const unsigned char *name, *data;
+    size_t nl, bytes;
+} record;
+
+static int next_record(const sph_ckpt *c, size_t *at, record *r)
+{
+    uint32_t nl;
+    uint64_t nb;
+    if (c->len - *at < sizeof nl)
+        return -1;
+    memcpy(&nl, c->buf + *at, sizeof nl);
+    const size_t head = sizeof nl + (size_t)nl + pad(sizeof nl + (size_t)nl);
+    if (c->len - *at < head + sizeof nb)
+        return -1;
+    r->name = c->buf + *at + sizeof nl, r->nl = nl;
+    memcpy(&nb, c->buf + *at + head, sizeof nb);
+    *at += head + sizeof nb;
+    if (c->len - *at < nb || c->len - *at - nb < pad((size_t)nb))
+        return -1;
+    r->data = c->buf + *at, r->bytes = (size_t)nb;
+    *at += (size_t)nb + pad((size_t)nb);
+    return 0;
+}
+
+static int is_end(const record *r) { return r->nl == 3 && !memcmp(r->name, "end", 3); }
+
+/* Walks the records: 0 when they are well formed and end with "end" at the file's end. */
 static int walk(const sph_ckpt *c)
 {
     size_t at = sizeof MAGIC + 4 * sizeof(uint32_t);
-    for (;;) {
-        uint32_t nl;
-        uint64_t nb;
-        if (c->len - at < sizeof nl)
-            return -1;
-        memcpy(&nl, c->buf + at, sizeof nl);
-        at += sizeof nl;
-        if (c->len - at < (size_t)nl + sizeof nb)
-            return -1;
-        const int end = nl == 3 && !memcmp(c->buf + at, "end", 3);
-        at += nl;
-        memcpy(&nb, c->buf + at, sizeof nb);
-        at += sizeof nb;
-        if (c->len - at < nb)
-            return -1;
-        at += (size_t)nb;
-        if (end)
+    record r;
+    while (!next_record(c, &at, &r))
+        if (is_end(&r))
             return at == c->len ? 0 : -1;
-    }
+    return -1;
 }
 
 int sph_ckpt_read(sph_ckpt *c, const char *path)
@@ -168,22 +191,13 @@ const void *sph_ckpt_find(const sph_ckpt *c, const char *name, size_t *bytes)
 {
     size_t at = sizeof MAGIC + 4 * sizeof(uint32_t);
     const size_t want = strlen(name);
-    for (;;) { /* (walk has checked every length) */
-        uint32_t nl;
-        uint64_t nb;
-        memcpy(&nl, c->buf + at, sizeof nl);
-        const unsigned char *key = c->buf + at + sizeof nl;
-        at += sizeof nl + nl;
-        memcpy(&nb, c->buf + at, sizeof nb);
-        at += sizeof nb;
-        if (nl == want && !memcmp(key, name, want)) {
-            *bytes = (size_t)nb;
-            return c->buf + at;
+    record r;
+    while (!next_record(c, &at, &r) && !is_end(&r)) /* (walk has checked them) */
+        if (r.nl == want && !memcmp(r.name, name, want)) {
+            *bytes = r.bytes;
+            return r.data; /* (8-aligned: the buffer is malloc's, the offset a multiple of 8) */
         }
-        if (nl == 3 && !memcmp(key, "end", 3))
-            return NULL;
-        at += (size_t)nb;
-    }
+    return NULL;
 }
 
 int sph_ckpt_take(const sph_ckpt *c, const char *name, void *data, size_t bytes)

@@ -377,10 +377,10 @@ enum { RUN_TIMES = 10 }; /* the doubles of the record "run.times" */
 static int checkpoint_due(run_state *r)
 {
     const double t = r->sim.t, eps = 1e-9 * r->t_out;
-    if (!(r->opt.t_checkpoint > 0) || t < r->next_checkpoint - eps)
+    const double every = r->opt.t_checkpoint;
+    if (!(every > 0) || t < r->next_checkpoint - eps)
         return 0;
-    while (r->next_checkpoint <= t + eps)
-        r->next_checkpoint += r->opt.t_checkpoint;
+    r->next_checkpoint = (floor((t + eps) / every) + 1) * every; /* (at worst: every output) */
     return 1;
 }
 
@@ -465,7 +465,8 @@ static int take_series(const sph_ckpt *c, const char *name, sph_series *q)
 {
     size_t bytes;
     const double *p = sph_ckpt_find(c, name, &bytes);
-    const size_t n = p && bytes >= sizeof(double) ? (size_t)p[0] : 0;
+    const double count = p && bytes >= sizeof(double) ? p[0] : -1;
+    const size_t n = count >= 0 && count <= (double)bytes ? (size_t)count : 0;
     if (!p || bytes != (1 + n + n * (size_t)q->width) * sizeof(double)) {
         sph_error("cannot restart from %s: no record '%s' of its size (is it a checkpoint of "
                   "this model?)", c->path, name);
@@ -523,7 +524,17 @@ static int resume_run(const sph_ckpt *c, run_state *r)
         if (take_series(c, name, &r->rec.measures[q]))
             return -1;
     }
-    r->next_out = times[0], r->next_frame = times[1], r->next_checkpoint = times[2];
+    /* The next output is at t or after it; a frame or checkpoint time before t is due at the
+     * next output, as it would be in the whole run (and one far behind would keep the loop
+     * that adds intervals to it from ending). */
+    const double t = r->sim.t, eps = 1e-9 * r->t_out;
+    if (!(times[0] >= t - eps && times[0] < INFINITY) || !isfinite(times[1]) ||
+        !isfinite(times[2])) {
+        sph_error("cannot restart from %s: its next output times are damaged", c->path);
+        return -1;
+    }
+    r->next_out = times[0], r->next_frame = fmax(times[1], t);
+    r->next_checkpoint = fmax(times[2], t);
     r->step_seconds = times[3], r->check_seconds = times[4], r->output_seconds = times[5];
     r->setup_seconds = times[6], r->wall_before = times[7];
     r->stretch_seen = times[8], r->mon.e_ref = times[9];
