@@ -7,7 +7,9 @@
  *     "SPHCKPT\n"  u32 version  u32 0x01020304  u32 sizeof(double)  u32 sizeof(long)
  *     { u32 name length, name, pad, u64 length, bytes, pad } ...  "end" record
  *
- * each pad up to a multiple of 8 bytes, so that a record's bytes read in place as doubles,
+ * each pad up to a multiple of 8 bytes, so that a record's bytes read in place as doubles;
+ * the "end" record holds the FNV-1a hash of every byte before it, which reading checks (a
+ * damaged file is refused rather than resumed from a state it never had),
  * so a checkpoint is read back on a machine of the same kind only, which the header checks.
  * It is written beside its final name and renamed over it once complete: a run stopped while
  * writing keeps its previous checkpoint.  The simulation's part (sph_sim_checkpoint): each
@@ -29,11 +31,24 @@
 static const char MAGIC[8] = {'S', 'P', 'H', 'C', 'K', 'P', 'T', '\n'};
 enum { VERSION = 1 };
 
+/* FNV-1a, 64 bits, of n more bytes after h (FNV_START at first). */
+#define FNV_START 1469598103934665603ull
+static uint64_t fnv(uint64_t h, const void *data, size_t n)
+{
+    const unsigned char *p = data;
+    for (size_t k = 0; k < n; k++)
+        h = (h ^ p[k]) * 1099511628211ull;
+    return h;
+}
+
 /* ------------------------------------------------------------------ writing */
 
 static void put_raw(sph_ckpt_writer *w, const void *data, size_t bytes)
 {
-    if (!w->bad && bytes && fwrite(data, 1, bytes, w->f) != bytes)
+    if (!bytes)
+        return;
+    w->hash = fnv(w->hash, data, bytes);
+    if (!w->bad && fwrite(data, 1, bytes, w->f) != bytes)
         w->bad = errno ? errno : EIO;
 }
 
@@ -59,6 +74,7 @@ int sph_ckpt_create(sph_ckpt_writer *w, const char *path)
         return -1;
     }
     errno = 0;
+    w->hash = FNV_START;
     put_raw(w, MAGIC, sizeof MAGIC);
     put_u32(w, VERSION);
     put_u32(w, 0x01020304u);
@@ -85,7 +101,8 @@ void sph_ckpt_put(sph_ckpt_writer *w, const char *name, const void *data, size_t
 
 int sph_ckpt_commit(sph_ckpt_writer *w)
 {
-    sph_ckpt_put(w, "end", NULL, 0);
+    const uint64_t hash = w->hash; /* (of every byte before the "end" record) */
+    sph_ckpt_put(w, "end", &hash, sizeof hash);
     if (fflush(w->f) && !w->bad)
         w->bad = errno ? errno : EIO;
     if (fclose(w->f) && !w->bad)
@@ -137,14 +154,23 @@ static int next_record(const sph_ckpt *c, size_t *at, record *r)
 
 static int is_end(const record *r) { return r->nl == 3 && !memcmp(r->name, "end", 3); }
 
-/* Walks the records: 0 when they are well formed and end with "end" at the file's end. */
+/* Walks the records: 0 when they are well formed and end with "end" at the file's end, whose
+ * hash is that of the bytes before it. */
 static int walk(const sph_ckpt *c)
 {
-    size_t at = sizeof MAGIC + 4 * sizeof(uint32_t);
+    size_t at = sizeof MAGIC + 4 * sizeof(uint32_t), start = at;
     record r;
-    while (!next_record(c, &at, &r))
-        if (is_end(&r))
-            return at == c->len ? 0 : -1;
+    while (!next_record(c, &at, &r)) {
+        if (!is_end(&r)) {
+            start = at;
+            continue;
+        }
+        uint64_t hash;
+        if (at != c->len || r.bytes != sizeof hash)
+            return -1;
+        memcpy(&hash, r.data, sizeof hash);
+        return hash == fnv(FNV_START, c->buf, start) ? 0 : -1;
+    }
     return -1;
 }
 
@@ -223,14 +249,10 @@ void sph_ckpt_free(sph_ckpt *c)
 
 /* ------------------------------------------------------------------ the simulation */
 
-/* FNV-1a over the reference positions: the same particles in the same order. */
+/* The hash of the reference positions: the same particles in the same order. */
 static uint64_t positions_hash(const sph_body *b)
 {
-    const unsigned char *p = (const unsigned char *)b->X;
-    uint64_t h = 1469598103934665603ull;
-    for (size_t k = 0; k < (size_t)b->n * (size_t)b->dim * sizeof(double); k++)
-        h = (h ^ p[k]) * 1099511628211ull;
-    return h;
+    return fnv(FNV_START, b->X, (size_t)b->n * (size_t)b->dim * sizeof(double));
 }
 
 /* What identifies body b's particles: count, dimension, state values, and the hash. */

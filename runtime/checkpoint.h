@@ -2,6 +2,7 @@
 #ifndef SPHRT_CHECKPOINT_H
 #define SPHRT_CHECKPOINT_H
 
+#include <stdint.h>
 #include <stdio.h>
 
 #include "internal.h"
@@ -11,7 +12,8 @@
 typedef struct {
     FILE *f;
     char *path, *tmp;
-    int bad; /* errno of the first failed write */
+    int bad;       /* errno of the first failed write */
+    uint64_t hash; /* of the bytes written so far */
 } sph_ckpt_writer;
 int sph_ckpt_create(sph_ckpt_writer *w, const char *path);
 void sph_ckpt_put(sph_ckpt_writer *w, const char *name, const void *data, size_t bytes);
