@@ -29,7 +29,8 @@ if(NOT summary_whole STREQUAL summary_part)
   message(FATAL_ERROR "summary.json differs:\nwhole: ${summary_whole}\nresumed: ${summary_part}")
 endif()
 
-# Refused, with the reason and exit code 4: a checkpoint cut short, and one of another model.
+# Refused, with the reason and exit code 4: a checkpoint cut short, one with a byte changed
+# (its hash), and one of another model.
 file(SIZE ${OUT}/part/checkpoint.bin size)
 math(EXPR half "${size} / 2")
 execute_process(COMMAND head -c ${half} ${OUT}/part/checkpoint.bin OUTPUT_FILE ${OUT}/cut.bin)
@@ -42,6 +43,11 @@ function(refused program expect)
 endfunction()
 refused(${PROGRAM} "error: cannot restart from .*cut.bin: it is cut short or damaged"
         --restart ${OUT}/cut.bin --out ${OUT}/cut_out)
+execute_process(COMMAND ${CMAKE_COMMAND} -E copy ${OUT}/part/checkpoint.bin ${OUT}/flipped.bin)
+execute_process(COMMAND sh -c "printf 'x' | dd of=${OUT}/flipped.bin bs=1 seek=${half} conv=notrunc"
+                OUTPUT_QUIET ERROR_QUIET)
+refused(${PROGRAM} "error: cannot restart from .*flipped.bin: it is cut short or damaged"
+        --restart ${OUT}/flipped.bin --out ${OUT}/flipped_out)
 if(DEFINED OTHER)
   refused(${OTHER} "error: cannot restart from .*checkpoint.bin: it is a checkpoint of the model '[a-z0-9_]+', not of '[a-z0-9_]+'"
           --restart ${OUT}/part/checkpoint.bin --out ${OUT}/other_out)
