@@ -207,6 +207,7 @@ static int scene_setting(Model *m, const Setting *s)
     struct { const char *key; double *dst; } nums[] = {
         {"dp", &m->dp}, {"coefh", &m->coefh}, {"cfl", &m->cfl}, {"dtmin", &m->dtmin},
         {"dt", &m->dt}, {"end", &m->t_end}, {"output", &m->t_out},
+        {"checkpoint", &m->t_checkpoint},
     };
     for (size_t i = 0; i < sizeof nums / sizeof nums[0]; i++)
         if (!strcmp(s->key, nums[i].key))

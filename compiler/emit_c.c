@@ -737,6 +737,9 @@ void emit_model_desc(Emitter *E)
     if (model_has_crush(m))
         snprintf(lambda_on, sizeof lambda_on, "    .dt_lambda_on = %.17g,\n",
                  m->dt_mode == TIMESTEP_STRETCH ? 1.0 : fmin(1.0, m->cfl / SPH_CFL_CURRENT));
+    char checkpoint[64] = ""; /* (the scene's `checkpoint`) */
+    if (m->t_checkpoint > 0)
+        snprintf(checkpoint, sizeof checkpoint, "    .t_checkpoint = %.17g,\n", m->t_checkpoint);
     if (E->cuda) /* C++ warns where C does not */
         fputs("/* The descriptions name only the members a scene uses; the others are zero, as in "
               "C. */\n#pragma GCC diagnostic ignored \"-Wmissing-field-initializers\"\n\n", out);
@@ -750,7 +753,7 @@ void emit_model_desc(Emitter *E)
             "    .name = \"%s\",\n    .source = \"%s\",\n    .dim = %d,\n    .dp = %.17g,\n"
             "    .kernel = %s,\n    .coefh = %.17g,\n    .integrator = %s,\n    .cfl = %.17g,\n"
             "    .dtmin_coef = %.17g,\n    .dt_fixed = %.17g,\n    .t_end = %.17g,\n"
-            "    .t_out = %.17g,\n    .gravity = {%.17g, %.17g, %.17g},\n"
+            "    .t_out = %.17g,\n%s    .gravity = {%.17g, %.17g, %.17g},\n"
             "    .bodies = BODIES,\n    .nbodies = %d,\n    .expects = %s,\n    .nexpects = %d,\n"
             "    .compat_outputs = %d,\n%s%s"
             "    .velocity_bcs = model_velocity_bcs,\n    .step = model_step,\n"
@@ -759,7 +762,7 @@ void emit_model_desc(Emitter *E)
             m->name, source_basename(m->source), m->dim, m->dp,
             m->kernel == KERNEL_WENDLAND ? "SPH_WENDLAND" : "SPH_CUBIC", m->coefh,
             m->integrator == INTEGRATOR_VERLET ? "SPH_VERLET" : "SPH_SYMPLECTIC", m->cfl, m->dtmin,
-            m->dt, m->t_end, m->t_out, m->gravity[0], m->gravity[1], m->gravity[2], m->nbodies,
+            m->dt, m->t_end, m->t_out, checkpoint, m->gravity[0], m->gravity[1], m->gravity[2], m->nbodies,
             m->nexpects ? "EXPECTS" : "NULL", m->nexpects, m->compat_outputs,
             lambda_on,
             model_has_contact(m) ? "    .contact = &CONTACT,\n" : "",

@@ -123,6 +123,7 @@ typedef struct {
     const char *source;   /* model file */
     int dim;
     double dp, coefh, cfl, dtmin, dt, t_end, t_out;
+    double t_checkpoint;  /* scene `checkpoint`: the interval of checkpoints, 0 none */
     KernelKind kernel;
     IntegratorKind integrator;
     int single;           /* precision single: the pair passes' arrays in float */

@@ -71,6 +71,8 @@ void model_dump(const Model *m, FILE *out)
             m->single ? "single" : "double");
     if (model_has_contact(m))
         fprintf(out, "  contact between the bodies: stiffness multiplier %g\n", m->contact);
+    if (m->t_checkpoint > 0)
+        fprintf(out, "  checkpoints every %g s\n", m->t_checkpoint);
     if (m->compat_outputs)
         fputs("  outputs: also SoliDualSPHysics' DeformStruc_Energies.csv and "
               "MeasuringPlData_MK<mk>_PL<k>.csv\n", out);

@@ -25,7 +25,8 @@ typedef struct {
     double t_end, t_out;
     double next_out;             /* the next output time */
     double t_frames, next_frame; /* particle files every t_frames (at output times) */
-    double next_checkpoint;      /* --checkpoint: the next one at the first output from then */
+    double t_checkpoint;         /* --checkpoint or the scene's: the interval, 0 none; */
+    double next_checkpoint;      /* the next one at the first output from then */
     double wall_before;          /* a resumed run: the wall time of the run up to its checkpoint, */
     double t_resumed;            /* and the time and step it resumed at */
     long step_resumed;
@@ -377,7 +378,7 @@ enum { RUN_TIMES = 10 }; /* the doubles of the record "run.times" */
 static int checkpoint_due(run_state *r)
 {
     const double t = r->sim.t, eps = 1e-9 * r->t_out;
-    const double every = r->opt.t_checkpoint;
+    const double every = r->t_checkpoint;
     if (!(every > 0) || t < r->next_checkpoint - eps)
         return 0;
     r->next_checkpoint = (floor((t + eps) / every) + 1) * every; /* (at worst: every output) */
@@ -787,13 +788,14 @@ int sph_main(const sph_model *m, int argc, char **argv)
     r.t_end = r.opt.t_end > 0 ? r.opt.t_end : m->t_end;
     r.t_out = r.opt.t_out > 0 ? r.opt.t_out : m->t_out;
     r.t_frames = r.opt.t_frames > 0 ? r.opt.t_frames : r.t_out;
+    r.t_checkpoint = r.opt.t_checkpoint > 0 ? r.opt.t_checkpoint : m->t_checkpoint;
     if (too_many_outputs(&r))
         return SPH_EXIT_OPTIONS;
-    if (r.opt.t_checkpoint > 0)
+    if (r.t_checkpoint > 0)
         catch_stop_signals();
     r.wall0 = sph_wall_time();
     r.next_out = r.t_out;
-    r.next_checkpoint = r.opt.t_checkpoint;
+    r.next_checkpoint = r.t_checkpoint;
     long particles = 0, pairs = 0;
     sph_ckpt ckpt;
     if (r.opt.restart && sph_ckpt_read(&ckpt, r.opt.restart))
@@ -814,7 +816,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
             return SPH_EXIT_SETUP;
     }
     int state = time_loop(&r);
-    if (state != 1 && r.opt.t_checkpoint > 0 && write_checkpoint(&r)) /* to go on from */
+    if (state != 1 && r.t_checkpoint > 0 && write_checkpoint(&r)) /* to go on from */
         state = -1;
     if (state < 0)
         return SPH_EXIT_SETUP;

@@ -285,6 +285,8 @@ typedef struct {
     double dt_fixed;       /* > 0: fixed time step */
     double t_end;
     double t_out;
+    double t_checkpoint;   /* > 0: a checkpoint every this long (the scene's `checkpoint`; the
+                              program's --checkpoint overrides it) */
     double gravity[3];
     const sph_body_desc *bodies;
     int nbodies;

@@ -1,10 +1,11 @@
 # A run resumed from its checkpoint is the run itself: -DPROGRAM= -DOUT= -DEND= -DMID=
-# [-DARGS=...].  The program runs to END in OUT/whole, and again to MID (an output time)
-# with --checkpoint MID in OUT/part, from whose checkpoint.bin it then resumes to END.  The resumed run must write
-# exactly the whole run's energies.csv, measurement files, particle files and .pvd lists (on
-# one thread, so that every sum has one order) and report the same steps and expectations
-# in summary.json.  A checkpoint of another model or resolution, and a damaged one, are
-# refused (-DOTHER=a program of another model).
+# [-DARGS=...] [-DSCENE=ON].  The program runs to END in OUT/whole, and again to MID (an
+# output time) with --checkpoint MID (SCENE: the model's own `checkpoint MID`) in OUT/part,
+# from whose checkpoint.bin it then resumes to END.  The resumed run must write exactly the
+# whole run's energies.csv, measurement files, particle files and .pvd lists (on one thread,
+# so that every sum has one order) and report the same steps and expectations in
+# summary.json.  A checkpoint cut short or with a byte changed, and one read by a program of
+# another model (-DOTHER=), are refused.
 include(${CMAKE_CURRENT_LIST_DIR}/same_outputs.cmake)
 file(REMOVE_RECURSE ${OUT})
 function(run)
@@ -15,7 +16,11 @@ function(run)
   endif()
 endfunction()
 run(--end ${END} --out ${OUT}/whole)
-run(--end ${MID} --checkpoint ${MID} --out ${OUT}/part)
+if(SCENE) # the model's scene asks for a checkpoint at MID (`checkpoint`)
+  run(--end ${MID} --out ${OUT}/part)
+else()
+  run(--end ${MID} --checkpoint ${MID} --out ${OUT}/part)
+endif()
 run(--end ${END} --restart ${OUT}/part/checkpoint.bin)
 
 same_outputs(${OUT}/whole ${OUT}/part)
