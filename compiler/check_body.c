@@ -533,8 +533,43 @@ static int check_soundspeed(const Model *m, const Setting *s, BodyModel *b)
     return 0;
 }
 
+/* plane y0 (2D): the plane y = y0 in which the body's shapes are cut. */
+static int check_plane(const Model *m, const Setting *s, BodyModel *b)
+{
+    if (one_value(m, s, "the y of the plane in which a 2D body's shapes are cut", &b->plane))
+        return -1;
+    if (m->dim != 2) {
+        diag_error(s->loc, "'plane' is for 2D models, whose bodies lie in a plane y = const");
+        return -1;
+    }
+    b->has_plane = 1;
+    b->plane_loc = s->values[0]->loc;
+    return 0;
+}
+
+/* The plane of a 2D body with `plane` must cut every surface, prism and pyramid of it (the
+ * others take any plane). */
+static int plane_cuts(const BodyModel *b)
+{
+    for (int k = 0; b->has_plane && k < b->region.n; k++) {
+        const ShapePrim *s = &b->region.prims[k];
+        const int cut = s->kind == SHAPE_SURFACE || s->kind == SHAPE_PRISM ||
+                        s->kind == SHAPE_PYRAMID;
+        if (!cut || (b->plane >= s->a[1] && b->plane <= s->b[1]))
+            continue;
+        diag_error(b->plane_loc, "the plane y = %g misses the body's %s, which spans y from %g "
+                                 "to %g", b->plane, s->kind == SHAPE_SURFACE ? "surface"
+                                 : s->kind == SHAPE_PRISM ? "prism" : "pyramid",
+                   s->a[1], s->b[1]);
+        return -1;
+    }
+    return 0;
+}
+
 static int check_setting(const Model *m, const Setting *s, BodyModel *b)
 {
+    if (!strcmp(s->key, "plane"))
+        return check_plane(m, s, b);
     if (!strcmp(s->key, "refine"))
         return setting_int(m, s, 1, &b->refine);
     if (!strcmp(s->key, "nbsrange"))
@@ -552,7 +587,8 @@ static int check_setting(const Model *m, const Setting *s, BodyModel *b)
     if (!strcmp(s->key, "soundspeed"))
         return check_soundspeed(m, s, b);
     diag_error(s->loc, "unknown body setting '%s' (expected refine, nbsrange, viscosity, "
-                       "hourglass, lattice, restitution, friction, soundspeed or restrict)",
+                       "hourglass, lattice, restitution, friction, soundspeed, plane or "
+                       "restrict)",
                s->key);
     return -1;
 }
@@ -675,6 +711,6 @@ int check_body(Model *m, const BodyDecl *d, BodyModel *b)
     if (!bad && b->c0_set > 0) /* after the material, which sets eq. 59's */
         b->c0 = b->c0_set;
     if (!bad)
-        bad |= check_fracture_body(b, d) != 0;
+        bad |= check_fracture_body(b, d) != 0 || plane_cuts(b) != 0;
     return bad ? -1 : 0;
 }

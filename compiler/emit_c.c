@@ -599,9 +599,11 @@ static void body_desc_arrays(Emitter *E, const BodyModel *b)
     }
 }
 
-/* y of the x-z plane of a 2D body: the middle of its shape's y range. */
+/* y of the x-z plane of a 2D body: its `plane`, else the middle of its shape's y range. */
 static double plane_y(const BodyModel *b)
 {
+    if (b->has_plane)
+        return b->plane;
     /* A surface, prism or pyramid is cut by the plane (runtime/region.c), so the plane must
      * pass through it; boxes, cylinders and spheres are moved into whatever plane it is. */
     for (int k = 0; k < b->region.n; k++) {

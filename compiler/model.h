@@ -84,6 +84,9 @@ typedef struct {
     double E, nu, lambda, mu, K;   /* elastic constants, all five derived */
     double c0;                     /* eq. 59, or the `soundspeed` setting */
     double c0_set;                 /* `soundspeed c` (0: none) */
+    int has_plane;                 /* 2D: `plane y0`, the y of the plane the shapes are cut in */
+    double plane;
+    SrcLoc plane_loc;
     double beta1, beta2;           /* artificial viscosity, eq. 58 */
     double hourglass;              /* penalty coefficient of the hourglass control (0: off) */
     int has_lattice;               /* `lattice P`: the fill lattice has a cell corner at P */

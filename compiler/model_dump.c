@@ -28,6 +28,8 @@ static void body(FILE *out, const BodyModel *b)
     if (b->has_lattice)
         fprintf(out, "    lattice corner [%g %g %g]\n", b->lattice[0], b->lattice[1],
                 b->lattice[2]);
+    if (b->has_plane)
+        fprintf(out, "    cut in the plane y = %g\n", b->plane);
     fprintf(out, "    elastic E %g nu %g lambda %g mu %g K %g  c0 %g m/s\n", b->E, b->nu, b->lambda,
             b->mu, b->K, b->c0);
     fprintf(out, "    material %s(", b->law->name);

@@ -447,6 +447,8 @@ bodyitem
                                                            $2, $3, $4, $5); }
     | FRACTURE '(' namedargs_opt ')'    { $$ = new_bodyitem(BI_FRACTURE, LOC(@1));
                                           $$.material = (NamedCall){ ast_strdup("fracture"), LOC(@1), $3 }; }
+    | PLANE expr                        { $$ = new_bodyitem(BI_SETTING, LOC(@1));
+                                          $$.setting = ast_setting(LOC(@1), "plane", $2); }
     | setting                           { $$ = new_bodyitem(BI_SETTING, $1.loc); $$.setting = $1; }
     ;
 

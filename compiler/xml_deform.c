@@ -312,6 +312,16 @@ static void push_material(XmlCtx *x, const Cards *c, BodyDecl *b)
     x->uses_law[c->model] = 1;
 }
 
+/* Whether a shape draws a surface file somewhere. */
+static int has_surface(const ShapeExpr *e)
+{
+    if (!e)
+        return 0;
+    if (!e->op)
+        return !strcmp(e->prim.name, "surface");
+    return has_surface(e->lhs) || has_surface(e->rhs);
+}
+
 static int push_settings(XmlCtx *x, const Cards *c, BodyDecl *b)
 {
     BodyItem shape = {0};
@@ -323,6 +333,8 @@ static int push_settings(XmlCtx *x, const Cards *c, BodyDecl *b)
     if (!shape.shape)
         return -1;
     ast_push_bodyitem(b, shape);
+    if (x->dim == 2 && has_surface(shape.shape)) /* GenCase cuts it by the case's plane */
+        push_setting(b, c->loc, "plane", x->pmin[1]);
     push_setting(b, c->refine_loc.line ? c->refine_loc : c->loc, "refine", (double)c->refine);
     if (has_corner) {
         Expr **v = NULL;

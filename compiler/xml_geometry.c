@@ -520,10 +520,6 @@ static int drawfile(XmlCtx *x, const xmlNode *n, int mk)
                         "only; sphc fills closed surfaces: give autofill=\"true\"", xml_name(n));
         return -1;
     }
-    if (x->dim == 2) {
-        diag_error(loc, "<%s>: surfaces from files are supported in 3D cases only", xml_name(n));
-        return -1;
-    }
     if (mk == XML_MK_NONE)
         return no_mk(xml_name(n), loc);
     XmlDraw d = new_draw(x, XD_SURFACE, mk, loc);
@@ -536,9 +532,15 @@ static int drawfile(XmlCtx *x, const xmlNode *n, int mk)
     double lo[3], hi[3];
     if (surface_file_ok(x, n, file, d.map, lo, hi, loc))
         return -1;
-    for (int a = 0; a < 3; a++) /* the nodes of its bounding box */
+    for (int a = 0; a < 3; a++) { /* the nodes of its bounding box */
+        if (x->dim == 2 && a == 1) { /* a 2D case: its cut by the plane (the body's `plane`) */
+            if (lo[1] > x->pmin[1] || hi[1] < x->pmin[1])
+                return off_plane(x, xml_name(n), d.loc);
+            continue;
+        }
         if (draw_span(x, xml_name(n), a, lo[a], hi[a], &d))
             return -1;
+    }
     return add_draw(x, &d);
 }
 
