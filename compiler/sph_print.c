@@ -97,13 +97,19 @@ static int prec(const Expr *e)
     }
 }
 
-static void print_list(Expr *const *args, int n, FILE *out)
+/* n expressions separated by sep. */
+static void print_joined(Expr *const *args, int n, const char *sep, FILE *out)
 {
     for (int i = 0; i < n; i++) {
         if (i)
-            fputs(", ", out);
+            fputs(sep, out);
         sph_print_expr(args[i], out);
     }
+}
+
+static void print_list(Expr *const *args, int n, FILE *out)
+{
+    print_joined(args, n, ", ", out);
 }
 
 static void print_operand(const Expr *e, int min_prec, FILE *out)
@@ -164,11 +170,17 @@ void sph_print_expr(const Expr *e, FILE *out)
 
 /* ------------------------------------------------------------------ pieces */
 
-static void print_values(const Setting *s, FILE *out)
+/* A setting's text ("file") and values, the values separated by sep. */
+static void print_values_sep(const Setting *s, const char *sep, FILE *out)
 {
     if (s->text)
         fprintf(out, "\"%s\"", s->text);
-    print_list(s->values, s->nvalues, out);
+    print_joined(s->values, s->nvalues, sep, out);
+}
+
+static void print_values(const Setting *s, FILE *out)
+{
+    print_values_sep(s, ", ", out);
 }
 
 /* name(key value ...): an argument of several values (the corners of a prism) lists them
@@ -177,15 +189,8 @@ static void print_call(const NamedCall *c, const char *sep, FILE *out)
 {
     fprintf(out, "%s(", c->name);
     for (int i = 0; i < c->args.n; i++) {
-        const Setting *s = &c->args.items[i];
-        fprintf(out, "%s%s ", i ? sep : "", s->key);
-        if (s->text)
-            fprintf(out, "\"%s\"", s->text);
-        for (int k = 0; k < s->nvalues; k++) {
-            if (k)
-                fputc(' ', out);
-            sph_print_expr(s->values[k], out);
-        }
+        fprintf(out, "%s%s ", i ? sep : "", c->args.items[i].key);
+        print_values_sep(&c->args.items[i], " ", out);
     }
     fputc(')', out);
 }
