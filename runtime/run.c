@@ -69,9 +69,9 @@ static double dt_floor(const run_state *r)
     return r->m->dt_fixed > 0 ? 0.0 : r->m->dtmin_coef * min_h_over_c0(r);
 }
 
-/* A run with checkpoints that gets SIGTERM (a batch system's notice) or SIGINT stops at the
- * end of its current batch of steps, writes a checkpoint and exits (SPH_EXIT_STOPPED); a
- * second signal ends it at once. */
+/* A run with checkpoints that gets SIGTERM (a batch system's notice) or SIGINT stops after
+ * the step under way (on the device: after the batch of steps queued, at most 20), writes a
+ * checkpoint and exits (SPH_EXIT_STOPPED); a second signal ends it at once. */
 static volatile sig_atomic_t stop_signal;
 
 static void on_stop_signal(int sig)
@@ -679,7 +679,7 @@ static int time_loop(run_state *r)
         /* the steps to the next check or output time, whichever is first */
         sph_advance a = {.steps = CHECK_EVERY - (int)(s->step % CHECK_EVERY),
                          .t_stop = fmin(r->next_out, r->t_end),
-                         .eps = eps, .floor_dt = floor_dt};
+                         .eps = eps, .floor_dt = floor_dt, .stop = &stop_signal};
         double w0 = sph_wall_time();
         sph_profile_phase = SPH_PHASE_STEPS; /* (--profile) the passes from here on */
         sph_sim_advance(s, &a);
@@ -705,7 +705,7 @@ static int time_loop(run_state *r)
             r->check_seconds += sph_wall_time() - w0;
         }
         sph_progress_update(&prog, s->t, s->dt, s->step);
-        if (stop_signal) /* (after this output, at most CHECK_EVERY steps after the signal) */
+        if (stop_signal) /* (after the step under way when it came, and its output) */
             break;
     }
     sph_progress_finish(&prog);

@@ -98,7 +98,7 @@ int sph_sim_advance(sph_sim *s, sph_advance *a)
         s->m->advance(s, a);
         return (int)(s->step - step0);
     }
-    while (s->step - step0 < a->steps && s->t < a->t_stop - a->eps) {
+    while (s->step - step0 < a->steps && s->t < a->t_stop - a->eps && !(a->stop && *a->stop)) {
         const double dt = sph_sim_stable_dt(s);
         const double floor_now = sph_dt_floor_now(a->floor_dt, s->dt_factor);
         if (!(dt >= floor_now)) {

@@ -790,7 +790,7 @@ static void sph_cuda_advance(sph_sim *s, sph_advance *a, sph_body *const *dev,
             sph_cuda_clock_tick();
         }
         done += chunk;
-        if (done < a->steps && sph_cuda_clock_stopped())
+        if (done < a->steps && ((a->stop && *a->stop) || sph_cuda_clock_stopped()))
             break;
     }
     sph_cuda_clock_finish(s, a);

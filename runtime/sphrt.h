@@ -25,6 +25,7 @@
 #define SPHRT_H
 
 #include <math.h>
+#include <signal.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -334,6 +335,9 @@ typedef struct sph_advance {
     double t_stop, eps; /* and none that starts at t >= t_stop - eps; each ends at t_stop at
                            the latest (the next output time, or the end) */
     double floor_dt;    /* the floor of the time step: dtmin times the smallest h/c0 */
+    /* NULL, or a flag that a signal handler sets: once it is non-zero no further step starts
+     * (a run with checkpoints stopping at once, runtime/run.c) */
+    const volatile sig_atomic_t *stop;
     /* out: 1 when a time step chosen fell below its floor (sph_dt_floor_now), and was not
      * taken; then that time step and that floor */
     int collapsed;

@@ -17,7 +17,7 @@ file(READ ${OUT}/part/summary.json summary)
 if(NOT summary MATCHES "\"stopped\": {\n +\"signal\": \"SIGTERM\"")
   message(FATAL_ERROR "summary.json does not say the run was stopped:\n${summary}")
 endif()
-string(REGEX MATCH "t = [0-9.e-]+ s" when "${err}")
+string(REGEX MATCH "t = [0-9.e-]+ s \\(step [0-9]+\\)" when "${err}")
 execute_process(COMMAND ${PROGRAM} --quiet --threads 1 ${ARGS} --end ${END}
                         --restart ${OUT}/part/checkpoint.bin
                 RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
