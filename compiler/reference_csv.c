@@ -10,10 +10,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "check.h"
 #include "diag.h"
+#include "regular_file.h"
 
 static int blank(const char *s)
 {
@@ -43,8 +43,7 @@ static int row(const char *line, double *t, double *v)
 
 int reference_csv_read(const char *path, SrcLoc loc, double **t, double **v, int *n)
 {
-    struct stat st; /* (before opening: opening a pipe waits for a writer) */
-    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) { /* /dev/zero would never end */
+    if (sph_not_regular_file(path)) {
         diag_error(loc, "the reference file '%s' is not a regular file", path);
         return -1;
     }

@@ -24,9 +24,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "checkpoint.h"
+#include "regular_file.h"
 
 static const char MAGIC[8] = {'S', 'P', 'H', 'C', 'K', 'P', 'T', '\n'};
 enum { VERSION = 1 };
@@ -178,8 +178,7 @@ int sph_ckpt_read(sph_ckpt *c, const char *path)
 {
     memset(c, 0, sizeof *c);
     c->path = path;
-    struct stat st; /* (before opening: opening a pipe waits for a writer) */
-    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
+    if (sph_not_regular_file(path))
         return corrupt(path, "not a regular file");
     FILE *f = fopen(path, "rb");
     if (!f)

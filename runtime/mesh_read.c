@@ -20,9 +20,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "mesh.h"
+#include "regular_file.h"
 
 typedef struct {
     const char *path;
@@ -438,8 +438,7 @@ static void weld(reader *r)
 
 static unsigned char *read_file(const char *path, size_t *n, char *err, size_t len)
 {
-    struct stat st; /* (before opening: opening a pipe waits for a writer) */
-    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) { /* a device could be endless */
+    if (sph_not_regular_file(path)) {
         snprintf(err, len, "%s: not a regular file", path);
         return NULL;
     }
