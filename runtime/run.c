@@ -4,7 +4,6 @@
  * 3 the run went unstable (stopped by the monitor; the last good output is kept);
  * 4 output could not be written or set-up failed; 6 a run with checkpoints stopped by a
  * signal, after writing one (5, a CUDA failure, is sph_cuda.h's). */
-#include <errno.h>
 #include <math.h>
 #include <omp.h>
 #include <signal.h>
@@ -13,44 +12,12 @@
 #include <string.h>
 
 #include "checkpoint.h"
-#include "compat.h"
-#include "internal.h"
+#include "run_state.h"
 
 /* The stability monitor's periodic check: every this many steps (and before every output). */
 enum { CHECK_EVERY = 20 };
 
-typedef struct {
-    const sph_model *m;
-    sph_options opt;
-    double t_end, t_out;
-    double next_out;             /* the next output time */
-    double t_frames, next_frame; /* particle files every t_frames (at output times) */
-    double t_checkpoint;         /* --checkpoint or the scene's: the interval, 0 none; */
-    double next_checkpoint;      /* the next one at the first output from then */
-    double wall_before;          /* a resumed run: the wall time of the run up to its checkpoint, */
-    double t_resumed;            /* and the time and step it resumed at */
-    long step_resumed;
-    sph_sim sim;
-    sph_csv energies;
-    sph_csv *measure_csv;
-    int nmeasures;
-    sph_compat compat;   /* SoliDualSPHysics' files, when m->compat_outputs */
-    sph_record rec;
-    char ***frame_files; /* per body: the frame files listed in its pvd */
-    double *frame_times;
-    int nframes;
-    double wall0;         /* the wall clock when this process started the run */
-    double step_seconds;
-    double setup_seconds; /* particles, neighbours, tables, (device upload) */
-    double check_seconds; /* the monitor's periodic checks (those before outputs count as */
-    double output_seconds;/* output time, with the outputs and a device's copy for them) */
-    sph_monitor mon;      /* the stability monitor: its checks (summary.json), */
-    double stretch_seen;  /* the smallest principal stretch they saw, */
-    long checks;          /* how many there were, */
-    long device_checks;   /* and how many a device target's sums answered alone */
-    char unstable[512];
-    char errors[512];     /* the declared expectations' errors, for the final line */
-} run_state;
+/* The run's state: run_state (run_state.h). */
 
 /* The smallest h/c0 of the bodies: the time a wave takes to cross a particle's support. */
 static double min_h_over_c0(const run_state *r)
@@ -92,13 +59,6 @@ static void catch_stop_signals(void)
 
 /* ------------------------------------------------------------------ output */
 
-static char *joinf(const char *fmt, const char *a, const char *b)
-{
-    size_t n = strlen(fmt) + strlen(a) + strlen(b) + 32;
-    char *s = malloc(n);
-    snprintf(s, n, fmt, a, b);
-    return s;
-}
 
 static int energy_columns(const sph_model *m)
 {
@@ -370,199 +330,17 @@ static int write_summary(run_state *r, double wall, long particles, long pairs, 
     return sph_json_close(&j);
 }
 
-/* ------------------------------------------------------------------ checkpoints */
-
-enum { RUN_TIMES = 10 }; /* the doubles of the record "run.times" */
-
-/* Whether a checkpoint is due at this output (--checkpoint), and the next one's time. */
-static int checkpoint_due(run_state *r)
-{
-    const double t = r->sim.t, eps = 1e-9 * r->t_out;
-    const double every = r->t_checkpoint;
-    if (!(every > 0) || t < r->next_checkpoint - eps)
-        return 0;
-    r->next_checkpoint = (floor((t + eps) / every) + 1) * every; /* (at worst: every output) */
-    return 1;
-}
-
-/* A time series as one record: n, the n times, the n rows. */
-static void put_series(sph_ckpt_writer *w, const char *name, const sph_series *q)
-{
-    const size_t n = (size_t)q->n, bytes = (1 + n + n * (size_t)q->width) * sizeof(double);
-    double *buf = malloc(bytes);
-    if (!buf) {
-        w->bad = ENOMEM;
-        return;
-    }
-    buf[0] = (double)q->n;
-    if (n) {
-        memcpy(buf + 1, q->t, n * sizeof(double));
-        memcpy(buf + 1 + n, q->val, n * (size_t)q->width * sizeof(double));
-    }
-    sph_ckpt_put(w, name, buf, bytes);
-    free(buf);
-}
-
-/* The output files' names in the output folder, and their lengths now. */
-static void put_files(sph_ckpt_writer *w, const run_state *r)
-{
-    const char **paths;
-    long *lengths;
-    const int n = sph_csv_open_files(&paths, &lengths);
-    const size_t dir = strlen(r->opt.out_dir);
-    size_t bytes = 0;
-    for (int k = 0; k < n; k++)
-        bytes += strlen(paths[k]) + 1;
-    char *names = malloc(bytes + 1), *at = names;
-    for (int k = 0; k < n && names; k++) { /* relative to the folder, which may be renamed */
-        const char *p = paths[k];
-        if (!strncmp(p, r->opt.out_dir, dir) && p[dir] == '/')
-            p += dir + 1;
-        memcpy(at, p, strlen(p) + 1);
-        at += strlen(p) + 1;
-    }
-    if (names) {
-        sph_ckpt_put(w, "run.files", names, (size_t)(at - names));
-        sph_ckpt_put(w, "run.file_lengths", lengths, (size_t)n * sizeof *lengths);
-    } else {
-        w->bad = ENOMEM;
-    }
-    free(names), free(paths), free(lengths);
-}
-
-/* The whole state of the run into OUT/checkpoint.bin: the simulation's (checkpoint.c), the
- * output and checkpoint times, the frames, the time series the expectations read, the
- * timers, and how long each output file is. */
-static int write_checkpoint(run_state *r)
-{
-    char *path = joinf("%s/checkpoint.bin%s", r->opt.out_dir, "");
-    sph_ckpt_writer w;
-    const int bad = sph_ckpt_create(&w, path);
-    free(path);
-    if (bad)
-        return -1;
-    if (r->m->copy_state)
-        r->m->copy_state(&r->sim, 0);
-    sph_sim_checkpoint(&w, &r->sim);
-    const double times[RUN_TIMES] = {
-        r->next_out, r->next_frame, r->next_checkpoint, r->step_seconds, r->check_seconds,
-        r->output_seconds, r->setup_seconds, r->wall_before + sph_wall_time() - r->wall0,
-        r->stretch_seen, r->mon.e_ref};
-    sph_ckpt_put(&w, "run.times", times, sizeof times);
-    const long counts[2] = {r->checks, r->device_checks};
-    sph_ckpt_put(&w, "run.counts", counts, sizeof counts);
-    sph_ckpt_put(&w, "run.frames", r->frame_times, (size_t)r->nframes * sizeof(double));
-    put_series(&w, "run.series.energy", &r->rec.energy);
-    for (int q = 0; q < r->nmeasures; q++) {
-        char name[64];
-        snprintf(name, sizeof name, "run.series.measure.%d", q);
-        put_series(&w, name, &r->rec.measures[q]);
-    }
-    put_files(&w, r);
-    return sph_ckpt_commit(&w);
-}
-
-static int take_series(const sph_ckpt *c, const char *name, sph_series *q)
-{
-    size_t bytes;
-    const double *p = sph_ckpt_find(c, name, &bytes);
-    const double count = p && bytes >= sizeof(double) ? p[0] : -1;
-    const size_t n = count >= 0 && count <= (double)bytes ? (size_t)count : 0;
-    if (!p || bytes != (1 + n + n * (size_t)q->width) * sizeof(double)) {
-        sph_error("cannot restart from %s: no record '%s' of its size (is it a checkpoint of "
-                  "this model?)", c->path, name);
-        return -1;
-    }
-    for (size_t k = 0; k < n; k++)
-        sph_series_push(q, p[1 + k], p + 1 + n + k * (size_t)q->width);
-    return 0;
-}
-
-/* Before the outputs are opened: the files they keep, cut back to their checkpoint length. */
-static int resume_files(const sph_ckpt *c, const run_state *r)
-{
-    size_t nb, lb;
-    const char *names = sph_ckpt_find(c, "run.files", &nb);
-    const long *lengths = sph_ckpt_find(c, "run.file_lengths", &lb);
-    if (!names || !lengths || (nb && names[nb - 1])) {
-        sph_error("cannot restart from %s: it lists no output files", c->path);
-        return -1;
-    }
-    const int n = (int)(lb / sizeof(long));
-    char **paths = calloc((size_t)n + 1, sizeof *paths);
-    long *len = malloc(((size_t)n + 1) * sizeof *len);
-    const char *at = names;
-    int k = 0;
-    for (; k < n && at < names + nb && paths && len; k++, at += strlen(at) + 1) {
-        paths[k] = joinf("%s/%s", r->opt.out_dir, at);
-        memcpy(&len[k], (const char *)lengths + (size_t)k * sizeof(long), sizeof(long));
-    }
-    const int ok = paths && len && k == n && at == names + nb;
-    if (ok)
-        sph_csv_resume((const char *const *)paths, len, n);
-    else
-        sph_error("cannot restart from %s: its list of output files is damaged", c->path);
-    for (int q = 0; paths && q < k; q++)
-        free(paths[q]);
-    free(paths), free(len);
-    return ok ? 0 : -1;
-}
-
-/* The run's records, after the outputs are open: times, frames, series, timers. */
-static int resume_run(const sph_ckpt *c, run_state *r)
-{
-    double times[RUN_TIMES];
-    long counts[2];
-    size_t bytes;
-    const double *frames = sph_ckpt_find(c, "run.frames", &bytes);
-    if (sph_ckpt_take(c, "run.times", times, sizeof times) ||
-        sph_ckpt_take(c, "run.counts", counts, sizeof counts) || !frames ||
-        take_series(c, "run.series.energy", &r->rec.energy))
-        return -1;
-    for (int q = 0; q < r->nmeasures; q++) {
-        char name[64];
-        snprintf(name, sizeof name, "run.series.measure.%d", q);
-        if (take_series(c, name, &r->rec.measures[q]))
-            return -1;
-    }
-    /* The next output is at t or after it; a frame or checkpoint time before t is due at the
-     * next output, as it would be in the whole run (and one far behind would keep the loop
-     * that adds intervals to it from ending). */
-    const double t = r->sim.t, eps = 1e-9 * r->t_out;
-    if (!(times[0] >= t - eps && times[0] < INFINITY) || !isfinite(times[1]) ||
-        !isfinite(times[2])) {
-        sph_error("cannot restart from %s: its next output times are damaged", c->path);
-        return -1;
-    }
-    r->next_out = times[0], r->next_frame = fmax(times[1], t);
-    r->next_checkpoint = fmax(times[2], t);
-    r->step_seconds = times[3], r->check_seconds = times[4], r->output_seconds = times[5];
-    r->setup_seconds = times[6], r->wall_before = times[7];
-    r->stretch_seen = times[8], r->mon.e_ref = times[9];
-    r->checks = counts[0], r->device_checks = counts[1];
-    r->nframes = (int)(bytes / sizeof(double));
-    r->frame_times = malloc(((size_t)r->nframes + 1) * sizeof(double));
-    memcpy(r->frame_times, frames, (size_t)r->nframes * sizeof(double));
-    for (int i = 0; i < r->sim.nbodies; i++) { /* the pvd lists the earlier frames again */
-        r->frame_files[i] = calloc((size_t)r->nframes + 1, sizeof(char *));
-        for (int k = 0; k < r->nframes; k++) {
-            char file[256];
-            snprintf(file, sizeof file, "%s_%04d.vtu", r->sim.bodies[i].desc->name, k);
-            r->frame_files[i][k] = strdup(file);
-        }
-    }
-    return 0;
-}
+/* ------------------------------------------------------------------ resuming */
 
 /* A run resumed from --restart FILE (read, and checked as a file, before the set-up): the
  * simulation's state (set up from the model first) and the run's, the output files kept as
  * they were at the checkpoint. */
 static int restart(run_state *r, sph_ckpt *c)
 {
-    int bad = sph_sim_restore(c, &r->sim) || resume_files(c, r);
+    int bad = sph_sim_restore(c, &r->sim) || sph_run_resume_files(c, r);
     if (!bad && r->m->copy_state)
         r->m->copy_state(&r->sim, 1);
-    bad = bad || open_outputs(r) || resume_run(c, r);
+    bad = bad || open_outputs(r) || sph_run_resume(c, r);
     sph_ckpt_free(c);
     r->t_resumed = r->sim.t, r->step_resumed = r->sim.step;
     if (!bad && !r->opt.quiet)
@@ -698,7 +476,7 @@ static int time_loop(run_state *r)
             if (write_output(r))
                 return -1;
             r->next_out += r->t_out;
-            if (checkpoint_due(r) && write_checkpoint(r))
+            if (sph_run_checkpoint_due(r) && sph_run_write_checkpoint(r))
                 return -1;
             r->output_seconds += sph_wall_time() - w0;
         } else {
@@ -816,7 +594,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
             return SPH_EXIT_SETUP;
     }
     int state = time_loop(&r);
-    if (state != 1 && r.t_checkpoint > 0 && write_checkpoint(&r)) /* to go on from */
+    if (state != 1 && r.t_checkpoint > 0 && sph_run_write_checkpoint(&r)) /* to go on from */
         state = -1;
     if (state < 0)
         return SPH_EXIT_SETUP;
