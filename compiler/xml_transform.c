@@ -159,7 +159,20 @@ static int rotateline(XmlCtx *x, const xmlNode *n, XmlMatrix *t)
     return 0;
 }
 
-/* <scale x y z/>: along each axis, about the origin; none may be 0. */
+/* <move x y z/> (and a surface file's <drawmove>): by (x, y, z). */
+static int move(XmlCtx *x, const xmlNode *n, XmlMatrix *t)
+{
+    static const char *const attrs[] = {"x", "y", "z", NULL};
+    double d[3];
+    if (read_xyz(x, n, attrs, d))
+        return -1;
+    for (int a = 0; a < 3; a++)
+        t->a[a][3] = d[a];
+    return 0;
+}
+
+/* <scale x y z/> (and a surface file's <drawscale>): along each axis, about the origin; none
+ * may be 0. */
 static int scale(XmlCtx *x, const xmlNode *n, XmlMatrix *t)
 {
     static const char *const attrs[] = {"x", "y", "z", NULL};
@@ -168,7 +181,8 @@ static int scale(XmlCtx *x, const xmlNode *n, XmlMatrix *t)
         return -1;
     for (int a = 0; a < 3; a++) {
         if (s[a] == 0) {
-            diag_error(xml_loc(x, n), "<scale>: %c = 0 flattens every drawing", "xyz"[a]);
+            diag_error(xml_loc(x, n), "<%s>: %c = 0 flattens %s", xml_name(n), "xyz"[a],
+                       xml_is(n, "scale") ? "every drawing" : "the surface");
             return -1;
         }
         t->a[a][a] = s[a];
@@ -243,13 +257,9 @@ int xml_transform_command(XmlCtx *x, const xmlNode *n)
     XmlMatrix t;
     xml_matrix_identity(&t);
     int rc;
-    if (xml_is(n, "move")) {
-        static const char *const attrs[] = {"x", "y", "z", NULL};
-        double d[3];
-        rc = read_xyz(x, n, attrs, d);
-        for (int a = 0; a < 3; a++)
-            t.a[a][3] = d[a];
-    } else if (xml_is(n, "rotate"))
+    if (xml_is(n, "move"))
+        rc = move(x, n, &t);
+    else if (xml_is(n, "rotate"))
         rc = rotate(x, n, &t);
     else if (xml_is(n, "rotateline"))
         rc = rotateline(x, n, &t);
@@ -264,27 +274,6 @@ int xml_transform_command(XmlCtx *x, const xmlNode *n)
 }
 
 /* ------------------------------------------------------------------ a surface file's own */
-
-/* <drawscale x y z/> (none 0) or <drawmove x y z/> of a surface file's drawing into t. */
-static int file_command(XmlCtx *x, const xmlNode *c, XmlMatrix *t)
-{
-    static const char *const attrs[] = {"x", "y", "z", NULL};
-    double v[3];
-    if (read_xyz(x, c, attrs, v))
-        return -1;
-    for (int a = 0; a < 3; a++) {
-        if (xml_is(c, "drawmove")) {
-            t->a[a][3] = v[a];
-            continue;
-        }
-        if (v[a] == 0) {
-            diag_error(xml_loc(x, c), "<drawscale>: %c = 0 flattens the surface", "xyz"[a]);
-            return -1;
-        }
-        t->a[a][a] = v[a];
-    }
-    return 0;
-}
 
 /* <drawrotate angx angy angz/>: only all three 0 (GenCase's order of the three turns and
  * their sense are not documented). */
@@ -319,7 +308,7 @@ int xml_file_transform(XmlCtx *x, const xmlNode *n, XmlMatrix *map)
         } else if (k == 2)
             bad |= file_rotate(x, c) != 0;
         else
-            bad |= file_command(x, c, k == 0 ? &scale_t : &move_t) != 0;
+            bad |= (k == 0 ? scale(x, c, &scale_t) : move(x, c, &move_t)) != 0;
     }
     if (bad)
         return -1;
