@@ -55,7 +55,7 @@ static void track(sph_csv *c, const char *path)
 }
 
 /* A resumed run's file at path: opened, cut back to its recorded length and wound to its
- * end; 1 when path is not one of them, -1 after reporting. */
+ * end; -1 after reporting when it is not one of them, is missing or is shorter. */
 static int keep(sph_csv *c, const char *path)
 {
     int k = 0;

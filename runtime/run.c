@@ -17,8 +17,6 @@
 /* The stability monitor's periodic check: every this many steps (and before every output). */
 enum { CHECK_EVERY = 20 };
 
-/* The run's state: run_state (run_state.h). */
-
 /* The smallest h/c0 of the bodies: the time a wave takes to cross a particle's support. */
 static double min_h_over_c0(const run_state *r)
 {
@@ -46,6 +44,11 @@ static void on_stop_signal(int sig)
     stop_signal = sig;
 }
 
+static const char *stop_name(void)
+{
+    return stop_signal == SIGINT ? "SIGINT" : "SIGTERM";
+}
+
 static void catch_stop_signals(void)
 {
     struct sigaction sa;
@@ -58,7 +61,6 @@ static void catch_stop_signals(void)
 }
 
 /* ------------------------------------------------------------------ output */
-
 
 static int energy_columns(const sph_model *m)
 {
@@ -192,7 +194,7 @@ static int write_particles(run_state *r)
     for (int i = 0; i < s->nbodies; i++) {
         const char *name = s->bodies[i].desc->name;
         char file[256], path[4096];
-        snprintf(file, sizeof file, "%s_%04d.vtu", name, r->nframes);
+        frame_file(file, sizeof file, name, r->nframes);
         snprintf(path, sizeof path, "%s/particles/%s", r->opt.out_dir, file);
         bad |= sph_write_vtu(path, &s->bodies[i], s->t);
         char **list = realloc(r->frame_files[i], (size_t)(r->nframes + 1) * sizeof(char *));
@@ -319,7 +321,7 @@ static int write_summary(run_state *r, double wall, long particles, long pairs, 
     sph_json_end_array(&j);
     if (stop_signal) { /* a run cut short: its expectations are for the whole run */
         sph_json_key_object(&j, "stopped");
-        sph_json_str(&j, "signal", stop_signal == SIGINT ? "SIGINT" : "SIGTERM");
+        sph_json_str(&j, "signal", stop_name());
         sph_json_num(&j, "time", s->t);
         sph_json_end_object(&j);
     }
@@ -617,7 +619,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
     double ps = (double)particles * (double)r.sim.step;
     if (state == 2) {
         sph_error("stopped by %s at t = %g s (step %ld); the checkpoint %s/checkpoint.bin "
-                  "resumes the run (--restart)", stop_signal == SIGINT ? "SIGINT" : "SIGTERM",
+                  "resumes the run (--restart)", stop_name(),
                   r.sim.t, r.sim.step, r.opt.out_dir);
         return SPH_EXIT_STOPPED;
     }

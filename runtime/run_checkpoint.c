@@ -21,6 +21,12 @@ int sph_run_checkpoint_due(run_state *r)
     return 1;
 }
 
+/* The record of measurement q's time series. */
+static void measure_record(char *out, size_t len, int q)
+{
+    snprintf(out, len, "run.series.measure.%d", q);
+}
+
 /* A time series as one record: n, the n times, the n rows. */
 static void put_series(sph_ckpt_writer *w, const char *name, const sph_series *q)
 {
@@ -91,7 +97,7 @@ int sph_run_write_checkpoint(run_state *r)
     put_series(&w, "run.series.energy", &r->rec.energy);
     for (int q = 0; q < r->nmeasures; q++) {
         char name[64];
-        snprintf(name, sizeof name, "run.series.measure.%d", q);
+        measure_record(name, sizeof name, q);
         put_series(&w, name, &r->rec.measures[q]);
     }
     put_files(&w, r);
@@ -131,7 +137,7 @@ int sph_run_resume_files(const sph_ckpt *c, const run_state *r)
     int k = 0;
     for (; k < n && at < names + nb && paths && len; k++, at += strlen(at) + 1) {
         paths[k] = joinf("%s/%s", r->opt.out_dir, at);
-        memcpy(&len[k], (const char *)lengths + (size_t)k * sizeof(long), sizeof(long));
+        len[k] = lengths[k]; /* (records are 8-byte aligned) */
     }
     const int ok = paths && len && k == n && at == names + nb;
     if (ok)
@@ -157,7 +163,7 @@ int sph_run_resume(const sph_ckpt *c, run_state *r)
         return -1;
     for (int q = 0; q < r->nmeasures; q++) {
         char name[64];
-        snprintf(name, sizeof name, "run.series.measure.%d", q);
+        measure_record(name, sizeof name, q);
         if (take_series(c, name, &r->rec.measures[q]))
             return -1;
     }
@@ -183,7 +189,7 @@ int sph_run_resume(const sph_ckpt *c, run_state *r)
         r->frame_files[i] = calloc((size_t)r->nframes + 1, sizeof(char *));
         for (int k = 0; k < r->nframes; k++) {
             char file[256];
-            snprintf(file, sizeof file, "%s_%04d.vtu", r->sim.bodies[i].desc->name, k);
+            frame_file(file, sizeof file, r->sim.bodies[i].desc->name, k);
             r->frame_files[i][k] = strdup(file);
         }
     }

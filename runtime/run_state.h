@@ -53,6 +53,12 @@ static inline char *joinf(const char *fmt, const char *a, const char *b)
     return s;
 }
 
+/* The file of body's frame k, in OUT/particles/ (and listed so in the body's .pvd). */
+static inline void frame_file(char *out, size_t len, const char *body, int k)
+{
+    snprintf(out, len, "%s_%04d.vtu", body, k);
+}
+
 /* run_checkpoint.c: the run's own records of a checkpoint (output and checkpoint times,
  * frames, the expectations' time series, timers, the output files' lengths). */
 /* Whether a checkpoint is due at this output, and the next one's time. */
