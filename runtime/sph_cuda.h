@@ -567,6 +567,26 @@ static void sph_full_lists(const sph_body *h, int **count, int **nb, int **k, in
     free(start), free(packed), free(slot_of);
 }
 
+/* The sums of host body h's last step as the device keeps them (b->red[SPH_RED_VMAX2 ..
+ * SPH_RED_VISC_DISSIPATED]; the rest, the monitor's, 0): the next time step comes from them. */
+static void sph_host_sums(const sph_body *h, double red[SPH_NRED])
+{
+    for (int k = 0; k < SPH_NRED; k++)
+        red[k] = 0;
+    red[SPH_RED_VMAX2] = h->vmax2, red[SPH_RED_AMAX2] = h->amax2;
+    red[SPH_RED_CRUSH] = 1.0 / h->lam2min;
+    red[SPH_RED_VISC_RATE] = h->visc_rate, red[SPH_RED_VISC_DISSIPATED] = h->visc_dissipated;
+}
+
+/* The same onto the device view's sums (the monitor's left as they are). */
+static void sph_host_sums_to_device(const sph_body *h, double *dev_red)
+{
+    double red[SPH_NRED];
+    sph_host_sums(h, red);
+    SPH_CUDA_CHECK(cudaMemcpy(dev_red, red, (SPH_RED_VISC_DISSIPATED + 1) * sizeof(double),
+                              cudaMemcpyHostToDevice));
+}
+
 /* The device view of host body h (see the top of this file). */
 static sph_body *sph_cuda_body(const sph_body *h)
 {
@@ -604,8 +624,8 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->fb = (int *)sph_dev_copy(nb, (size_t)slots * n * sizeof(int));
     b->fb_k = (int *)sph_dev_copy(k, (size_t)slots * n * sizeof(int));
     free(count), free(nb), free(k);
-    const double red[SPH_NRED] = {h->vmax2, h->amax2, 1.0 / h->lam2min, h->visc_rate,
-                                  h->visc_dissipated};
+    double red[SPH_NRED];
+    sph_host_sums(h, red);
     b->red = (double *)sph_dev_copy(red, sizeof red);
     const int nbcs = h->desc->nbcs;
     b->desc = NULL; /* host memory: the device view must not lead there (the host keeps h) */
@@ -722,12 +742,8 @@ static void sph_cuda_clock_start(const sph_sim *s, const sph_advance *a, sph_bod
                                  const double *contact_w2, double contact_w2ref)
 {
     if (s->step == 0)
-        for (int i = 0; i < s->nbodies; i++) {
-            const sph_body *h = &s->bodies[i];
-            const double red[3] = {h->vmax2, h->amax2, 1.0 / h->lam2min};
-            SPH_CUDA_CHECK(cudaMemcpy(dev[i]->red + SPH_RED_VMAX2, red, sizeof red,
-                                      cudaMemcpyHostToDevice));
-        }
+        for (int i = 0; i < s->nbodies; i++)
+            sph_host_sums_to_device(&s->bodies[i], dev[i]->red);
     static sph_body **views; /* the device views, where the device's clock reads them */
     if (!views) {
         SPH_CUDA_CHECK(cudaMallocManaged(&views, (size_t)s->nbodies * sizeof *views));
@@ -848,11 +864,8 @@ static void sph_cuda_state_copy(sph_body *h, const sph_body *d, int to_device)
                                               cudaMemcpyHostToDevice)
                                  : cudaMemcpy(ha[k].data, da[k].data, ha[k].bytes,
                                               cudaMemcpyDeviceToHost));
-    if (!to_device)
-        return;
-    const double red[5] = {h->vmax2, h->amax2, 1.0 / h->lam2min, h->visc_rate,
-                           h->visc_dissipated}; /* SPH_RED_VMAX2 .. SPH_RED_VISC_DISSIPATED */
-    SPH_CUDA_CHECK(cudaMemcpy(d->red, red, sizeof red, cudaMemcpyHostToDevice));
+    if (to_device)
+        sph_host_sums_to_device(h, d->red);
 }
 
 #endif
