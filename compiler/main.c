@@ -13,13 +13,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "ast.h"
-#include "diag.h"
-#include "driver.h"
-#include "emit.h"
-#include "model.h"
-#include "sph_print.h"
-#include "xml.h"
+#include "front/ast.h"
+#include "util/diag.h"
+#include "driver/driver.h"
+#include "emit/emit.h"
+#include "check/model.h"
+#include "front/sph_print.h"
+#include "xml/xml.h"
 
 static void usage(FILE *f)
 {

@@ -1,0 +1,746 @@
+/* law.c — material laws: type checking and symbolic evaluation into the scalar graph.
+ *
+ * A law's statements are evaluated with F as nine graph inputs (in 2D, plane strain: the
+ * out-of-plane row and column of F are those of the identity and fold away).  Tensors
+ * are 3×3, row-major.  The result is one graph node per component of the second
+ * Piola–Kirchhoff stress S and one for the strain energy density psi. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check/check.h"
+#include "util/diag.h"
+#include "check/eval.h"
+#include "law.h"
+#include "lang/builtins.h"
+
+typedef struct {
+    int tensor;  /* 0 scalar, 1 tensor */
+    int s;       /* scalar node */
+    int t[9];    /* tensor nodes */
+} Val;
+
+typedef struct {
+    const char *name;
+    Val v;
+    int assigned;  /* made by `name = ...` (or the merge after an if): outlives its block */
+} Binding;
+
+typedef struct {
+    const Model *m;
+    SGraph *g;
+    const MaterialDef *law;
+    const double *params;  /* NULL: symbolic parameters (checking) */
+    Binding *env;
+    int nenv, capenv;
+    int has_stress, has_energy;
+    int want_tension;  /* evaluate the tension block (fracture) */
+    int in_tension;    /* inside it: stress and energy are S+ and psi+ */
+    int in_if;         /* inside an if block: only let and assignments */
+    LawRoots out;
+} Law;
+
+static const Val BAD = {-1, -1, {0}};
+
+static Val scalar(int s)
+{
+    Val v = {0, s, {0}};
+    return v;
+}
+
+static int ok(Val v) { return v.tensor >= 0; }
+
+static void bind(Law *L, const char *name, Val v)
+{
+    if (L->nenv == L->capenv) {
+        L->capenv = L->capenv ? 2 * L->capenv : 16;
+        L->env = realloc(L->env, (size_t)L->capenv * sizeof *L->env);
+    }
+    L->env[L->nenv++] = (Binding){name, v, 0};
+}
+
+/* The innermost binding of name, or NULL. */
+static Binding *find_binding(Law *L, const char *name)
+{
+    for (int i = L->nenv - 1; i >= 0; i--)
+        if (!strcmp(L->env[i].name, name))
+            return &L->env[i];
+    return NULL;
+}
+
+static Val identity(Law *L)
+{
+    Val v = {1, -1, {0}};
+    for (int k = 0; k < 9; k++)
+        v.t[k] = sg_const(L->g, k % 4 == 0 ? 1.0 : 0.0);
+    return v;
+}
+
+/* ------------------------------------------------------------------ tensor algebra */
+
+static Val t_map2(Law *L, SnOp op, Val a, Val b)
+{
+    Val r = {1, -1, {0}};
+    for (int k = 0; k < 9; k++)
+        r.t[k] = sg_binary(L->g, op, a.tensor ? a.t[k] : a.s, b.tensor ? b.t[k] : b.s);
+    return r;
+}
+
+static Val t_matmul(Law *L, Val a, Val b)
+{
+    Val r = {1, -1, {0}};
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            int acc = sg_const(L->g, 0.0);
+            for (int k = 0; k < 3; k++)
+                acc = sg_binary(L->g, SN_ADD, acc,
+                                sg_binary(L->g, SN_MUL, a.t[3 * i + k], b.t[3 * k + j]));
+            r.t[3 * i + j] = acc;
+        }
+    return r;
+}
+
+static Val t_transpose(Val a)
+{
+    Val r = a;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            r.t[3 * i + j] = a.t[3 * j + i];
+    return r;
+}
+
+static int t_trace(Law *L, Val a)
+{
+    return sg_binary(L->g, SN_ADD, sg_binary(L->g, SN_ADD, a.t[0], a.t[4]), a.t[8]);
+}
+
+static int cofactor(Law *L, Val a, int i, int j)
+{
+    int r0 = (i + 1) % 3, r1 = (i + 2) % 3, c0 = (j + 1) % 3, c1 = (j + 2) % 3;
+    return sg_binary(L->g, SN_SUB, sg_binary(L->g, SN_MUL, a.t[3 * r0 + c0], a.t[3 * r1 + c1]),
+                     sg_binary(L->g, SN_MUL, a.t[3 * r0 + c1], a.t[3 * r1 + c0]));
+}
+
+static int t_det(Law *L, Val a)
+{
+    int d = sg_const(L->g, 0.0);
+    for (int j = 0; j < 3; j++)
+        d = sg_binary(L->g, SN_ADD, d, sg_binary(L->g, SN_MUL, a.t[j], cofactor(L, a, 0, j)));
+    return d;
+}
+
+static Val t_inverse(Law *L, Val a)
+{
+    Val r = {1, -1, {0}};
+    int inv_det = sg_binary(L->g, SN_DIV, sg_const(L->g, 1.0), t_det(L, a));
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) /* inverse = adjugate / det, adj_ij = cof_ji */
+            r.t[3 * i + j] = sg_binary(L->g, SN_MUL, cofactor(L, a, j, i), inv_det);
+    return r;
+}
+
+static int t_ddot(Law *L, Val a, Val b)
+{
+    int acc = sg_const(L->g, 0.0);
+    for (int k = 0; k < 9; k++)
+        acc = sg_binary(L->g, SN_ADD, acc, sg_binary(L->g, SN_MUL, a.t[k], b.t[k]));
+    return acc;
+}
+
+/* The positive part of a symmetric tensor, sum of max(lambda_k, 0) q_k q_k^T (eq. 13, 16),
+ * by a runtime routine (runtime/sph_tensor.h).  Its upper triangle is used.  A tensor with
+ * the plane-strain structure (no y coupling, zero yy) takes the 2×2 closed form. */
+static Val t_pos(Law *L, Val a)
+{
+    Val r = {1, -1, {0}};
+    int zero = sg_const(L->g, 0.0);
+    int plane = 1;
+    for (int k = 1; k < 8; k++)
+        plane &= (k == 2 || k == 6) || a.t[k] == zero;
+    if (plane) {
+        int args[3] = {a.t[0], a.t[2], a.t[8]};
+        int ext = sg_ext(L->g, "sph_sym_pos2", args, 3, 3);
+        for (int k = 0; k < 9; k++)
+            r.t[k] = zero;
+        r.t[0] = sg_part(L->g, ext, 0);
+        r.t[2] = r.t[6] = sg_part(L->g, ext, 1);
+        r.t[8] = sg_part(L->g, ext, 2);
+        return r;
+    }
+    int args[9];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            args[3 * i + j] = a.t[i <= j ? 3 * i + j : 3 * j + i];
+    int ext = sg_ext(L->g, "sph_sym_pos3", args, 9, 9);
+    for (int k = 0; k < 9; k++)
+        r.t[k] = sg_part(L->g, ext, k);
+    return r;
+}
+
+/* ------------------------------------------------------------------ expressions */
+
+static Val eval(Law *L, const Expr *e);
+
+static Val lookup(Law *L, const Expr *e)
+{
+    for (int i = L->nenv - 1; i >= 0; i--)
+        if (!strcmp(L->env[i].name, e->name))
+            return L->env[i].v;
+    for (int i = 0; i < L->law->nparams; i++)
+        if (!strcmp(L->law->params[i], e->name))
+            return scalar(L->params ? sg_const(L->g, L->params[i]) : sg_param(L->g, i));
+    if (!strcmp(e->name, "I"))
+        return identity(L);
+    double v;
+    if (eval_expr(L->m, e, NULL, &v) == EVAL_OK)
+        return scalar(sg_const(L->g, v));
+    if (builtin_variable(e->name) >= 0)
+        diag_error(e->loc, "'%s' is a particle variable and cannot be used in a material law",
+                   e->name);
+    else
+        diag_error(e->loc, "unknown name '%s' in material '%s'", e->name, L->law->name);
+    return BAD;
+}
+
+static Val need_scalar(const Expr *e, Val v, const char *what)
+{
+    if (ok(v) && v.tensor) {
+        diag_error(e->loc, "%s needs a scalar, got a tensor", what);
+        return BAD;
+    }
+    return v;
+}
+
+static Val need_tensor(const Expr *e, Val v, const char *what)
+{
+    if (ok(v) && !v.tensor) {
+        diag_error(e->loc, "%s needs a tensor, got a scalar", what);
+        return BAD;
+    }
+    return v;
+}
+
+static Val binary(Law *L, const Expr *e)
+{
+    Val a = eval(L, e->args[0]), b = eval(L, e->args[1]);
+    if (!ok(a) || !ok(b))
+        return BAD;
+    static const SnOp map[] = {
+        [OP_ADD] = SN_ADD, [OP_SUB] = SN_SUB, [OP_MUL] = SN_MUL, [OP_DIV] = SN_DIV,
+        [OP_POW] = SN_POW, [OP_LT] = SN_LT,   [OP_GT] = SN_GT,   [OP_LE] = SN_LE,
+        [OP_GE] = SN_GE,   [OP_EQ] = SN_EQ,   [OP_NE] = SN_NE,   [OP_AND] = SN_AND,
+        [OP_OR] = SN_OR,
+    };
+    SnOp op = map[e->op];
+    if (!a.tensor && !b.tensor)
+        return scalar(sg_binary(L->g, op, a.s, b.s));
+    if (e->op == OP_MUL)
+        return a.tensor && b.tensor ? t_matmul(L, a, b) : t_map2(L, SN_MUL, a, b);
+    if ((e->op == OP_ADD || e->op == OP_SUB) && a.tensor && b.tensor)
+        return t_map2(L, op, a, b);
+    if (e->op == OP_DIV && a.tensor && !b.tensor)
+        return t_map2(L, SN_DIV, a, b);
+    diag_error(e->loc, "operator '%s' cannot combine a %s and a %s", op_spelling(e->op),
+               a.tensor ? "tensor" : "scalar", b.tensor ? "tensor" : "scalar");
+    return BAD;
+}
+
+static Val unary(Law *L, const Expr *e)
+{
+    Val a = eval(L, e->args[0]);
+    if (!ok(a))
+        return BAD;
+    if (e->op == OP_NOT)
+        return need_scalar(e, a, "'not'").tensor ? BAD : scalar(sg_unary(L->g, SN_NOT, a.s));
+    if (!a.tensor)
+        return scalar(sg_unary(L->g, SN_NEG, a.s));
+    for (int k = 0; k < 9; k++)
+        a.t[k] = sg_unary(L->g, SN_NEG, a.t[k]);
+    return a;
+}
+
+static const char *c_math_name(const char *f)
+{
+    static const char *const map[][2] = {
+        {"sin", "sin"},   {"cos", "cos"},   {"tan", "tan"},   {"sinh", "sinh"},
+        {"cosh", "cosh"}, {"tanh", "tanh"}, {"sqrt", "sqrt"}, {"ln", "log"},
+        {"log", "log10"}, {"exp", "exp"},   {"abs", "fabs"},
+    };
+    for (size_t i = 0; i < sizeof map / sizeof map[0]; i++)
+        if (!strcmp(f, map[i][0]))
+            return map[i][1];
+    return NULL;
+}
+
+static Val tensor_fn(Law *L, const Expr *e, Val a)
+{
+    const char *f = e->name;
+    if (!strcmp(f, "transpose"))
+        return t_transpose(a);
+    if (!strcmp(f, "tr"))
+        return scalar(t_trace(L, a));
+    if (!strcmp(f, "det"))
+        return scalar(t_det(L, a));
+    if (!strcmp(f, "inv"))
+        return t_inverse(L, a);
+    if (!strcmp(f, "sym"))
+        return t_map2(L, SN_MUL, t_map2(L, SN_ADD, a, t_transpose(a)), scalar(sg_const(L->g, 0.5)));
+    if (!strcmp(f, "pos"))
+        return t_pos(L, a);
+    if (!strcmp(f, "neg")) /* A- = A - A+ (eq. 14) */
+        return t_map2(L, SN_SUB, a, t_pos(L, a));
+    /* dev(A) = A - tr(A)/3 I */
+    int third = sg_binary(L->g, SN_MUL, t_trace(L, a), sg_const(L->g, 1.0 / 3.0));
+    return t_map2(L, SN_SUB, a, t_map2(L, SN_MUL, identity(L), scalar(third)));
+}
+
+static int is_tensor_fn(const char *f)
+{
+    static const char *const names[] = {"transpose", "tr", "det", "inv", "sym", "dev",
+                                        "pos", "neg"};
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
+        if (!strcmp(f, names[i]))
+            return 1;
+    return 0;
+}
+
+static int check_arity(const Expr *e, int n)
+{
+    if (e->nargs == n)
+        return 0;
+    diag_error(e->loc, "function '%s' takes %d argument%s, got %d", e->name, n, n == 1 ? "" : "s",
+               e->nargs);
+    return -1;
+}
+
+static Val user_fn(Law *L, const Expr *e, const FnDef *fn)
+{
+    if (check_arity(e, fn->nparams))
+        return BAD;
+    int mark = L->nenv;
+    Val args[16];
+    if (fn->nparams > 16)
+        return BAD;
+    for (int i = 0; i < fn->nparams; i++) {
+        args[i] = need_scalar(e->args[i], eval(L, e->args[i]), "a function argument");
+        if (!ok(args[i]))
+            return BAD;
+    }
+    for (int i = 0; i < fn->nparams; i++)
+        bind(L, fn->params[i], args[i]);
+    Val r = eval(L, fn->body);
+    L->nenv = mark;
+    return r;
+}
+
+static Val call(Law *L, const Expr *e)
+{
+    const FnDef *fn = model_find_fn(L->m, e->name);
+    if (fn)
+        return user_fn(L, e, fn);
+    if (!strcmp(e->name, "if")) {
+        if (check_arity(e, 3))
+            return BAD;
+        Val c = need_scalar(e, eval(L, e->args[0]), "the condition of 'if'");
+        Val a = eval(L, e->args[1]), b = eval(L, e->args[2]);
+        if (!ok(c) || !ok(a) || !ok(b))
+            return BAD;
+        if (a.tensor != b.tensor) {
+            diag_error(e->loc, "the branches of 'if' must have the same type");
+            return BAD;
+        }
+        if (!a.tensor)
+            return scalar(sg_select(L->g, c.s, a.s, b.s));
+        for (int k = 0; k < 9; k++)
+            a.t[k] = sg_select(L->g, c.s, a.t[k], b.t[k]);
+        return a;
+    }
+    if (!strcmp(e->name, "ddot")) {
+        if (check_arity(e, 2))
+            return BAD;
+        Val a = need_tensor(e, eval(L, e->args[0]), "ddot");
+        Val b = need_tensor(e, eval(L, e->args[1]), "ddot");
+        return ok(a) && ok(b) ? scalar(t_ddot(L, a, b)) : BAD;
+    }
+    if (is_tensor_fn(e->name)) {
+        if (check_arity(e, 1))
+            return BAD;
+        Val a = need_tensor(e, eval(L, e->args[0]), e->name);
+        return ok(a) ? tensor_fn(L, e, a) : BAD;
+    }
+    if (!strcmp(e->name, "pow") || !strcmp(e->name, "min") || !strcmp(e->name, "max")) {
+        if (check_arity(e, 2))
+            return BAD;
+        Val a = need_scalar(e, eval(L, e->args[0]), e->name);
+        Val b = need_scalar(e, eval(L, e->args[1]), e->name);
+        SnOp op = e->name[0] == 'p' ? SN_POW : e->name[1] == 'i' ? SN_MIN : SN_MAX;
+        return ok(a) && ok(b) ? scalar(sg_binary(L->g, op, a.s, b.s)) : BAD;
+    }
+    const char *cf = c_math_name(e->name);
+    if (cf || !strcmp(e->name, "cot") || !strcmp(e->name, "coth")) {
+        if (check_arity(e, 1))
+            return BAD;
+        Val a = need_scalar(e, eval(L, e->args[0]), e->name);
+        if (!ok(a))
+            return BAD;
+        if (cf)
+            return scalar(sg_call(L->g, cf, a.s));
+        int t = sg_call(L->g, e->name[3] == 'h' ? "tanh" : "tan", a.s);
+        return scalar(sg_binary(L->g, SN_DIV, sg_const(L->g, 1.0), t));
+    }
+    diag_error(e->loc, "unknown function '%s'", e->name);
+    return BAD;
+}
+
+static Val eval(Law *L, const Expr *e)
+{
+    switch (e->kind) {
+    case EX_NUM: return scalar(sg_const(L->g, e->num));
+    case EX_NAME: return lookup(L, e);
+    case EX_BINARY: return binary(L, e);
+    case EX_UNARY: return unary(L, e);
+    case EX_CALL: return call(L, e);
+    case EX_VEC: diag_error(e->loc, "vectors are not supported in material laws"); return BAD;
+    case EX_SKIP: diag_error(e->loc, "'skip' cannot be used in a material law"); return BAD;
+    }
+    return BAD;
+}
+
+/* ------------------------------------------------------------------ statements */
+
+static int statement(Law *L, const MatStmt *s);
+
+static int not_in_if(Law *L, const MatStmt *s, const char *what)
+{
+    diag_error(s->loc, "%s cannot be inside an if block of material '%s' (compute the value "
+                       "with lets and assignments, then define it after the block)",
+               what, L->law->name);
+    return -1;
+}
+
+/* state name = initial value: a per-particle variable read at the start of the law (graph
+ * inputs) whose value at the end of the law is stored back.  The initial value must be a
+ * constant (a number or a constant tensor such as I). */
+static int state_stmt(Law *L, const MatStmt *s)
+{
+    if (L->in_if || L->in_tension)
+        return not_in_if(L, s, "a state declaration");
+    LawRoots *r = &L->out;
+    if (find_binding(L, s->name)) {
+        diag_error(s->loc, "'%s' is already defined in material '%s'", s->name, L->law->name);
+        return -1;
+    }
+    Val v = eval(L, s->value);
+    if (!ok(v))
+        return -1;
+    int size = v.tensor ? 9 : 1;
+    if (r->nstates == LAW_MAX_STATES || r->nslots + size > LAW_MAX_SLOTS) {
+        diag_error(s->loc, "material '%s' has more state than sphc supports (%d values)",
+                   L->law->name, LAW_MAX_SLOTS);
+        return -1;
+    }
+    Val in = v;
+    for (int k = 0; k < size; k++) {
+        int node = v.tensor ? v.t[k] : v.s;
+        if (!sg_is_const(L->g, node, &r->init[r->nslots + k])) {
+            diag_error(s->value->loc, "the initial value of state '%s' must be a constant",
+                       s->name);
+            return -1;
+        }
+        int input = sg_input(L->g, LAW_INPUT_STATE + r->nslots + k);
+        *(v.tensor ? &in.t[k] : &in.s) = input;
+    }
+    r->states[r->nstates++] = (LawState){s->name, r->nslots, size};
+    r->nslots += size;
+    bind(L, s->name, in);
+    return 0;
+}
+
+/* dissipation name: the scalar state variable `name` accumulates the energy density the law
+ * has dissipated (plastic work); the program reports its volume integral per body. */
+static int dissipation_stmt(Law *L, const MatStmt *s)
+{
+    LawRoots *r = &L->out;
+    if (L->in_if || L->in_tension)
+        return not_in_if(L, s, "a dissipation declaration");
+    for (int v = 0; v < r->nstates; v++)
+        if (!strcmp(r->states[v].name, s->name) && r->states[v].size == 1) {
+            if (r->dissipation) {
+                diag_error(s->loc, "material '%s' declares its dissipation twice", L->law->name);
+                return -1;
+            }
+            r->dissipation = 1 + r->states[v].offset;
+            return 0;
+        }
+    diag_error(s->loc, "'%s' is not a scalar state variable of material '%s' (dissipation "
+                       "names one, e.g. state wp = 0)",
+               s->name, L->law->name);
+    return -1;
+}
+
+/* name = expr: a new value of a let or a state variable, of the same type. */
+static int assign_stmt(Law *L, const MatStmt *s)
+{
+    Binding *b = find_binding(L, s->name);
+    if (!b) {
+        diag_error(s->loc, "'%s' is not a variable of material '%s' (declare it with let or "
+                           "state first)",
+                   s->name, L->law->name);
+        return -1;
+    }
+    if (!strcmp(s->name, "F")) {
+        diag_error(s->loc, "the deformation gradient F cannot be assigned");
+        return -1;
+    }
+    int tensor = b->v.tensor;
+    Val v = eval(L, s->value);
+    if (!ok(v))
+        return -1;
+    if (v.tensor != tensor) {
+        diag_error(s->value->loc, "'%s' is a %s and cannot take a %s", s->name,
+                   tensor ? "tensor" : "scalar", v.tensor ? "tensor" : "scalar");
+        return -1;
+    }
+    bind(L, s->name, v);
+    L->env[L->nenv - 1].assigned = 1;
+    return 0;
+}
+
+/* The assignments a branch made to variables that existed before it (the last of each):
+ * names and values in out, their count returned.  Its lets end with it. */
+static int branch(Law *L, const MatStmtList *body, int mark, Binding *out, int cap, int *bad)
+{
+    for (int i = 0; i < body->n; i++)
+        *bad |= statement(L, &body->items[i]) != 0;
+    int n = 0;
+    for (int i = L->nenv - 1; i >= mark; i--) {
+        const Binding *b = &L->env[i];
+        if (!b->assigned)
+            continue;
+        int seen = 0;
+        for (int k = 0; k < n; k++)
+            seen |= !strcmp(out[k].name, b->name);
+        if (!seen && n < cap)
+            out[n++] = *b;
+    }
+    L->nenv = mark;
+    return n;
+}
+
+static const Binding *among(const Binding *list, int n, const char *name)
+{
+    for (int k = 0; k < n; k++)
+        if (!strcmp(list[k].name, name))
+            return &list[k];
+    return NULL;
+}
+
+/* if c { ... } else { ... }: both branches are evaluated; every variable either assigns
+ * becomes select(c, its then-value, its else-value), with the value from before the block
+ * where a branch leaves it alone (the graph is pure, so this is exact). */
+static int if_stmt(Law *L, const MatStmt *s)
+{
+    Val c = need_scalar(s->value, eval(L, s->value), "the condition of 'if'");
+    if (!ok(c))
+        return -1;
+    enum { CAP = 64 };
+    Binding thn[CAP], els[CAP];
+    int mark = L->nenv, bad = 0, was = L->in_if;
+    L->in_if = 1;
+    int nt = branch(L, &s->body, mark, thn, CAP, &bad);
+    int ne = branch(L, &s->orelse, mark, els, CAP, &bad);
+    L->in_if = was;
+    if (bad)
+        return -1;
+    for (int pass = 0; pass < 2; pass++) {
+        const Binding *list = pass ? els : thn;
+        for (int k = 0; k < (pass ? ne : nt); k++) {
+            const char *name = list[k].name;
+            if (pass && among(thn, nt, name))
+                continue; /* merged in the first pass */
+            const Binding *pre = find_binding(L, name);
+            if (!pre)
+                continue; /* a let of the branch itself */
+            Val before = pre->v;
+            const Binding *a = among(thn, nt, name), *b = among(els, ne, name);
+            Val va = a ? a->v : before, vb = b ? b->v : before, m = va;
+            if (!va.tensor)
+                m.s = sg_select(L->g, c.s, va.s, vb.s);
+            else
+                for (int q = 0; q < 9; q++)
+                    m.t[q] = sg_select(L->g, c.s, va.t[q], vb.t[q]);
+            bind(L, name, m);
+            L->env[L->nenv - 1].assigned = 1;
+        }
+    }
+    return 0;
+}
+
+/* tension { let ...; energy psi = ...; stress S = ... }: the tensile parts psi+ and S+
+ * (eq. 11, 17, 20, 31), both required; the compressive parts are the rest (psi- = psi -
+ * psi+, S- = S - S+).  Its names are local to it.  Evaluated only for fracture bodies. */
+static int tension_block(Law *L, const MatStmt *blk)
+{
+    if (L->in_tension || (L->has_stress & 2) || (L->has_energy & 2)) {
+        diag_error(blk->loc, "material '%s' has more than one tension block", L->law->name);
+        return -1;
+    }
+    if (!L->want_tension) {
+        L->has_stress |= 2; /* present, not needed by this body */
+        L->has_energy |= 2;
+        return 0;
+    }
+    int mark = L->nenv, bad = 0;
+    L->in_tension = 1;
+    for (int i = 0; i < blk->body.n; i++)
+        bad |= statement(L, &blk->body.items[i]) != 0;
+    L->in_tension = 0;
+    L->nenv = mark;
+    if (!bad && (!(L->has_stress & 2) || !(L->has_energy & 2))) {
+        diag_error(blk->loc, "the tension block of material '%s' needs both 'energy' (psi+) "
+                             "and 'stress' (S+)",
+                   L->law->name);
+        bad = 1;
+    }
+    L->out.has_tension = !bad;
+    return bad ? -1 : 0;
+}
+
+static int statement(Law *L, const MatStmt *s)
+{
+    L->g->line = s->loc.line;
+    L->g->file = s->loc.file;
+    Val v;
+    switch (s->kind) {
+    case MS_LET:
+        v = eval(L, s->value);
+        if (!ok(v))
+            return -1;
+        bind(L, s->name, v);
+        return 0;
+    case MS_STRESS:
+        if (L->in_if)
+            return not_in_if(L, s, "stress");
+        if ((L->in_tension ? 2 : 1) & L->has_stress) {
+            diag_error(s->loc, "material '%s' defines its %sstress twice", L->law->name,
+                       L->in_tension ? "tensile " : "");
+            return -1;
+        }
+        L->has_stress |= L->in_tension ? 2 : 1;
+        v = need_tensor(s->value, eval(L, s->value), "stress");
+        if (!ok(v))
+            return -1;
+        memcpy(L->in_tension ? L->out.Sp : L->out.S, v.t, sizeof v.t);
+        bind(L, s->name, v);
+        return 0;
+    case MS_ENERGY:
+        if (L->in_if)
+            return not_in_if(L, s, "energy");
+        if ((L->in_tension ? 2 : 1) & L->has_energy) {
+            diag_error(s->loc, "material '%s' defines its %senergy twice", L->law->name,
+                       L->in_tension ? "tensile " : "");
+            return -1;
+        }
+        L->has_energy |= L->in_tension ? 2 : 1;
+        v = need_scalar(s->value, eval(L, s->value), "energy");
+        if (!ok(v))
+            return -1;
+        *(L->in_tension ? &L->out.psip : &L->out.psi) = v.s;
+        bind(L, s->name, v);
+        return 0;
+    case MS_BLOCK:
+        if (L->in_if)
+            return not_in_if(L, s, "a tension block");
+        if (!strcmp(s->name, "tension"))
+            return tension_block(L, s);
+        diag_error(s->loc, "unknown block '%s' in a material law (expected tension)", s->name);
+        return -1;
+    case MS_STATE:
+        return state_stmt(L, s);
+    case MS_IF:
+        return if_stmt(L, s);
+    case MS_ASSIGN:
+        return assign_stmt(L, s);
+    case MS_DISSIPATION:
+        return dissipation_stmt(L, s);
+    }
+    return -1;
+}
+
+static void bind_F(Law *L, int dim)
+{
+    Val F = {1, -1, {0}};
+    for (int k = 0; k < 9; k++) {
+        int r = k / 3, c = k % 3;
+        int out_of_plane = dim == 2 && (r == 1 || c == 1);
+        F.t[k] = out_of_plane ? sg_const(L->g, r == c ? 1.0 : 0.0) : sg_input(L->g, k);
+    }
+    bind(L, "F", F);
+}
+
+/* S = s^2 S+ + (S - S+) (eq. 18), psi = s^2 psi+ + (psi - psi+) (eq. 7). */
+static void degrade(SGraph *g, LawRoots *r)
+{
+    int s = sg_input(g, LAW_INPUT_S);
+    int s2 = sg_binary(g, SN_MUL, s, s);
+    for (int k = 0; k < 9; k++)
+        r->Sd[k] = sg_binary(g, SN_ADD, sg_binary(g, SN_MUL, s2, r->Sp[k]),
+                             sg_binary(g, SN_SUB, r->S[k], r->Sp[k]));
+    r->psid = sg_binary(g, SN_ADD, sg_binary(g, SN_MUL, s2, r->psip),
+                        sg_binary(g, SN_SUB, r->psi, r->psip));
+}
+
+int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *params, int dim,
+              int tension, LawRoots *out)
+{
+    Law L = {0};
+    L.want_tension = tension;
+    L.m = m;
+    L.g = g;
+    L.law = law;
+    L.params = params;
+    L.g->line = law->loc.line;
+    L.g->file = law->loc.file;
+    bind_F(&L, dim);
+    int bad = 0;
+    for (int i = 0; i < law->body.n; i++)
+        bad |= statement(&L, &law->body.items[i]) != 0;
+    if (!bad && !(L.has_stress & 1)) {
+        diag_error(law->loc, "material '%s' defines no 'stress'", law->name);
+        bad = 1;
+    }
+    if (!bad && !(L.has_energy & 1)) {
+        diag_error(law->loc, "material '%s' defines no 'energy'", law->name);
+        bad = 1;
+    }
+    for (int v = 0; !bad && v < L.out.nstates; v++) { /* the state's values at the end */
+        const LawState *st = &L.out.states[v];
+        Val end = find_binding(&L, st->name)->v;
+        for (int k = 0; k < st->size; k++)
+            L.out.next[st->offset + k] = st->size == 1 ? end.s : end.t[k];
+    }
+    free(L.env);
+    if (!bad && L.out.has_tension) {
+        L.g->line = law->loc.line; /* the degradation is the law's as a whole */
+        degrade(L.g, &L.out);
+    }
+    if (!bad)
+        *out = L.out;
+    return bad ? -1 : 0;
+}
+
+int law_check(const Model *m, const MaterialDef *law)
+{
+    for (int i = 0; i < law->nparams; i++)
+        for (int j = 0; j < i; j++)
+            if (!strcmp(law->params[i], law->params[j])) {
+                diag_error(law->param_locs[i], "parameter '%s' given twice", law->params[i]);
+                return -1;
+            }
+    SGraph g;
+    sg_init(&g);
+    LawRoots roots;
+    int r = law_build(&g, m, law, NULL, 3, 1, &roots);
+    sg_free(&g);
+    return r;
+}

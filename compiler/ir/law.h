@@ -1,0 +1,44 @@
+/* law.h — material laws lowered to the scalar graph. */
+#ifndef SPHC_LAW_H
+#define SPHC_LAW_H
+
+#include "check/model.h"
+#include "scalar.h"
+
+#define LAW_MAX_SLOTS 48   /* per-particle state values of one law (a tensor takes 9) */
+#define LAW_MAX_STATES 16
+
+/* A state variable of a law: slots offset .. offset+size-1 of the particle's state. */
+typedef struct {
+    const char *name;
+    int offset, size;   /* size 1 (scalar) or 9 (tensor, row-major) */
+} LawState;
+
+typedef struct {
+    int S[9];   /* second Piola–Kirchhoff stress, row-major 3×3 */
+    int psi;    /* strain energy density */
+    int has_tension;
+    int Sp[9];  /* its tensile part S+ (eq. 17, 31), from the law's `tension` block */
+    int psip;   /* the tensile energy psi+ (eq. 11, 20) */
+    int Sd[9];  /* degraded by the phase field s (input 9): S = s^2 S+ + S- (eq. 18) */
+    int psid;   /* psi = s^2 psi+ + psi- (eq. 7) */
+    LawState states[LAW_MAX_STATES];
+    int nstates;
+    int nslots;                  /* state values per particle */
+    double init[LAW_MAX_SLOTS];  /* their initial values */
+    int next[LAW_MAX_SLOTS];     /* their values at the end of the law (graph nodes) */
+    int dissipation;             /* 1 + the slot of the dissipated energy density; 0: none */
+} LawRoots;
+
+/* Evaluate `law` for a body of dimension dim with parameter values params (NULL:
+ * symbolic).  The `tension` block is evaluated only when tension is set (bodies with
+ * fracture).  Returns 0, or -1 after reporting errors. */
+int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *params, int dim,
+              int tension, LawRoots *out);
+
+/* Graph inputs: F is 0-8, the phase field s of a degraded law 9, state slot k is
+ * LAW_INPUT_STATE + k (emitted as st[k]). */
+#define LAW_INPUT_S 9
+#define LAW_INPUT_STATE 16
+
+#endif

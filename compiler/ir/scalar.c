@@ -1,0 +1,444 @@
+/* scalar.c — building, folding and emitting the scalar expression graph. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scalar.h"
+#include "util/source.h"
+
+void sg_init(SGraph *g)
+{
+    memset(g, 0, sizeof *g);
+    g->tcap = 1024;
+    g->table = malloc((size_t)g->tcap * sizeof(int));
+    memset(g->table, -1, (size_t)g->tcap * sizeof(int));
+}
+
+void sg_free(SGraph *g)
+{
+    free(g->nodes);
+    free(g->table);
+    memset(g, 0, sizeof *g);
+}
+
+/* ------------------------------------------------------------------ hash-consing */
+
+static unsigned hash_node(const SNode *s)
+{
+    unsigned h = (unsigned)s->op * 2654435761u;
+    h ^= (unsigned)(s->a + 7) * 40503u + (unsigned)(s->b + 11) * 97u + (unsigned)(s->c + 13);
+    unsigned long long bits;
+    memcpy(&bits, &s->v, sizeof bits);
+    h ^= (unsigned)(bits ^ (bits >> 32));
+    if (s->fn)
+        for (const char *p = s->fn; *p; p++)
+            h = h * 31u + (unsigned char)*p;
+    for (int k = 0; k < s->nargs; k++)
+        h = h * 131u + (unsigned)(s->args[k] + 17);
+    return h;
+}
+
+static int same_node(const SNode *x, const SNode *y)
+{
+    if (x->op != y->op || x->a != y->a || x->b != y->b || x->c != y->c)
+        return 0;
+    if (memcmp(&x->v, &y->v, sizeof x->v) != 0)
+        return 0;
+    if (x->nargs != y->nargs || memcmp(x->args, y->args, (size_t)x->nargs * sizeof(int)))
+        return 0;
+    return (!x->fn && !y->fn) || (x->fn && y->fn && !strcmp(x->fn, y->fn));
+}
+
+static void grow_table(SGraph *g)
+{
+    free(g->table);
+    g->tcap *= 2;
+    g->table = malloc((size_t)g->tcap * sizeof(int));
+    memset(g->table, -1, (size_t)g->tcap * sizeof(int));
+    for (int id = 0; id < g->n; id++) {
+        unsigned h = hash_node(&g->nodes[id]) & (unsigned)(g->tcap - 1);
+        while (g->table[h] >= 0)
+            h = (h + 1) & (unsigned)(g->tcap - 1);
+        g->table[h] = id;
+    }
+}
+
+static int intern(SGraph *g, SNode s)
+{
+    s.line = g->line;
+    s.file = g->file;
+    unsigned h = hash_node(&s) & (unsigned)(g->tcap - 1);
+    while (g->table[h] >= 0) {
+        if (same_node(&g->nodes[g->table[h]], &s))
+            return g->table[h];
+        h = (h + 1) & (unsigned)(g->tcap - 1);
+    }
+    if (g->n == g->cap) {
+        g->cap = g->cap ? 2 * g->cap : 256;
+        g->nodes = realloc(g->nodes, (size_t)g->cap * sizeof *g->nodes);
+    }
+    g->nodes[g->n] = s;
+    g->table[h] = g->n;
+    if (2 * (g->n + 1) > g->tcap) {
+        g->n++;
+        grow_table(g);
+        return g->n - 1;
+    }
+    return g->n++;
+}
+
+static SNode node(SnOp op, int a, int b, int c)
+{
+    SNode s = {.op = op, .a = a, .b = b, .c = c};
+    return s;
+}
+
+int sg_const(SGraph *g, double v)
+{
+    if (v == 0.0)
+        v = 0.0; /* one zero: -0.0 folds to +0.0 */
+    SNode s = node(SN_CONST, -1, -1, -1);
+    s.v = v;
+    return intern(g, s);
+}
+
+int sg_input(SGraph *g, int index)
+{
+    SNode s = node(SN_INPUT, -1, -1, -1);
+    s.v = index;
+    return intern(g, s);
+}
+
+int sg_param(SGraph *g, int index)
+{
+    SNode s = node(SN_PARAM, -1, -1, -1);
+    s.v = index;
+    return intern(g, s);
+}
+
+int sg_is_const(const SGraph *g, int id, double *v)
+{
+    if (g->nodes[id].op != SN_CONST)
+        return 0;
+    if (v)
+        *v = g->nodes[id].v;
+    return 1;
+}
+
+/* ------------------------------------------------------------------ folding */
+
+static double fold_binary(SnOp op, double x, double y)
+{
+    switch (op) {
+    case SN_ADD: return x + y;
+    case SN_SUB: return x - y;
+    case SN_MUL: return x * y;
+    case SN_DIV: return x / y;
+    case SN_POW: return pow(x, y);
+    case SN_MIN: return fmin(x, y);
+    case SN_MAX: return fmax(x, y);
+    case SN_LT: return x < y;
+    case SN_LE: return x <= y;
+    case SN_GT: return x > y;
+    case SN_GE: return x >= y;
+    case SN_EQ: return x == y;
+    case SN_NE: return x != y;
+    case SN_AND: return x != 0.0 && y != 0.0;
+    case SN_OR: return x != 0.0 || y != 0.0;
+    default: return NAN;
+    }
+}
+
+static int commutative(SnOp op)
+{
+    return op == SN_ADD || op == SN_MUL || op == SN_MIN || op == SN_MAX || op == SN_EQ ||
+           op == SN_NE || op == SN_AND || op == SN_OR;
+}
+
+/* Algebraic identities with one constant operand; returns a node id or -1. */
+static int fold_identity(SGraph *g, SnOp op, int a, int b)
+{
+    double x = 0, y = 0;
+    int ca = sg_is_const(g, a, &x), cb = sg_is_const(g, b, &y);
+    switch (op) {
+    case SN_ADD:
+        if (ca && x == 0.0) return b;
+        if (cb && y == 0.0) return a;
+        break;
+    case SN_SUB:
+        if (cb && y == 0.0) return a;
+        if (ca && x == 0.0) return sg_unary(g, SN_NEG, b);
+        if (a == b) return sg_const(g, 0.0);
+        break;
+    case SN_MUL:
+        if ((ca && x == 0.0) || (cb && y == 0.0)) return sg_const(g, 0.0);
+        if (ca && x == 1.0) return b;
+        if (cb && y == 1.0) return a;
+        if (ca && x == -1.0) return sg_unary(g, SN_NEG, b);
+        if (cb && y == -1.0) return sg_unary(g, SN_NEG, a);
+        break;
+    case SN_DIV:
+        if (cb && y == 1.0) return a;
+        if (ca && x == 0.0) return sg_const(g, 0.0);
+        if (cb && y != 0.0) return sg_binary(g, SN_MUL, a, sg_const(g, 1.0 / y));
+        break;
+    case SN_POW:
+        if (cb && y == 1.0) return a;
+        if (cb && y == 0.0) return sg_const(g, 1.0);
+        if (cb && y == 2.0) return sg_binary(g, SN_MUL, a, a);
+        if (cb && y == 0.5) return sg_call(g, "sqrt", a);
+        break;
+    default:
+        break;
+    }
+    return -1;
+}
+
+int sg_binary(SGraph *g, SnOp op, int a, int b)
+{
+    double x, y;
+    if (sg_is_const(g, a, &x) && sg_is_const(g, b, &y))
+        return sg_const(g, fold_binary(op, x, y));
+    int f = fold_identity(g, op, a, b);
+    if (f >= 0)
+        return f;
+    if (commutative(op) && a > b) {
+        int t = a;
+        a = b;
+        b = t;
+    }
+    if ((op == SN_MIN || op == SN_MAX) && a == b)
+        return a;
+    return intern(g, node(op, a, b, -1));
+}
+
+int sg_unary(SGraph *g, SnOp op, int a)
+{
+    double x;
+    if (sg_is_const(g, a, &x))
+        return sg_const(g, op == SN_NEG ? -x : (double)(x == 0.0));
+    if (op == SN_NEG && g->nodes[a].op == SN_NEG)
+        return g->nodes[a].a;
+    return intern(g, node(op, a, -1, -1));
+}
+
+int sg_call(SGraph *g, const char *fn, int a)
+{
+    double x;
+    if (sg_is_const(g, a, &x)) {
+        double r = NAN;
+        if (!strcmp(fn, "sqrt")) r = sqrt(x);
+        else if (!strcmp(fn, "log")) r = log(x);
+        else if (!strcmp(fn, "log10")) r = log10(x);
+        else if (!strcmp(fn, "exp")) r = exp(x);
+        else if (!strcmp(fn, "fabs")) r = fabs(x);
+        else if (!strcmp(fn, "sin")) r = sin(x);
+        else if (!strcmp(fn, "cos")) r = cos(x);
+        else if (!strcmp(fn, "tan")) r = tan(x);
+        else if (!strcmp(fn, "sinh")) r = sinh(x);
+        else if (!strcmp(fn, "cosh")) r = cosh(x);
+        else if (!strcmp(fn, "tanh")) r = tanh(x);
+        if (!isnan(r))
+            return sg_const(g, r);
+    }
+    SNode s = node(SN_CALL, a, -1, -1);
+    s.fn = fn;
+    return intern(g, s);
+}
+
+int sg_select(SGraph *g, int c, int a, int b)
+{
+    double x;
+    if (sg_is_const(g, c, &x))
+        return x != 0.0 ? a : b;
+    if (a == b)
+        return a;
+    return intern(g, node(SN_SELECT, c, a, b));
+}
+
+int sg_ext(SGraph *g, const char *fn, const int *args, int nargs, int nout)
+{
+    SNode s = node(SN_EXT, -1, nout, -1);
+    s.fn = fn;
+    s.nargs = nargs;
+    memcpy(s.args, args, (size_t)nargs * sizeof(int));
+    return intern(g, s);
+}
+
+int sg_part(SGraph *g, int ext, int k)
+{
+    SNode s = node(SN_PART, ext, -1, -1);
+    s.v = k;
+    return intern(g, s);
+}
+
+/* ------------------------------------------------------------------ emission */
+
+static int is_leaf(const SNode *s)
+{
+    return s->op == SN_CONST || s->op == SN_INPUT || s->op == SN_PARAM;
+}
+
+void sg_ref(const SGraph *g, int id, FILE *out)
+{
+    const SNode *s = &g->nodes[id];
+    if (s->op == SN_CONST) {
+        if (s->v < 0)
+            fprintf(out, "(%.17g)", s->v);
+        else
+            fprintf(out, "%.17g", s->v);
+    } else if (s->op == SN_INPUT) {
+        if ((int)s->v < 9)
+            fprintf(out, "F[%d]", (int)s->v);
+        else if ((int)s->v < 16)
+            fputs("s", out); /* the phase field (law.h: LAW_INPUT_S) */
+        else
+            fprintf(out, "st[%d]", (int)s->v - 16); /* a state slot (LAW_INPUT_STATE) */
+    } else if (s->op == SN_PARAM) {
+        fprintf(out, "p%d", (int)s->v);
+    } else if (s->op == SN_PART) {
+        fprintf(out, "t%d[%d]", s->a, (int)s->v);
+    } else {
+        fprintf(out, "t%d", id);
+    }
+}
+
+/* A function's argument: constants written as doubles (2.0, not 2), so that C++ (the CUDA
+ * target) picks the double overload of fmax, pow, ... on the device too. */
+static void arg_ref(const SGraph *g, int id, FILE *out)
+{
+    const SNode *s = &g->nodes[id];
+    if (s->op != SN_CONST || s->v != floor(s->v) || fabs(s->v) >= 1e15) {
+        sg_ref(g, id, out);
+        return;
+    }
+    if (s->v < 0)
+        fprintf(out, "(%.17g.0)", s->v);
+    else
+        fprintf(out, "%.17g.0", s->v);
+}
+
+static const char *infix(SnOp op)
+{
+    static const char *const ops[] = {
+        [SN_ADD] = "+", [SN_SUB] = "-", [SN_MUL] = "*", [SN_DIV] = "/", [SN_LT] = "<",
+        [SN_LE] = "<=", [SN_GT] = ">", [SN_GE] = ">=", [SN_EQ] = "==", [SN_NE] = "!=",
+        [SN_AND] = "&&", [SN_OR] = "||",
+    };
+    return (size_t)op < sizeof ops / sizeof ops[0] ? ops[op] : NULL;
+}
+
+static void emit_node(const SGraph *g, int id, FILE *out)
+{
+    const SNode *s = &g->nodes[id];
+    const char *op = infix(s->op);
+    if (op) {
+        sg_ref(g, s->a, out);
+        fprintf(out, " %s ", op);
+        sg_ref(g, s->b, out);
+        return;
+    }
+    switch (s->op) {
+    case SN_NEG: fputs("-", out); sg_ref(g, s->a, out); return;
+    case SN_NOT: fputs("!", out); sg_ref(g, s->a, out); return;
+    case SN_POW: fputs("pow(", out); break;
+    case SN_MIN: fputs("fmin(", out); break;
+    case SN_MAX: fputs("fmax(", out); break;
+    case SN_CALL: fprintf(out, "%s(", s->fn); arg_ref(g, s->a, out); fputs(")", out); return;
+    case SN_SELECT:
+        sg_ref(g, s->a, out);
+        fputs(" ? ", out);
+        sg_ref(g, s->b, out);
+        fputs(" : ", out);
+        sg_ref(g, s->c, out);
+        return;
+    default: return;
+    }
+    arg_ref(g, s->a, out);
+    fputs(", ", out);
+    arg_ref(g, s->b, out);
+    fputs(")", out);
+}
+
+static void mark(const SGraph *g, int id, char *live)
+{
+    if (id < 0 || live[id])
+        return;
+    live[id] = 1;
+    const SNode *s = &g->nodes[id];
+    if (s->op == SN_EXT) {
+        for (int k = 0; k < s->nargs; k++)
+            mark(g, s->args[k], live);
+        return;
+    }
+    mark(g, s->a, live);
+    mark(g, s->b, live);
+    mark(g, s->c, live);
+}
+
+/* double tN[nout]; fn(a0, a1, a2, tN);  or, with more than four arguments (a tensor),
+ * const double aN[n] = {a0, ...}; double tN[nout]; fn(aN, tN);  (valid C and C++) */
+static void emit_ext(const SGraph *g, int id, FILE *out, const char *indent)
+{
+    const SNode *s = &g->nodes[id];
+    int packed = s->nargs > 4;
+    if (packed)
+        fprintf(out, "%sconst double a%d[%d] = {", indent, id, s->nargs);
+    for (int k = 0; packed && k < s->nargs; k++) {
+        if (k)
+            fputs(", ", out);
+        sg_ref(g, s->args[k], out);
+    }
+    fprintf(out, "%s%sdouble t%d[%d];\n%s%s(", packed ? "};\n" : "", indent, id, s->b, indent,
+            s->fn);
+    if (packed)
+        fprintf(out, "a%d", id);
+    for (int k = 0; !packed && k < s->nargs; k++) {
+        if (k)
+            fputs(", ", out);
+        sg_ref(g, s->args[k], out);
+    }
+    fprintf(out, ", t%d);\n", id);
+}
+
+void sg_emit(const SGraph *g, const int *roots, int nroots, FILE *out, const char *indent)
+{
+    char *live = calloc((size_t)g->n + 1, 1);
+    for (int k = 0; k < nroots; k++)
+        mark(g, roots[k], live);
+    int line = -1;
+    const char *file = NULL;
+    for (int id = 0; id < g->n; id++) {
+        const SNode *s = &g->nodes[id];
+        if (!live[id] || is_leaf(s) || s->op == SN_PART)
+            continue;
+        if (s->line != line || s->file != file) {
+            line = s->line;
+            file = s->file;
+            if (file)
+                fprintf(out, "%s/* %s:%d: %s */\n", indent, source_basename(file), line,
+                        source_line_trimmed(file, line));
+        }
+        if (s->op == SN_EXT) {
+            emit_ext(g, id, out, indent);
+            continue;
+        }
+        fprintf(out, "%sconst double t%d = ", indent, id);
+        emit_node(g, id, out);
+        fputs(";\n", out);
+    }
+    free(live);
+}
+
+void sg_emit_outputs(const SGraph *g, const char *indent, const char *name, const int *ids, int n,
+                     const char *end, FILE *out)
+{
+    for (int k = 0; k < (n < 0 ? 1 : n); k++) {
+        if (n < 0)
+            fprintf(out, "%s%s = ", indent, name);
+        else
+            fprintf(out, "%s%s[%d] = ", indent, name, k);
+        sg_ref(g, ids[k], out);
+        fprintf(out, "%s\n", end);
+    }
+}

@@ -1,0 +1,20 @@
+/* source.h — source locations, and model source lines for comments in generated code. */
+#ifndef SPHC_SOURCE_H
+#define SPHC_SOURCE_H
+
+/* Where an item of a model is. */
+typedef struct {
+    const char *file; /* path as given on the command line (or the stdlib file) */
+    int line, col;    /* 1-based */
+} SrcLoc;
+
+/* The text of line `line` of `file`, leading and trailing blanks removed, with any
+ * comment terminator made harmless; "" when unavailable.  Points to a static buffer. */
+const char *source_line_trimmed(const char *file, int line);
+/* The file name without its folders. */
+const char *source_basename(const char *path);
+/* A file named in `source`, relative to it (as written when `source` lies in the current
+ * folder or name is absolute); malloc'ed. */
+char *source_beside(const char *source, const char *name);
+
+#endif
