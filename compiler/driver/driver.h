@@ -1,15 +1,19 @@
-/* driver.h — locating sphc's files, loading a model with its imports, building it. */
+/* driver.h — the driver's own work around the stages: the command line, where sphc's files
+ * are, loading a model with its imports (the first stage) and building the generated source
+ * with the target's compiler (the last). */
 #ifndef SPHC_DRIVER_H
 #define SPHC_DRIVER_H
 
-#include "front/ast.h"
 #include "check/model.h"
+#include "emit/emit.h"
+#include "front/ast.h"
+#include "lower/plan.h"
 #include "xml/xml.h"
 
 typedef struct {
     const char *input;
     const char *output;    /* -o */
-    const char *target;    /* cpu | cuda */
+    Target target;         /* --target cpu | cuda */
     const char *cuda_arch; /* --cuda-arch: nvcc's -arch (NULL: native with a GPU, else sm_90) */
     const char *emit_dir;  /* --emit-c */
     const char *dump;      /* ast | model | plan */
@@ -27,6 +31,9 @@ typedef struct {
     char lib[4096];        /* folder holding libsphrt.a */
 } Paths;
 
+/* The command line (options.c); -1 after reporting, and exits for --help and --version. */
+int parse_options(int argc, char **argv, Options *o);
+
 /* Installed layout (<prefix>/bin/sphc with <prefix>/share/sphc and <prefix>/lib) first,
  * then the source and build trees sphc was built from; SPHC_HOME overrides both. */
 int find_paths(const char *argv0, Paths *p);
@@ -35,7 +42,7 @@ int find_paths(const char *argv0, Paths *p);
  * with the options xml) and every module it imports (stdlib/NAME.sph or NAME.sph beside it). */
 int load_program(const char *path, const Paths *paths, const XmlOptions *xml, Program *prog);
 
-/* Emit C, compile and link the executable. */
-int build_program(const Model *m, const Options *o, const Paths *paths);
+/* Emit the plan's program for o->target, compile and link the executable. */
+int build_program(const Plan *plan, const Options *o, const Paths *paths);
 
 #endif

@@ -1,32 +1,22 @@
-/* emit.h — the C emitter (model.c for the OpenMP target). */
+/* emit.h — the fourth stage: a plan as the source of a program for a target, model.c for the
+ * CPU (OpenMP) or model.cu for an NVIDIA GPU (CUDA).  The targets share the program's
+ * structure and differ by a table (emit_target.c). */
 #ifndef SPHC_EMIT_H
 #define SPHC_EMIT_H
 
 #include <stdio.h>
 
-#include "check/model.h"
+#include "lower/plan.h"
 
-typedef struct {
-    const Model *model;
-    char **params;      /* names bound as C parameters */
-    int nparams;
-    const char *prefix; /* C spelling prefix of those names */
-} EmitScope;
+typedef enum { TARGET_CPU, TARGET_CUDA } Target;
 
-void emit_expr(FILE *out, const EmitScope *s, const Expr *e);
-int expr_may_skip(const Expr *e);
-int expr_uses_variables(const Model *m, const Expr *e);
-/* static inline int fname(const sph_pt *p, double *out): 0 = skip, 1 = value in *out */
-void emit_value_function(FILE *out, const Model *m, const char *fname, const Expr *e);
+/* The target called `name` ("cpu", "cuda") in *t: 0, or -1 when there is none. */
+int target_named(const char *name, Target *t);
+/* The generated file's suffix: "c" or "cu". */
+const char *target_suffix(Target t);
 
-/* Write the whole generated program for the CPU target.  templates_dir holds
- * body_forces.c etc.  Returns 0 or -1 (reported). */
-int emit_c_program(const Model *m, const char *templates_dir, FILE *out);
-/* The same model for the CUDA target: model.cu, built by nvcc with runtime/sph_cuda.h.
- * Returns 0, or -1 after reporting a feature the target does not support yet. */
-int emit_cuda_program(const Model *m, const char *templates_dir, FILE *out);
-
-/* Print the per-body kernel plan (sphc --dump=plan). */
-void plan_dump(const Model *m, FILE *out);
+/* Write the whole generated program for target t; templates_dir holds the templates.  Returns
+ * 0, or -1 after reporting. */
+int emit_program(const Plan *plan, Target t, const char *templates_dir, FILE *out);
 
 #endif

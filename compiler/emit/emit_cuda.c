@@ -1,15 +1,9 @@
-/* emit_cuda.c — the generated program for the CUDA target (model.cu, docs/architecture.md).
- *
- * The same constants, laws, boundary-condition passes and scene description as the CPU
- * target (emit_c.c, emit_internal.h); the body passes come from templates/body_cuda.cu and
- * the per-particle code both targets share from templates/body_particle.c.  The scene's step
- * runs every body's passes on its device view (runtime/sph_cuda.h); the stability monitor's
- * periodic look sums on the device too. */
-#include <stdlib.h>
+/* emit_cuda.c — the CUDA target's own part of the program (model.cu, docs/architecture.md):
+ * the scene's step runs every body's passes on its device view (runtime/sph_cuda.h), the
+ * device chooses the time steps (its clock), and the stability monitor's periodic look sums
+ * on the device too.  The rest is shared with the CPU target (emit_target.c). */
+#include <stdio.h>
 
-#include "util/diag.h"
-#include "emit.h"
-#include "emit_fracture.h"
 #include "emit_internal.h"
 
 /* The scene's step for the CUDA target: every body's passes on its device view. */
@@ -101,31 +95,10 @@ static void scene_monitor_cuda(Emitter *E)
     fputs("    (void)s;\n}\n\n", out);
 }
 
-int emit_cuda_program(const Model *m, const char *templates_dir, FILE *out)
+/* The CUDA target's scene: the step on the device views and the glue the runtime calls
+ * (sph_model's step, advance, sync_host, copy_state, monitor). */
+void emit_scene_cuda(Emitter *E)
 {
-    BodyPlan *plans = calloc((size_t)m->nbodies, sizeof *plans);
-    int rc = lower_model(m, plans) ? -1 : 0;
-    if (!rc) {
-        Emitter E = {m, plans, templates_dir, out, 1};
-        emit_header(&E);
-        if (model_has_contact(m))
-            fputs("#include \"sph_cuda_contact.h\" /* contact between the bodies */\n\n", out);
-        emit_consts_fns(&E);
-        for (int i = 0; i < m->nbodies; i++) {
-            const BodyModel *b = &m->bodies[i];
-            emit_material(&E, b, &plans[i]);
-            emit_template(&E, "body_particle.c", b, &plans[i]);
-            emit_template(&E, "body_cuda.cu", b, &plans[i]);
-            emit_template(&E, "body_output.c", b, &plans[i]);
-            emit_bc_passes(&E, b, &plans[i]);
-            emit_fracture_restrict(out, m, b, 1);
-        }
-        scene_step_cuda(&E);
-        scene_monitor_cuda(&E);
-        emit_model_desc(&E);
-    }
-    for (int i = 0; i < m->nbodies; i++)
-        sg_free(&plans[i].law);
-    free(plans);
-    return rc;
+    scene_step_cuda(E);
+    scene_monitor_cuda(E);
 }

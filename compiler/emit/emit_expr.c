@@ -5,7 +5,7 @@
  * for "do nothing" and 1 with the value in *out; its `if`s become C if/else. */
 #include <string.h>
 
-#include "emit.h"
+#include "emit_expr.h"
 #include "check/eval.h"
 #include "lang/builtins.h"
 

@@ -4,8 +4,6 @@
  * The passes themselves are in templates/ under //@if FRACTURE. */
 #include <string.h>
 
-#include "emit.h"
-#include "emit_fracture.h"
 #include "emit_internal.h"
 #include "util/source.h"
 
@@ -34,8 +32,9 @@ void emit_fracture_material(FILE *out, const BodyModel *b, const BodyPlan *p)
 
 /* The lower bound of the phase field: after each update s = max(s, bound) wherever the
  * expression gives a value (skip: no bound there). */
-void emit_fracture_restrict(FILE *out, const Model *m, const BodyModel *b, int cuda)
+void emit_fracture_restrict(Emitter *E, const BodyModel *b)
 {
+    FILE *out = E->out;
     const FractureModel *f = &b->fracture;
     if (!f->restrict_expr)
         return;
@@ -43,19 +42,19 @@ void emit_fracture_restrict(FILE *out, const Model *m, const BodyModel *b, int c
     snprintf(fname, sizeof fname, "%s_phase_min", b->name);
     fprintf(out, "/* %s:%d: %s */\n", source_basename(f->restrict_loc.file), f->restrict_loc.line,
             source_line_trimmed(f->restrict_loc.file, f->restrict_loc.line));
-    emit_value_function(out, m, fname, f->restrict_expr);
+    emit_value_function(out, E->m, fname, f->restrict_expr);
     fprintf(out, "\n/* The restriction of body %s's phase field at time t (after its update). */\n"
                  "static void %s_restrict(sph_body *b, sph_time t, sph_time dt)\n{\n"
-                 "    enum { D = %d };\n%s"
-                 "        sph_pt p;\n        sph_point(b, i, D, t, dt, &p);\n"
+                 "    enum { D = %d };\n",
+            b->name, b->name, E->m->dim);
+    E->target->loop_open(out, "    ", "i", "b->n");
+    fprintf(out, "        sph_pt p;\n        sph_point(b, i, D, t, dt, &p);\n"
                  "        double smin;\n"
                  "        if (%s(&p, &smin) && b->s[i] < smin)\n"
-                 "            b->s[i] = smin;\n"
-                 "    }%s\n}\n\n",
-            b->name, b->name, m->dim,
-            cuda ? "    SPH_FOR(i, b->n, {\n"
-                 : "#pragma omp parallel for schedule(static)\n    for (int i = 0; i < b->n; i++) {\n",
-            fname, cuda ? ");" : "");
+                 "            b->s[i] = smin;\n",
+            fname);
+    E->target->loop_close(out, "    ");
+    fputs("}\n\n", out);
 }
 
 /* static const sph_quad B_notches[]; static const sph_fracture_desc B_fracture */

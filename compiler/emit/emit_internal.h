@@ -1,44 +1,105 @@
-/* emit_internal.h — the pieces of the generated program that the CPU emitter (emit_c.c) and
- * the CUDA emitter (emit_cuda.c) share: constants, functions and laws (SPH_FN), templates,
- * boundary-condition passes, the parts of a body's step and the scene description. */
+/* emit_internal.h — the pieces of the emitter: constants, functions and laws (SPH_FN), a
+ * body's templates, its boundary-condition passes, the step and the scene description,
+ * shared by both targets, and the table of what differs between the targets. */
 #ifndef SPHC_EMIT_INTERNAL_H
 #define SPHC_EMIT_INTERNAL_H
 
 #include <stdio.h>
 
 #include "check/model.h"
+#include "emit.h"
+#include "emit_expr.h"
 #include "lower/plan.h"
 
+typedef struct Emitter Emitter;
+
+/* What a body's code is made of, in the order of the generated file. */
+typedef enum {
+    PIECE_LAW,      /* its material law (emit_functions.c) */
+    PIECE_GRAVITY,  /* its gravity as a table the passes read */
+    PIECE_TEMPLATE, /* a file of templates/ filled for it */
+    PIECE_BCS,      /* its boundary-condition values and passes */
+    PIECE_RESTRICT, /* the lower bound of its phase field */
+    PIECE_END
+} PieceKind;
+
 typedef struct {
+    PieceKind kind;
+    const char *file; /* PIECE_TEMPLATE */
+} BodyPiece;
+
+/* What differs between the targets; every member must be set (emit_program checks). */
+typedef struct {
+    const char *name;   /* as in --target */
+    const char *suffix; /* of the generated file */
+    /* The file's opening comment and includes. */
+    void (*header)(Emitter *E);
+    /* A parallel loop over particles `i` < `n` (one thread each on the device), opened and
+     * closed at the indent given. */
+    void (*loop_open)(FILE *out, const char *indent, const char *i, const char *n);
+    void (*loop_close)(FILE *out, const char *indent);
+    /* A pass of body `body` in the step: `body_pass(args);`, timed for --profile. */
+    void (*pass)(FILE *out, const char *body, const char *pass, const char *args);
+    /* Whether a boundary condition's time window is evaluated inside its loop (where the
+     * device reads t and dt) rather than once before it. */
+    int windows_in_loops;
+    /* The pieces of each body's code. */
+    const BodyPiece *body;
+    /* The scene's step and whatever glue the runtime calls (model_step, ...). */
+    void (*scene)(Emitter *E);
+    /* Before the scene description, and the members of sph_model it adds. */
+    const char *desc_prologue;
+    const char *desc_members;
+} EmitTarget;
+
+struct Emitter {
     const Model *m;
-    const BodyPlan *plans;
+    const Plan *plan;
+    const BodyPlan *plans; /* plan->bodies */
     const char *templates;
     FILE *out;
-    int cuda;           /* the CUDA target (model.cu): device passes, SPH_FOR loops */
-} Emitter;
+    const EmitTarget *target;
+};
 
-void emit_header(Emitter *E);
+/* The targets' tables (emit_target.c) and the targets' scenes. */
+const EmitTarget *emit_target(Target t);
+void emit_scene_cpu(Emitter *E);  /* emit_step.c */
+void emit_scene_cuda(Emitter *E); /* emit_cuda.c */
+
+/* ---- constants, user functions and material laws (emit_functions.c) */
+/* The model line at loc, trimmed, for a comment. */
+const char *emit_line_of(SrcLoc loc);
+void emit_consts_fns(Emitter *E);
+void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p);
+
+/* ---- a body's templates (emit_body.c) */
+/* templates/FILE filled for body b (its features and numbers). */
+void emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyPlan *p);
+void emit_gravity(Emitter *E, const BodyModel *b, const BodyPlan *p);
+
+/* ---- boundary conditions (emit_bcs.c) */
+/* Body b's BC value functions and the passes its plan needs. */
+void emit_bc_passes(Emitter *E, const BodyModel *b, const BodyPlan *p);
+
+/* ---- the step (emit_step.c) */
+/* Every body's passes of one step, body i named by the printf format `body` ("%d": i); with
+ * contact, every body's forces, then the call `contact`, then every body's update. */
+void emit_step_bodies(Emitter *E, const char *body, const char *contact);
+
+/* ---- phase-field fracture (emit_fracture.c) */
+/* The rest of the material function after its opening comment line. */
+void emit_fracture_material(FILE *out, const BodyModel *b, const BodyPlan *p);
+/* B_phase_min and B_restrict(b, t, dt), when the body restricts its phase field. */
+void emit_fracture_restrict(Emitter *E, const BodyModel *b);
+/* B_notches and B_fracture for the body description. */
+void emit_fracture_desc(FILE *out, const BodyModel *b);
+
+/* ---- the scene description and main() (emit_desc.c) */
 /* s as a C string literal (quotes, backslashes and control characters escaped). */
 void emit_c_string(FILE *out, const char *s);
 /* "file.sph:LINE" of loc as a C string literal: where a model item is, for the runtime's
  * messages. */
 void emit_where(FILE *out, SrcLoc loc);
-void emit_consts_fns(Emitter *E);
-void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p);
-/* templates/FILE filled for body b (its features and numbers). */
-void emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyPlan *p);
-void emit_bc_values(Emitter *E, const BodyModel *b);
-/* The velocity or force boundary-condition pass of body b (loops as SPH_FOR for CUDA). */
-void emit_bc_pass(Emitter *E, const BodyModel *b, BcKind kind);
-/* Body b's BC value functions and the passes its plan needs. */
-void emit_bc_passes(Emitter *E, const BodyModel *b, const BodyPlan *p);
-/* Body i's part of the step up to its internal forces, and from its force BCs to the end. */
-void emit_step_forces(Emitter *E, int i);
-void emit_step_update(Emitter *E, int i);
-/* Every body's passes of one step, body i named by the printf format `body` ("%d": i); with
- * contact, every body's forces, then the call `contact`, then every body's update. */
-void emit_step_bodies(Emitter *E, const char *body, const char *contact);
-/* The static scene description and main(). */
 void emit_model_desc(Emitter *E);
 
 #endif

@@ -1,5 +1,6 @@
-/* plan.h — the lowered kernel plan of each body: which features its code needs.
- * Computed once from the checked model (lower.c); the emitters only read it. */
+/* plan.h — the third stage's product: the lowered kernel plan of each body, which features
+ * its code needs and its material law as a folded scalar graph.  Computed once from the
+ * checked model (lower.c); the emitters only read it. */
 #ifndef SPHC_PLAN_H
 #define SPHC_PLAN_H
 
@@ -24,7 +25,20 @@ typedef struct {
     LawRoots roots;
 } BodyPlan;
 
-/* Returns 0, or -1 after reporting. plans has m->nbodies entries. */
-int lower_model(const Model *m, BodyPlan *plans);
+/* The plan of a whole scene. */
+typedef struct {
+    const Model *model;
+    BodyPlan *bodies;   /* model->nbodies plans */
+    int nbodies;
+    int contact;        /* contact between the bodies (model_has_contact) */
+    int fracture;       /* some body has phase-field fracture */
+} Plan;
+
+/* Returns 0, or -1 after reporting (and freeing what it built). */
+int lower_model(const Model *m, Plan *plan);
+void plan_free(Plan *plan);
+
+/* Print the plan (sphc --dump=plan): each body's features and its law's graph. */
+void plan_dump(const Plan *plan, FILE *out);
 
 #endif

@@ -1,0 +1,148 @@
+/* cc.c — the last stage: the generated source written to a file and built by the target's
+ * compiler (cc for the CPU, nvcc for CUDA) against the runtime. */
+#define _XOPEN_SOURCE 700
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "util/diag.h"
+#include "driver.h"
+#include "emit/emit.h"
+
+static int run_command(char *const argv[])
+{
+    pid_t pid = fork();
+    if (pid < 0)
+        return -1;
+    if (pid == 0) {
+        execvp(argv[0], argv);
+        fprintf(stderr, "sphc: error: cannot run '%s': %s\n", argv[0], strerror(errno));
+        _exit(127);
+    }
+    int status;
+    if (waitpid(pid, &status, 0) < 0)
+        return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+static int write_source(const Plan *plan, Target target, const Paths *paths, const char *file)
+{
+    FILE *f = fopen(file, "w");
+    if (!f) {
+        diag_fatal_noloc("cannot write '%s': %s", file, strerror(errno));
+        return -1;
+    }
+    int r = emit_program(plan, target, paths->templates, f);
+    if (fclose(f) != 0)
+        r = -1;
+    return r;
+}
+
+/* nvcc: $CUDA_HOME/bin/nvcc, else the first on PATH; NULL when there is none. */
+static const char *find_nvcc(char *buf, size_t size)
+{
+    const char *home = getenv("CUDA_HOME");
+    if (home && *home) {
+        snprintf(buf, size, "%s/bin/nvcc", home);
+        if (access(buf, X_OK) == 0)
+            return buf;
+    }
+    const char *path = getenv("PATH");
+    while (path && *path) {
+        const char *end = strchr(path, ':');
+        size_t n = end ? (size_t)(end - path) : strlen(path);
+        snprintf(buf, size, "%.*s/nvcc", (int)n, path);
+        if (n && access(buf, X_OK) == 0)
+            return buf;
+        path = end ? end + 1 : NULL;
+    }
+    return NULL;
+}
+
+/* The CUDA target: nvcc builds model.cu with runtime/sph_cuda.h and links the host runtime. */
+static int compile_cuda(const Model *m, const Options *o, const char *src, const char *lib,
+                        const char *inc, const char *exe)
+{
+    char nvcc[4096], arch[256];
+    if (!find_nvcc(nvcc, sizeof nvcc)) {
+        diag_fatal_noloc("--target cuda needs nvcc, which is neither in $CUDA_HOME/bin nor on "
+                         "PATH (install the CUDA toolkit, or use --target cpu)");
+        return -1;
+    }
+    const char *a = o->cuda_arch;
+    if (!a) {
+        a = access("/dev/nvidiactl", F_OK) == 0 ? "native" : "sm_90";
+        if (strcmp(a, "native"))
+            fprintf(stderr, "sphc: note: no GPU found on this machine; building %s for sm_90 "
+                            "(--cuda-arch to choose)\n", m->name);
+    }
+    snprintf(arch, sizeof arch, "-arch=%s", a);
+    char *argv[] = {nvcc, "-std=c++20", "--extended-lambda", "-O3", arch,
+                    "-Xcompiler", "-fopenmp,-Wall,-Wextra", (char *)inc, (char *)src, (char *)lib,
+                    "-lgomp", "-lm", "-o", (char *)exe, NULL};
+    return run_command(argv);
+}
+
+/* The CPU target: cc (or $CC) builds model.c with OpenMP and links the runtime.
+ * -ffp-contract=fast: let a*b+c become one fused multiply-add (ISO C mode turns that off by
+ * default); -fno-math-errno: math functions need not set errno, so they inline. */
+static int compile_c(const Model *m, const Options *o, const char *src, const char *lib,
+                     const char *inc, const char *exe)
+{
+    (void)m, (void)o;
+    const char *cc = getenv("CC");
+    char *argv[] = {(char *)(cc && *cc ? cc : "cc"), "-std=c11", "-O3", "-march=native",
+                    "-ffp-contract=fast", "-fno-math-errno", "-fopenmp", "-Wall", "-Wextra",
+                    (char *)inc, (char *)src, (char *)lib, "-lm", "-o", (char *)exe, NULL};
+    return run_command(argv);
+}
+
+/* Each target's compiler, and its name in the message when it fails. */
+static const struct {
+    int (*compile)(const Model *m, const Options *o, const char *src, const char *lib,
+                   const char *inc, const char *exe);
+    const char *name;
+} COMPILERS[] = {
+    [TARGET_CPU] = {compile_c, "the C compiler"},
+    [TARGET_CUDA] = {compile_cuda, "nvcc"},
+};
+
+int build_program(const Plan *plan, const Options *o, const Paths *paths)
+{
+    const Model *m = plan->model;
+    char dir[4096];
+    if (o->emit_dir) {
+        snprintf(dir, sizeof dir, "%s", o->emit_dir);
+        mkdir(dir, 0777);
+    } else {
+        snprintf(dir, sizeof dir, "/tmp/sphc-XXXXXX");
+        if (!mkdtemp(dir)) {
+            diag_fatal_noloc("cannot create a temporary folder: %s", strerror(errno));
+            return -1;
+        }
+    }
+    char src[4200], lib[4200], inc[4200];
+    snprintf(src, sizeof src, "%s/%s.%s", dir, m->name, target_suffix(o->target));
+    snprintf(lib, sizeof lib, "%s/libsphrt%s.a", paths->lib, m->single ? "_single" : "");
+    snprintf(inc, sizeof inc, "-I%s", paths->include);
+    if (write_source(plan, o->target, paths, src))
+        return -1;
+    if (o->emit_only)
+        return 0;
+    const char *exe = o->output ? o->output : m->name;
+    int rc = COMPILERS[o->target].compile(m, o, src, lib, inc, exe);
+    if (!o->emit_dir) {
+        remove(src);
+        rmdir(dir);
+    }
+    if (rc != 0) {
+        diag_fatal_noloc("%s failed on the generated code (exit %d); rerun with --emit-c DIR to "
+                         "inspect it", COMPILERS[o->target].name, rc);
+        return -1;
+    }
+    return 0;
+}

@@ -1,0 +1,111 @@
+/* emit_functions.c — the generated program's functions that both targets compile for the
+ * host and the device (SPH_FN): the model's constants and user functions, and each body's
+ * material law from its folded scalar graph. */
+#include <string.h>
+
+#include "emit_internal.h"
+#include "util/source.h"
+
+const char *emit_line_of(SrcLoc loc)
+{
+    return source_line_trimmed(loc.file, loc.line);
+}
+
+static int names(const Expr *e, const char *name)
+{
+    if (e->kind == EX_NAME && !strcmp(e->name, name))
+        return 1;
+    for (int i = 0; i < e->nargs; i++)
+        if (names(e->args[i], name))
+            return 1;
+    return 0;
+}
+
+/* Whether constant `name` appears in an expression the program evaluates at run time (the
+ * others were folded into numbers by the compiler and need no C constant). */
+static int const_used(const Model *m, const char *name)
+{
+    for (int i = 0; i < m->nfns; i++) {
+        int shadowed = 0;
+        for (int k = 0; k < m->fns[i].nparams; k++)
+            shadowed |= !strcmp(m->fns[i].params[k], name);
+        if (!shadowed && names(m->fns[i].body, name))
+            return 1;
+    }
+    for (int i = 0; i < m->nbodies; i++) {
+        const BodyModel *b = &m->bodies[i];
+        for (int k = 0; k < b->nbcs; k++)
+            if (b->bcs[k].comps && names(b->bcs[k].value, name))
+                return 1;
+        if (b->fracture.restrict_expr && names(b->fracture.restrict_expr, name))
+            return 1;
+    }
+    for (int i = 0; i < m->nexpects; i++)
+        if (m->expects[i].reference && names(m->expects[i].reference, name))
+            return 1;
+    return 0;
+}
+
+void emit_consts_fns(Emitter *E)
+{
+    const Model *m = E->m;
+    for (int i = 0; i < m->nconsts; i++)
+        if (const_used(m, m->consts[i].name))
+            fprintf(E->out, "static const double k_%s = %.17g; /* %s:%d */\n", m->consts[i].name,
+                m->consts[i].value, source_basename(m->consts[i].loc.file), m->consts[i].loc.line);
+    for (int i = 0; i < m->nfns; i++) {
+        const FnDef *f = &m->fns[i];
+        fprintf(E->out, "\n/* %s:%d: %s */\nSPH_FN double f_%s(", source_basename(f->loc.file),
+                f->loc.line, emit_line_of(f->loc), f->name);
+        for (int k = 0; k < f->nparams; k++)
+            fprintf(E->out, "%sdouble a_%s", k ? ", " : "", f->params[k]);
+        if (!f->nparams)
+            fputs("void", E->out);
+        fputs(")\n{\n    return ", E->out);
+        EmitScope s = {m, f->params, f->nparams, "a_"};
+        emit_expr(E->out, &s, f->body);
+        fputs(";\n}\n", E->out);
+    }
+    if (m->nconsts || m->nfns)
+        fputs("\n", E->out);
+}
+
+void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
+{
+    FILE *out = E->out;
+    fprintf(out, "/* ==== body %s ==== */\n\n/* Material law '%s' (%s:%d), constants folded:",
+            b->name, b->law->name, source_basename(b->law->loc.file), b->law->loc.line);
+    for (int k = 0; k < b->law->nparams; k++)
+        fprintf(out, " %s = %g", b->law->params[k], b->law_args[k]);
+    if (p->fracture) {
+        emit_fracture_material(out, b, p);
+        return;
+    }
+    const LawRoots *r = &p->roots;
+    if (p->nstate) {
+        fprintf(out, ".\n * In: deformation gradient F (3x3), the particle's state st (%d values:",
+                p->nstate);
+        for (int k = 0; k < r->nstates; k++)
+            fprintf(out, " %s%s", r->states[k].name, r->states[k].size == 9 ? "[9]" : "");
+        fprintf(out, ").\n * Out: second Piola-Kirchhoff stress S, strain energy density psi, "
+                     "the state at the end of the step st_new. */\n");
+        fprintf(out, "SPH_FN void %s_material(const double F[9], const double *st, "
+                     "double *st_new, double S[9],\n                                   double *psi)\n{\n",
+                b->name);
+    } else {
+        fprintf(out, ".\n * In: deformation gradient F (3x3). Out: second Piola-Kirchhoff stress S, "
+                     "strain energy density psi. */\n");
+        fprintf(out, "SPH_FN void %s_material(const double F[9], double S[9], double *psi)\n{\n",
+                b->name);
+    }
+    int roots[10 + LAW_MAX_SLOTS];
+    memcpy(roots, r->S, sizeof r->S);
+    roots[9] = r->psi;
+    memcpy(roots + 10, r->next, (size_t)p->nstate * sizeof(int));
+    fputs(p->nstate ? "    (void)F;\n    (void)st;\n" : "    (void)F;\n", out);
+    sg_emit(&p->law, roots, 10 + p->nstate, out, "    ");
+    sg_emit_outputs(&p->law, "    ", "S", r->S, 9, ";", out);
+    sg_emit_outputs(&p->law, "    ", "*psi", &r->psi, -1, ";", out);
+    sg_emit_outputs(&p->law, "    ", "st_new", r->next, p->nstate, ";", out);
+    fputs("}\n\n", out);
+}
