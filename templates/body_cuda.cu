@@ -37,8 +37,7 @@ SPH_FN int @B@_pair(const sph_body *b, int i, size_t p, sph_real w[@DIM@], sph_r
     *g = b->gtab[e];
 //@if FRACTURE
     *l = b->ltab[e];
-//@endif
-//@if NO_FRACTURE
+//@else
     *l = 0;
 //@endif
 #endif
@@ -83,8 +82,7 @@ static void @B@_momentum_pass(sph_body *b)
     sph_cuda_zero(b->red + SPH_RED_VISC_RATE, 1);
     /* each thread returns its particle's share of the viscous power: one atomic per block */
     SPH_FOR_SUM(i, b->n, b->red + SPH_RED_VISC_RATE, {
-//@endif
-//@if NO_VISCOSITY
+//@else
     SPH_FOR(i, b->n, {
 //@endif
         const sph_real inv_rho = (sph_real)(1.0 / b->rho0);
@@ -191,19 +189,17 @@ static void @B@_update(sph_body *b, sph_time dt)
     enum { D = @DIM@ };
     sph_cuda_zero(b->red + SPH_RED_VMAX2, 3);
     SPH_FOR_MAX3(i, b->n, b->red + SPH_RED_VMAX2, {
-//@if VERLET
-        const double *vn = b->v, du = dt;
-//@endif
 //@if SYMPLECTIC
         const double *vn = b->work, du = 0.5 * dt;
+//@else
+        const double *vn = b->v, du = dt;
 //@endif
         double v2 = 0, a2 = 0;
 //@if FRACTURE
-//@if VERLET
-        const double sdn = b->sd[i];
-//@endif
 //@if SYMPLECTIC
         const double sdn = b->sd_n[i];
+//@else
+        const double sdn = b->sd[i];
 //@endif
         b->sd[i] = @B@_phase_rate(sdn, b->sdd[i], b->H[i], dt);
         @B@_phase_move(&b->s[i], &b->sd[i], du);
@@ -218,8 +214,7 @@ static void @B@_update(sph_body *b, sph_time dt)
 //@if CRUSH
         /* the compression bound (runtime/sim.c): 1 / lambda^2, infinite at lambda = 0 */
         return sph_max3{v2, a2, 1.0 / sph_bound_stretch2(b->lam2[i])};
-//@endif
-//@if NO_CRUSH
+//@else
         return sph_max3{v2, a2, 0.0};
 //@endif
     });
@@ -250,8 +245,7 @@ static void @B@_monitor(sph_body *b)
             bad = 1;
 //@if CRUSH
         const double l2 = b->lam2[i]; /* the stress pass's, of the same F */
-//@endif
-//@if NO_CRUSH
+//@else
         const double l2 = sph_stretch2_min(F, D);
 //@endif
         return sph_max3{bad, l2 < 1 ? 1 - l2 : 0.0, 0.0}; /* l2 <= 1: 1 - l2 >= 0 */

@@ -101,8 +101,7 @@ static void @B@_momentum_pass(sph_body *b)
         for (int r = 0; r < D; r++)
 //@if GRAVITY
             acc[i * D + r] = @B@_gravity[r];
-//@endif
-//@if NO_GRAVITY
+//@else
             acc[i * D + r] = 0;
 //@endif
 //@if VISCOSITY
@@ -111,8 +110,7 @@ static void @B@_momentum_pass(sph_body *b)
     for (int colour = 0; colour < 2; colour++) {
 //@if VISCOSITY
 #pragma omp parallel for schedule(static) reduction(+ : visc_power)
-//@endif
-//@if NO_VISCOSITY
+//@else
 #pragma omp parallel for schedule(static)
 //@endif
         for (int s = colour; s < b->nstripes; s += 2)

@@ -10,13 +10,13 @@ static void @B@_stress_output(sph_body *b)
 //@if FRACTURE
         double ep;
         @B@_material(F, b->s[i], S, &e, &ep);
-//@endif
+//@else
 //@if STATE
         double st_new[@NSTATE@]; /* the state as the last step left it: not advanced here */
         @B@_material(F, b->state + (size_t)i * @NSTATE@, st_new, S, &e);
-//@endif
-//@if PLAIN_LAW
+//@else
         @B@_material(F, S, &e);
+//@endif
 //@endif
         sph_mat3_mul(F, S, FS);
         sph_mat3_mul_bt(FS, F, sig);

@@ -57,16 +57,16 @@ SPH_FN void @B@_particle_stress(sph_body *b, int i, const double *A)
     b->sdd[i] = @PF_A@ * (2 * @EPS0@ * b->lap[i] + (1 - b->s[i]) * (0.5 / @EPS0@) -
                        2 * b->s[i] * b->H[i] * (1.0 / @GC@));
     b->lap[i] = 0; /* ready for the next step's gradient pass */
-//@endif
+//@else
 //@if STATE
     /* the law's state (plasticity) advances once per step, here */
     double *st = b->state + (size_t)i * @NSTATE@, st_new[@NSTATE@];
     @B@_material(F, st, st_new, S, &e);
     for (int k = 0; k < @NSTATE@; k++)
         st[k] = st_new[k];
-//@endif
-//@if PLAIN_LAW
+//@else
     @B@_material(F, S, &e);
+//@endif
 //@endif
     b->psi[i] = e;
     for (int r = 0; r < D; r++) /* the out-of-plane entries of a 2D F never change */
@@ -108,8 +108,7 @@ SPH_FN void @B@_particle_stress(sph_body *b, int i, const double *A)
             const double s = sph_cofactor(F, sph_axis(D, r), sph_axis(D, c));
 //@if FRACTURE
             b->Cv[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)(s * vdeg);
-//@endif
-//@if NO_FRACTURE
+//@else
             b->Cv[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)s;
 //@endif
         }

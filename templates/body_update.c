@@ -39,40 +39,36 @@ static void @B@_predict(sph_body *b, double dt)
 
 /* The update that ends a step, with the max |v|^2 and |a|^2 of eq. 65-66 over free
  * components:
-//@if VERLET
- *   Verlet (Alg. 1, step 4):      v_{n+1} = v_n + dt a_n,        u_{n+1} = u_n + dt v_{n+1}
-//@endif
 //@if SYMPLECTIC
  *   symplectic corrector (Alg. 2): v_{n+1} = v_n + dt a_{n+1/2},  u_{n+1} = u_{n+1/2} + dt/2 v_{n+1}
+//@else
+ *   Verlet (Alg. 1, step 4):      v_{n+1} = v_n + dt a_n,        u_{n+1} = u_n + dt v_{n+1}
 //@endif
  */
 static void @B@_update(sph_body *b, double dt)
 {
     enum { D = @DIM@ };
     double *u = b->u, *v = b->v;
-//@if VERLET
-    const double *vn = b->v, du = dt;
-//@endif
 //@if SYMPLECTIC
     const double *vn = b->work, du = 0.5 * dt;
+//@else
+    const double *vn = b->v, du = dt;
 //@endif
     double vmax2 = 0, amax2 = 0;
 //@if FRACTURE
     /* the phase field with the same scheme (Alg. 1-2): s' from s'', then s */
     double *restrict s = b->s, *restrict sd = b->sd;
     const double *restrict sdd = b->sdd, *restrict H = b->H;
-//@if VERLET
-    const double *sdn = b->sd;
-//@endif
 //@if SYMPLECTIC
     const double *sdn = b->sd_n;
+//@else
+    const double *sdn = b->sd;
 //@endif
 //@endif
 //@if CRUSH
     double lam2min = 1; /* the smallest principal stretch squared (stress pass) */
 #pragma omp parallel for schedule(static) reduction(max : vmax2, amax2) reduction(min : lam2min)
-//@endif
-//@if NO_CRUSH
+//@else
 #pragma omp parallel for schedule(static) reduction(max : vmax2, amax2)
 //@endif
     for (int i = 0; i < b->n; i++) {

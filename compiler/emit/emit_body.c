@@ -5,7 +5,7 @@
 #include "emit_internal.h"
 #include "template.h"
 
-void emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyPlan *p)
+int emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyPlan *p)
 {
     TplEnv env = {0};
     tpl_set(&env, "B", "%s", b->name);
@@ -15,21 +15,9 @@ void emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyP
     tpl_set(&env, "BETA2", "%.17g", b->beta2);
     tpl_set(&env, "C0", "%.17g", b->c0);
     tpl_set(&env, "HG", "%.17g", 0.5 * b->hourglass * b->E); /* alpha E / 2 */
-    tpl_feature(&env, "VISCOSITY", p->viscosity);
-    tpl_feature(&env, "NO_VISCOSITY", !p->viscosity);
-    tpl_feature(&env, "BETA2", p->beta2);
-    tpl_feature(&env, "HOURGLASS", p->hourglass);
-    tpl_feature(&env, "GRAVITY", p->gravity);
-    tpl_feature(&env, "NO_GRAVITY", !p->gravity);
-    tpl_feature(&env, "VELOCITY_BCS", p->velocity_bcs);
-    tpl_feature(&env, "VERLET", !p->symplectic);
-    tpl_feature(&env, "SYMPLECTIC", p->symplectic);
-    tpl_feature(&env, "FRACTURE", p->fracture);
-    tpl_feature(&env, "NO_FRACTURE", !p->fracture);
-    tpl_feature(&env, "STATE", p->nstate > 0);
-    tpl_feature(&env, "PLAIN_LAW", !p->fracture && !p->nstate);
-    tpl_feature(&env, "CRUSH", p->crush);
-    tpl_feature(&env, "NO_CRUSH", !p->crush);
+#define PLAN_SWITCH(member, name, sw, value) tpl_switch(&env, #sw, p->member);
+    PLAN_FEATURES(PLAN_SWITCH)
+#undef PLAN_SWITCH
     tpl_set(&env, "NSTATE", "%d", p->nstate);
     const double *g = E->m->gravity; /* compact components */
     tpl_set(&env, "G0", "%.17g", g[0]);
@@ -44,8 +32,10 @@ void emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyP
     }
     char path[4096];
     snprintf(path, sizeof path, "%s/%s", E->templates, file);
-    tpl_expand(path, &env, E->out);
+    int rc = tpl_expand(path, &env, E->out);
+    tpl_free(&env);
     fputs("\n", E->out);
+    return rc;
 }
 
 /* The CPU passes read gravity from a table; the CUDA template takes the numbers (G0..G2). */

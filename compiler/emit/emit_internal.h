@@ -73,8 +73,8 @@ void emit_consts_fns(Emitter *E);
 void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p);
 
 /* ---- a body's templates (emit_body.c) */
-/* templates/FILE filled for body b (its features and numbers). */
-void emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyPlan *p);
+/* templates/FILE filled for body b (its features and numbers); -1 after reporting. */
+int emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyPlan *p);
 void emit_gravity(Emitter *E, const BodyModel *b, const BodyPlan *p);
 
 /* ---- boundary conditions (emit_bcs.c) */

@@ -26,16 +26,18 @@ static int target_complete(const EmitTarget *t)
     return missing ? -1 : 0;
 }
 
-static void body_piece(Emitter *E, const BodyPiece *piece, const BodyModel *b, const BodyPlan *p)
+/* One piece of body b's code; -1 after reporting. */
+static int body_piece(Emitter *E, const BodyPiece *piece, const BodyModel *b, const BodyPlan *p)
 {
     switch (piece->kind) {
-    case PIECE_LAW: emit_material(E, b, p); return;
-    case PIECE_GRAVITY: emit_gravity(E, b, p); return;
-    case PIECE_TEMPLATE: emit_template(E, piece->file, b, p); return;
-    case PIECE_BCS: emit_bc_passes(E, b, p); return;
-    case PIECE_RESTRICT: emit_fracture_restrict(E, b); return;
-    case PIECE_END: return;
+    case PIECE_LAW: emit_material(E, b, p); return 0;
+    case PIECE_GRAVITY: emit_gravity(E, b, p); return 0;
+    case PIECE_TEMPLATE: return emit_template(E, piece->file, b, p);
+    case PIECE_BCS: emit_bc_passes(E, b, p); return 0;
+    case PIECE_RESTRICT: emit_fracture_restrict(E, b); return 0;
+    case PIECE_END: return 0;
     }
+    return 0;
 }
 
 int emit_program(const Plan *plan, Target t, const char *templates_dir, FILE *out)
@@ -47,7 +49,8 @@ int emit_program(const Plan *plan, Target t, const char *templates_dir, FILE *ou
     emit_consts_fns(&E);
     for (int i = 0; i < plan->nbodies; i++)
         for (const BodyPiece *piece = E.target->body; piece->kind != PIECE_END; piece++)
-            body_piece(&E, piece, &plan->model->bodies[i], &plan->bodies[i]);
+            if (body_piece(&E, piece, &plan->model->bodies[i], &plan->bodies[i]))
+                return -1;
     E.target->scene(&E);
     emit_model_desc(&E);
     return 0;

@@ -7,24 +7,21 @@
 
 #include "plan.h"
 
-static void features(const Model *m, const BodyModel *b, BodyPlan *p)
+/* The body's BCs of that kind that set something (in 2D, not only out-of-plane components). */
+static int bcs_applied(const BodyModel *b, BcKind kind)
 {
-    p->viscosity = b->beta1 > 0 || b->beta2 > 0;
-    p->beta2 = b->beta2 > 0;
-    p->hourglass = b->hourglass > 0;
-    p->gravity = m->gravity[0] != 0 || m->gravity[1] != 0 || m->gravity[2] != 0;
-    p->symplectic = m->integrator == INTEGRATOR_SYMPLECTIC;
-    p->fracture = b->fracture.on;
-    p->restrict_phase = b->fracture.restrict_expr != NULL;
-    p->crush = model_has_crush(m);
-    p->measure = b->nmeasures > 0;
-    for (int k = 0; k < b->nbcs; k++) {
-        if (!b->bcs[k].comps)
-            continue; /* only out-of-plane components in 2D: nothing to do */
-        p->bc_fns++;
-        p->velocity_bcs |= b->bcs[k].kind == BC_VELOCITY;
-        p->force_bcs |= b->bcs[k].kind == BC_FORCE;
-    }
+    int n = 0;
+    for (int k = 0; k < b->nbcs; k++)
+        n += b->bcs[k].kind == kind && b->bcs[k].comps;
+    return n;
+}
+
+/* Each row of PLAN_FEATURES (plan.h) for body b of model m, with its law's roots r. */
+static void features(const Model *m, const BodyModel *b, const LawRoots *r, BodyPlan *p)
+{
+#define PLAN_VALUE(member, name, sw, value) p->member = (value);
+    PLAN_FEATURES(PLAN_VALUE)
+#undef PLAN_VALUE
 }
 
 int lower_model(const Model *m, Plan *plan)
@@ -39,10 +36,10 @@ int lower_model(const Model *m, Plan *plan)
         const BodyModel *b = &m->bodies[i];
         BodyPlan *p = &plan->bodies[i];
         memset(p, 0, sizeof *p);
-        features(m, b, p);
         sg_init(&p->law);
         bad |= law_build(&p->law, m, b->law, b->law_args, m->dim, b->fracture.on, &p->roots) != 0;
         p->nstate = p->roots.nslots;
+        features(m, b, &p->roots, p);
         plan->fracture |= p->fracture;
     }
     if (bad)

@@ -4,22 +4,37 @@
 #ifndef SPHC_PLAN_H
 #define SPHC_PLAN_H
 
-#include "ir/law.h"
 #include "check/model.h"
+#include "ir/law.h"
+
+/* The features of a body's code, one row each:
+ *
+ *   X(member, name in --dump=plan (NULL: not listed), switch in templates/, value)
+ *
+ * The value is computed by lower.c from the model m, the body b and its law's roots r.  The
+ * plan has an int member for each; a template's //@if SWITCH keeps its lines where the
+ * member is nonzero (//@else where it is zero), and --dump=plan prints name=member in this
+ * order.  A new feature is one row here. */
+#define PLAN_FEATURES(X)                                                                      \
+    X(viscosity, "viscosity", VISCOSITY, b->beta1 > 0 || b->beta2 > 0) /* eq. 57-60 */         \
+    X(beta2, "beta2", BETA2, b->beta2 > 0) /* the quadratic term of eq. 58 */                  \
+    X(gravity, "gravity", GRAVITY, m->gravity[0] != 0 || m->gravity[1] != 0 || m->gravity[2] != 0) \
+    X(velocity_bcs, "velocity_bcs", VELOCITY_BCS, bcs_applied(b, BC_VELOCITY) > 0)              \
+    X(force_bcs, "force_bcs", FORCE_BCS, bcs_applied(b, BC_FORCE) > 0)                          \
+    X(hourglass, "hourglass", HOURGLASS, b->hourglass > 0) /* hourglass control penalty */      \
+    X(fracture, "fracture", FRACTURE, b->fracture.on) /* phase field, eq. 6-9, 61-63 */         \
+    X(restrict_phase, "restrict", RESTRICT, b->fracture.restrict_expr != NULL)                 \
+    X(state, "state", STATE, r->nslots > 0) /* its law has state (plasticity) */               \
+    X(contact, "contact", CONTACT, model_has_contact(m)) /* between the scene's bodies */      \
+    X(crush, "crush", CRUSH, model_has_crush(m)) /* time step bound on compression */          \
+    X(measure, "measure", MEASURE, b->nmeasures > 0) /* measurement planes */                  \
+    X(bc_fns, "bc_fns", BC_FNS, bcs_applied(b, BC_VELOCITY) + bcs_applied(b, BC_FORCE))        \
+    X(symplectic, NULL, SYMPLECTIC, m->integrator == INTEGRATOR_SYMPLECTIC) /* else Verlet */
 
 typedef struct {
-    int viscosity;      /* beta1 or beta2 nonzero */
-    int beta2;          /* the quadratic term of eq. 58 */
-    int hourglass;      /* hourglass control penalty */
-    int gravity;        /* nonzero body force */
-    int velocity_bcs;   /* any velocity BC */
-    int force_bcs;      /* any force BC */
-    int symplectic;
-    int fracture;       /* phase-field fracture (eq. 6-9, 61-63) */
-    int restrict_phase; /* a lower bound on its phase field */
-    int crush;          /* the time step's bound on compression (timestep auto or stretch) */
-    int measure;        /* measurement planes */
-    int bc_fns;         /* BCs with a value function: those with an in-plane component */
+#define PLAN_MEMBER(member, name, sw, value) int member;
+    PLAN_FEATURES(PLAN_MEMBER)
+#undef PLAN_MEMBER
     int nstate;         /* state values per particle of its law (plasticity); 0: none */
     SGraph law;         /* the material law, constants folded, for this body's dimension */
     LawRoots roots;

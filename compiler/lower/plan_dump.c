@@ -34,12 +34,13 @@ void plan_dump(const Plan *plan, FILE *out)
         const BodyModel *b = &m->bodies[i];
         fprintf(out, "body %s: dim %d, law %s, %s integrator\n", b->name, m->dim, b->law->name,
                 p->symplectic ? "symplectic" : "verlet");
-        fprintf(out, "  features: viscosity=%d beta2=%d gravity=%d velocity_bcs=%d "
-                     "force_bcs=%d hourglass=%d fracture=%d restrict=%d state=%d contact=%d "
-                     "crush=%d measure=%d bc_fns=%d\n",
-                p->viscosity, p->beta2, p->gravity, p->velocity_bcs, p->force_bcs, p->hourglass,
-                p->fracture, p->restrict_phase, p->nstate > 0, plan->contact, p->crush,
-                p->measure, p->bc_fns);
+        fputs("  features:", out);
+#define PLAN_DUMP(member, name, sw, value)                                                    \
+    if (name)                                                                                  \
+        fprintf(out, " %s=%d", (const char *)name, p->member);
+        PLAN_FEATURES(PLAN_DUMP)
+#undef PLAN_DUMP
+        fputs("\n", out);
         fprintf(out, "  material law: %d graph nodes\n", count_ops(&p->law));
         int roots[10 + LAW_MAX_SLOTS];
         memcpy(roots, p->roots.S, sizeof p->roots.S);
