@@ -4,7 +4,7 @@
  *       3 |   velocity z = sinn(t)
  *         |                ^
  *
- * The source line is read again from the file named in the location; when it
+ * The source line comes from the file named in the location (source.c); when it
  * cannot be read only the first line is printed.  Columns count bytes; tabs
  * before the caret are copied so that the caret lines up. */
 #include <stdarg.h>
@@ -21,52 +21,13 @@ enum { MAX_ERRORS = 50 };
 static int n_errors;
 static int n_warnings;
 
-/* Reads line `line` (1-based) of `path` into a malloc'ed string without its
- * line terminator, or returns NULL. */
+/* Line `line` (1-based) of `path` in a malloc'ed string without its line terminator, or
+ * NULL. */
 static char *read_source_line(const char *path, int line)
 {
-    FILE *f = fopen(path, "r");
-    if (!f)
-        return NULL;
-    size_t cap = 128, len = 0;
-    char *buf = malloc(cap);
-    int cur = 1, found = 0, c;
-    if (!buf) {
-        fclose(f);
-        return NULL;
-    }
-    while ((c = getc(f)) != EOF) {
-        if (cur == line)
-            found = 1;
-        if (c == '\n') {
-            if (cur == line)
-                break;
-            cur++;
-            continue;
-        }
-        if (cur != line)
-            continue;
-        if (len + 2 > cap) {
-            char *nb = realloc(buf, cap * 2);
-            if (!nb) {
-                free(buf);
-                fclose(f);
-                return NULL;
-            }
-            buf = nb;
-            cap *= 2;
-        }
-        buf[len++] = (char)c;
-    }
-    fclose(f);
-    if (!found) {
-        free(buf);
-        return NULL;
-    }
-    if (len > 0 && buf[len - 1] == '\r')
-        len--;
-    buf[len] = '\0';
-    return buf;
+    size_t len;
+    const char *s = source_line(path, line, &len);
+    return s ? strndup(s, len) : NULL;
 }
 
 static void show_source(SrcLoc loc)

@@ -1,4 +1,4 @@
-/* source.c — reading model source lines back, for comments in generated code. */
+/* source.c — model source lines, for comments in generated code and for diagnostics. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,27 +11,87 @@ const char *source_basename(const char *path)
     return s ? s + 1 : path;
 }
 
+/* Each file read once, with where its lines start: the emitter comments its code with the
+ * model's lines and the diagnostics show them, without reading the file again each time. */
+typedef struct {
+    char *path;
+    char *text;      /* NULL: the file could not be read */
+    size_t *starts;  /* line k (0-based) starts at text + starts[k] */
+    int nlines;
+} SourceFile;
+
+static SourceFile *files;
+static int nfiles;
+
+static void index_lines(SourceFile *f, size_t size)
+{
+    size_t cap = 64;
+    f->starts = malloc(cap * sizeof *f->starts);
+    for (size_t at = 0; at < size;) {
+        if ((size_t)f->nlines == cap)
+            f->starts = realloc(f->starts, (cap *= 2) * sizeof *f->starts);
+        f->starts[f->nlines++] = at;
+        const char *nl = memchr(f->text + at, '\n', size - at);
+        at = nl ? (size_t)(nl - f->text) + 1 : size;
+    }
+}
+
+static const SourceFile *source_file(const char *path)
+{
+    for (int i = 0; i < nfiles; i++)
+        if (!strcmp(files[i].path, path))
+            return &files[i];
+    files = realloc(files, (size_t)(nfiles + 1) * sizeof *files);
+    SourceFile *f = &files[nfiles++];
+    *f = (SourceFile){strdup(path), NULL, NULL, 0};
+    FILE *in = fopen(path, "rb");
+    if (!in)
+        return f;
+    size_t size = 0, cap = 1 << 16, n;
+    char *text = malloc(cap);
+    while ((n = fread(text + size, 1, cap - size, in)) > 0)
+        if ((size += n) == cap)
+            text = realloc(text, cap *= 2);
+    fclose(in);
+    f->text = text;
+    index_lines(f, size);
+    f->text[size] = 0;
+    return f;
+}
+
+const char *source_line(const char *path, int line, size_t *len)
+{
+    const SourceFile *f = path ? source_file(path) : NULL;
+    if (!f || !f->text || line < 1 || line > f->nlines)
+        return NULL;
+    const char *s = f->text + f->starts[line - 1];
+    const char *end = line < f->nlines ? f->text + f->starts[line] : s + strlen(s);
+    if (end > s && end[-1] == '\n')
+        end--;
+    if (end > s && end[-1] == '\r')
+        end--;
+    *len = (size_t)(end - s);
+    return s;
+}
+
 const char *source_line_trimmed(const char *file, int line)
 {
     static char buf[512];
-    buf[0] = 0;
-    FILE *f = fopen(file, "r");
-    if (!f)
-        return buf;
-    for (int l = 1; l <= line && fgets(buf, sizeof buf, f); l++)
-        if (l == line)
-            break;
-    fclose(f);
-    size_t n = strlen(buf);
-    while (n && (buf[n - 1] == '\n' || buf[n - 1] == '\r' || buf[n - 1] == ' '))
-        buf[--n] = 0;
-    char *p = buf;
-    while (*p == ' ' || *p == '\t')
-        p++;
-    for (char *q = p; *q; q++)
+    size_t n = 0;
+    const char *s = source_line(file, line, &n);
+    if (!s)
+        n = 0;
+    while (n && (s[n - 1] == ' ' || s[n - 1] == '\r'))
+        n--;
+    while (n && (*s == ' ' || *s == '\t'))
+        s++, n--;
+    if (n > sizeof buf - 1)
+        n = sizeof buf - 1;
+    memcpy(buf, s, n);
+    buf[n] = 0;
+    for (char *q = buf; *q; q++)
         if (q[0] == '*' && q[1] == '/')
             q[1] = '_'; /* never close the surrounding C comment */
-    memmove(buf, p, strlen(p) + 1);
     return buf;
 }
 

@@ -2,12 +2,18 @@
 #ifndef SPHC_SOURCE_H
 #define SPHC_SOURCE_H
 
+#include <stddef.h>
+
 /* Where an item of a model is. */
 typedef struct {
     const char *file; /* path as given on the command line (or the stdlib file) */
     int line, col;    /* 1-based */
 } SrcLoc;
 
+/* Line `line` (1-based) of `path`: its first character, its length in *len without the line
+ * terminator; NULL when the file cannot be read or has no such line.  Each file is read
+ * once. */
+const char *source_line(const char *path, int line, size_t *len);
 /* The text of line `line` of `file`, leading and trailing blanks removed, with any
  * comment terminator made harmless; "" when unavailable.  Points to a static buffer. */
 const char *source_line_trimmed(const char *file, int line);
