@@ -2,7 +2,6 @@
  * the material law with its tension/compression split and degradation (eq. 7, 18), the
  * restriction of the phase field, and the fracture part of the body description (notches).
  * The passes themselves are in templates/ under //@if FRACTURE. */
-#include <string.h>
 
 #include "emit_internal.h"
 #include "util/source.h"
@@ -11,22 +10,14 @@
  * + psi- (eq. 7), and psi+ itself for the history field (eq. 8). */
 void emit_fracture_material(FILE *out, const BodyModel *b, const BodyPlan *p)
 {
-    const LawRoots *r = &p->roots;
     fprintf(out, ".\n * In: deformation gradient F (3x3), phase field s. Out: degraded second "
                  "Piola-Kirchhoff stress\n * S = s^2 S+ + S- (eq. 18), degraded strain energy "
                  "density psi = s^2 psi+ + psi- (eq. 7),\n * tensile energy psi+ (eq. 11/20). */\n");
     fprintf(out, "SPH_FN void %s_material(const double F[9], double s, double S[9], "
                  "double *psi, double *psip)\n{\n",
             b->name);
-    int roots[11];
-    memcpy(roots, r->Sd, sizeof r->Sd);
-    roots[9] = r->psid;
-    roots[10] = r->psip;
     fputs("    (void)F;\n    (void)s;\n", out);
-    sg_emit(&p->law, roots, 11, out, "    ");
-    sg_emit_outputs(&p->law, "    ", "S", r->Sd, 9, ";", out);
-    sg_emit_outputs(&p->law, "    ", "*psi", &r->psid, -1, ";", out);
-    sg_emit_outputs(&p->law, "    ", "*psip", &r->psip, -1, ";", out);
+    plan_law_print(p, 1, 1, out);
     fputs("}\n\n", out);
 }
 

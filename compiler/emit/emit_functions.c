@@ -98,14 +98,7 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
         fprintf(out, "SPH_FN void %s_material(const double F[9], double S[9], double *psi)\n{\n",
                 b->name);
     }
-    int roots[10 + LAW_MAX_SLOTS];
-    memcpy(roots, r->S, sizeof r->S);
-    roots[9] = r->psi;
-    memcpy(roots + 10, r->next, (size_t)p->nstate * sizeof(int));
     fputs(p->nstate ? "    (void)F;\n    (void)st;\n" : "    (void)F;\n", out);
-    sg_emit(&p->law, roots, 10 + p->nstate, out, "    ");
-    sg_emit_outputs(&p->law, "    ", "S", r->S, 9, ";", out);
-    sg_emit_outputs(&p->law, "    ", "*psi", &r->psi, -1, ";", out);
-    sg_emit_outputs(&p->law, "    ", "st_new", r->next, p->nstate, ";", out);
+    plan_law_print(p, 0, 1, out);
     fputs("}\n\n", out);
 }

@@ -55,3 +55,32 @@ void plan_free(Plan *plan)
     plan->bodies = NULL;
     plan->nbodies = 0;
 }
+
+int plan_law_outputs(const BodyPlan *p, int degraded, LawOutput out[LAW_MAX_OUTPUTS])
+{
+    const LawRoots *r = &p->roots;
+    if (degraded) {
+        out[0] = (LawOutput){"S", "S", r->Sd, 9};
+        out[1] = (LawOutput){"*psi", "psi", &r->psid, -1};
+        out[2] = (LawOutput){"*psip", "psi+", &r->psip, -1};
+    } else {
+        out[0] = (LawOutput){"S", "S", r->S, 9};
+        out[1] = (LawOutput){"*psi", "psi", &r->psi, -1};
+        out[2] = (LawOutput){"st_new", "st_new", r->next, p->nstate};
+    }
+    return 3;
+}
+
+void plan_law_print(const BodyPlan *p, int degraded, int as_c, FILE *out)
+{
+    LawOutput o[LAW_MAX_OUTPUTS];
+    int no = plan_law_outputs(p, degraded, o), nroots = 0;
+    int roots[9 + 1 + LAW_MAX_SLOTS];
+    for (int k = 0; k < no; k++)
+        for (int q = 0; q < (o[k].n < 0 ? 1 : o[k].n); q++)
+            roots[nroots++] = o[k].ids[q];
+    sg_emit(&p->law, roots, nroots, out, "    ");
+    for (int k = 0; k < no; k++)
+        sg_emit_outputs(&p->law, "    ", as_c ? o[k].c_name : o[k].label, o[k].ids, o[k].n,
+                        as_c ? ";" : "", out);
+}

@@ -53,6 +53,24 @@ typedef struct {
 int lower_model(const Model *m, Plan *plan);
 void plan_free(Plan *plan);
 
+/* An output of a body's material function: `c_name[k] = ids[k]` for k < n in the generated
+ * function (`c_name = ids[0]` for n = -1), shown as `label` in --dump=plan. */
+typedef struct {
+    const char *c_name, *label;
+    const int *ids;
+    int n;
+} LawOutput;
+
+enum { LAW_MAX_OUTPUTS = 3 };
+
+/* The outputs of body p's material function in the order of its arguments: S, psi and the
+ * state at the end of the step; degraded (fracture, eq. 7 and 18): S, psi and psi+.  Returns
+ * their number. */
+int plan_law_outputs(const BodyPlan *p, int degraded, LawOutput out[LAW_MAX_OUTPUTS]);
+/* The law's graph computing those outputs, then the outputs: as C statements (as_c, at the
+ * indent of a function body) or as the dump shows them. */
+void plan_law_print(const BodyPlan *p, int degraded, int as_c, FILE *out);
+
 /* Print the plan (sphc --dump=plan): each body's features and its law's graph. */
 void plan_dump(const Plan *plan, FILE *out);
 
