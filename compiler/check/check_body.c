@@ -374,10 +374,8 @@ static int material_arg(const Model *m, const Setting *s, ElasticInput *el, Body
         return -1;
     const char *k = s->key;
     if (!strcmp(k, "density")) {
-        if (!(v > 0)) {
-            diag_error(s->values[0]->loc, "density must be positive (got %g)", v);
+        if (check_admissible(s->values[0]->loc, "density", Q_DENSITY, v))
             return -1;
-        }
         b->rho0 = v;
         *has_density = 1;
     } else if (!strcmp(k, "young")) el->has_E = 1, el->E = v;
@@ -443,9 +441,9 @@ static int setting_int(const Model *m, const Setting *s, int lo, int *out)
     }
     if (check_const_expr(m, s->values[0], s->key, &v))
         return -1;
-    if (v != floor(v) || v < lo || v > 1000) {
-        diag_error(s->values[0]->loc, "'%s' must be an integer from %d to 1000 (got %g)", s->key,
-                   lo, v);
+    if (v != floor(v) || v < lo || v > SETTING_INT_MAX) {
+        diag_error(s->values[0]->loc, "'%s' must be an integer from %d to %d (got %g)", s->key,
+                   lo, SETTING_INT_MAX, v);
         return -1;
     }
     *out = (int)v;
@@ -463,11 +461,11 @@ static int check_viscosity(const Model *m, const Setting *s, BodyModel *b)
     b->beta2 = 0;
     if (s->nvalues == 2 && check_const_expr(m, s->values[1], "beta2", &b->beta2))
         return -1;
-    if (b->beta1 < 0 || b->beta2 < 0) {
-        diag_error(s->loc, "artificial viscosity coefficients must not be negative");
-        return -1;
-    }
-    return 0;
+    const char *why = inadmissible(Q_VISCOSITY, b->beta1);
+    why = why ? why : inadmissible(Q_VISCOSITY, b->beta2);
+    if (why)
+        diag_error(s->loc, "artificial viscosity coefficients %s", why);
+    return why ? -1 : 0;
 }
 
 /* The one constant value of setting s, whose value is `what` (for the error). */
@@ -506,19 +504,16 @@ static int check_lattice(const Model *m, const Setting *s, BodyModel *b)
     return 0;
 }
 
-/* restitution e (0 < e <= 1) and friction mu (>= 0) of the body's contacts. */
+/* restitution e and friction mu of the body's contacts. */
 static int check_contact_setting(const Model *m, const Setting *s, double *out)
 {
     const int rest = !strcmp(s->key, "restitution");
+    char name[32];
     if (one_value(m, s, rest ? "the coefficient of restitution" : "the friction coefficient",
                   out))
         return -1;
-    if (rest ? !(*out > 0 && *out <= 1) : !(*out >= 0 && isfinite(*out))) {
-        diag_error(s->values[0]->loc, "'%s' must be %s (got %g)", s->key,
-                   rest ? "in (0, 1], 1 for an elastic contact" : "0 or positive", *out);
-        return -1;
-    }
-    return 0;
+    snprintf(name, sizeof name, "'%s'", s->key);
+    return check_admissible(s->values[0]->loc, name, rest ? Q_RESTITUTION : Q_FRICTION, *out);
 }
 
 /* soundspeed c: the reference sound speed instead of eq. 59's (time step, viscosity). */

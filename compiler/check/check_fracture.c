@@ -7,7 +7,6 @@
  *
  * Notches and the restriction need fracture; fracture needs a material law with a
  * `tension` block (the tensile parts psi+ and S+ of eq. 11-17 or 20-31). */
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -47,8 +46,8 @@ static int arg_names(const NamedCall *c)
     return bad ? -1 : 0;
 }
 
-static int positive_arg(const Model *m, const NamedCall *c, const char *key, const char *what,
-                        double *out)
+static int positive_arg(const Model *m, const NamedCall *c, const char *key, Quantity q,
+                        const char *what, double *out)
 {
     const Setting *s = find(c, key);
     if (!s) {
@@ -57,11 +56,7 @@ static int positive_arg(const Model *m, const NamedCall *c, const char *key, con
     }
     if (check_const_expr(m, s->values[0], key, out))
         return -1;
-    if (!(*out > 0) || !isfinite(*out)) {
-        diag_error(s->values[0]->loc, "%s must be positive (got %g)", key, *out);
-        return -1;
-    }
-    return 0;
+    return check_admissible(s->values[0]->loc, key, q, *out);
 }
 
 static int check_call(const Model *m, const BodyItem *it, FractureModel *f)
@@ -76,15 +71,14 @@ static int check_call(const Model *m, const BodyItem *it, FractureModel *f)
     f->limit = DEFAULT_LIMIT;
     if (arg_names(c))
         return -1;
-    int bad = positive_arg(m, c, "Gc", "the critical energy release rate, J/m^2", &f->Gc);
-    bad |= positive_arg(m, c, "length", "the phase-field length scale epsilon0", &f->eps0);
+    int bad = positive_arg(m, c, "Gc", Q_GC, "the critical energy release rate, J/m^2",
+                           &f->Gc);
+    bad |= positive_arg(m, c, "length", Q_LENGTH, "the phase-field length scale epsilon0",
+                        &f->eps0);
     const Setting *l = find(c, "limit");
     if (l && !check_const_expr(m, l->values[0], "limit", &f->limit) &&
-        !(f->limit >= 0 && f->limit < 1)) {
-        diag_error(l->values[0]->loc, "the phase-field limit must lie in [0, 1) (got %g)",
-                   f->limit);
+        check_admissible(l->values[0]->loc, "the phase-field limit", Q_LIMIT, f->limit))
         bad = 1;
-    }
     return bad ? -1 : 0;
 }
 

@@ -1,4 +1,5 @@
-/* elastic.c — completing isotropic elastic constants from any accepted pair.
+/* elastic.c — completing isotropic elastic constants from any accepted pair, and the
+ * physical admissibility of a body's numbers.
  *
  * Accepted pairs: young/poisson (E, nu), lambda/shear, bulk/shear (K, mu).  The bulk
  * modulus is the 3D one, K = lambda + 2 mu / 3, in plane strain too (plane strain is a
@@ -8,19 +9,64 @@
 #include "check.h"
 #include "util/diag.h"
 
-static void from_E_nu(BodyModel *b, double E, double nu)
+const char *inadmissible(Quantity q, double v)
 {
-    b->E = E;
-    b->nu = nu;
-    b->mu = E / (2.0 * (1.0 + nu));
-    b->lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-    b->K = E / (3.0 * (1.0 - 2.0 * nu));
+    switch (q) {
+    case Q_POISSON:
+        return v > -1.0 && v < 0.5 ? NULL : "must lie in (-1, 0.5)";
+    case Q_VISCOSITY:
+    case Q_FRICTION:
+        return v >= 0 && isfinite(v) ? NULL : "must not be negative";
+    case Q_RESTITUTION:
+        return v > 0 && v <= 1 ? NULL : "must be in (0, 1], 1 for an elastic contact";
+    case Q_LIMIT: /* s_l of eq. 63 */
+        return v >= 0 && v < 1 ? NULL : "must lie in [0, 1)";
+    case Q_GC:
+    case Q_LENGTH:
+        return v > 0 && isfinite(v) ? NULL : "must be positive";
+    case Q_DENSITY:
+    case Q_YOUNG:
+    case Q_SHEAR:
+    case Q_BULK:
+        break;
+    }
+    return v > 0 ? NULL : "must be positive";
 }
 
-static void from_lambda_mu(BodyModel *b, double lambda, double mu)
+int check_admissible(SrcLoc loc, const char *name, Quantity q, double v)
 {
-    b->lambda = lambda;
-    b->mu = mu;
+    const char *why = inadmissible(q, v);
+    if (why)
+        diag_error(loc, "%s %s (got %g)", name, why, v);
+    return why ? -1 : 0;
+}
+
+void elastic_lame(const ElasticInput *in, int dim, double *lambda, double *mu)
+{
+    if (in->has_E && in->has_nu) {
+        *mu = in->E / (2.0 * (1.0 + in->nu));
+        *lambda = in->E * in->nu / ((1.0 + in->nu) * (1.0 - (dim - 1) * in->nu));
+        return;
+    }
+    *mu = in->mu;
+    *lambda = in->has_K ? in->K - 2.0 * in->mu / dim : in->lambda;
+}
+
+double elastic_sound_speed(double K, double mu, double rho0)
+{
+    return sqrt((K + 4.0 * mu / 3.0) / rho0);
+}
+
+/* E, nu and K from lambda and mu (the pair E, nu keeps its own values). */
+static void from_lame(const ElasticInput *in, BodyModel *b)
+{
+    const double lambda = b->lambda, mu = b->mu;
+    if (in->has_E && in->has_nu) {
+        b->E = in->E;
+        b->nu = in->nu;
+        b->K = in->E / (3.0 * (1.0 - 2.0 * in->nu));
+        return;
+    }
     b->K = lambda + 2.0 * mu / 3.0;
     b->E = mu * (3.0 * lambda + 2.0 * mu) / (lambda + mu);
     b->nu = lambda / (2.0 * (lambda + mu));
@@ -31,7 +77,8 @@ static int count_given(const ElasticInput *in)
     return in->has_E + in->has_nu + in->has_lambda + in->has_mu + in->has_K;
 }
 
-static int derive(const ElasticInput *in, SrcLoc loc, BodyModel *b)
+/* The given constants: a pair, each admissible. */
+static int given(const ElasticInput *in, SrcLoc loc)
 {
     if (count_given(in) != 2) {
         diag_error(loc, "give exactly two elastic constants: young and poisson, lambda and "
@@ -39,34 +86,15 @@ static int derive(const ElasticInput *in, SrcLoc loc, BodyModel *b)
                    count_given(in));
         return -1;
     }
-    if (in->has_E && in->has_nu) {
-        if (!(in->E > 0)) {
-            diag_error(loc, "young's modulus must be positive (got %g)", in->E);
-            return -1;
-        }
-        if (!(in->nu > -1.0 && in->nu < 0.5)) {
-            diag_error(loc, "poisson's ratio must lie in (-1, 0.5) (got %g)", in->nu);
-            return -1;
-        }
-        from_E_nu(b, in->E, in->nu);
-        return 0;
-    }
-    if (in->has_mu && !(in->mu > 0)) {
-        diag_error(loc, "shear modulus must be positive (got %g)", in->mu);
+    if (in->has_E && in->has_nu)
+        return check_admissible(loc, "young's modulus", Q_YOUNG, in->E) ||
+               check_admissible(loc, "poisson's ratio", Q_POISSON, in->nu) ? -1 : 0;
+    if (in->has_mu && check_admissible(loc, "shear modulus", Q_SHEAR, in->mu))
         return -1;
-    }
-    if (in->has_lambda && in->has_mu) {
-        from_lambda_mu(b, in->lambda, in->mu);
+    if (in->has_lambda && in->has_mu)
         return 0;
-    }
-    if (in->has_K && in->has_mu) {
-        if (!(in->K > 0)) {
-            diag_error(loc, "bulk modulus must be positive (got %g)", in->K);
-            return -1;
-        }
-        from_lambda_mu(b, in->K - 2.0 * in->mu / 3.0, in->mu);
-        return 0;
-    }
+    if (in->has_K && in->has_mu)
+        return check_admissible(loc, "bulk modulus", Q_BULK, in->K);
     diag_error(loc, "unsupported pair of elastic constants: give young and poisson, lambda "
                     "and shear, or bulk and shear");
     return -1;
@@ -74,15 +102,17 @@ static int derive(const ElasticInput *in, SrcLoc loc, BodyModel *b)
 
 int elastic_complete(const ElasticInput *in, SrcLoc loc, BodyModel *b)
 {
-    if (derive(in, loc, b))
+    if (given(in, loc))
         return -1;
-    if (!(b->nu > -1.0 && b->nu < 0.5) || !(b->K > 0) || !(b->mu > 0)) {
+    elastic_lame(in, 3, &b->lambda, &b->mu);
+    from_lame(in, b);
+    if (inadmissible(Q_POISSON, b->nu) || inadmissible(Q_BULK, b->K) ||
+        inadmissible(Q_SHEAR, b->mu)) {
         diag_error(loc, "elastic constants are not admissible (E = %g, nu = %g, K = %g, "
                         "mu = %g): need mu > 0, K > 0, -1 < nu < 0.5",
                    b->E, b->nu, b->K, b->mu);
         return -1;
     }
-    /* Reference sound speed, eq. 59: c0 = sqrt((K + 4 mu / 3) / rho0). */
-    b->c0 = sqrt((b->K + 4.0 * b->mu / 3.0) / b->rho0);
+    b->c0 = elastic_sound_speed(b->K, b->mu, b->rho0);
     return 0;
 }

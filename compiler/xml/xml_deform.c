@@ -5,8 +5,7 @@
  *     <nbsrange value="1"/>                  nbsrange 1
  *     <density value="1000"/>                material svk(density 1000,
  *     <u_mu value=".."/> <u_bulk value=".."/>                 shear .., bulk ..)
- *     <constitmodel value="1"/>              (1 svk, 2 neohookean, 3 j2 with <yieldstress>
- *                                             and <hardening>: yield, hardening)
+ *     <constitmodel value="1"/>              the law and its own cards: LAWS below
  *     <artvisc factor1=".." factor2=".."/>   viscosity .., ..   (default 0.2, 0)
  *     <fracture value="1"/> <Gc ../> ..      fracture(..), notch .., restrict ..  (xml_fracture.c)
  *     <bcvel ../> <bcforce ../>              velocity .. / force ..  (xml_bc.c)
@@ -19,7 +18,6 @@
  * SoliDualSPHysics reads them (elastic_args_2d).
  * Contact: <contcoeff> (in <deformstrucs>) is the scene's `contact` multiplier, <restcoef>
  * and <kfric> the body's `restitution` and `friction`. */
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,10 +35,11 @@ typedef struct {
     double density, el[EL_N], beta1, beta2;
     SrcLoc density_loc, el_loc[EL_N], model_loc, visc_loc, refine_loc, nbs_loc;
     long model, refine, nbsrange;
-    const xmlNode *fracture_card, *plastic_card; /* the last <fracture>, the first J2 card */
-    int has_yield, has_hardening;
-    double yield, hardening;
-    SrcLoc yield_loc, hardening_loc;
+    const xmlNode *fracture_card;  /* the last <fracture> */
+    const xmlNode *law_card;       /* the first card of a law's own parameters */
+    int has_param[XML_NLAWS + 1][XML_LAW_CARDS]; /* by law: its own cards' values */
+    double param[XML_NLAWS + 1][XML_LAW_CARDS];
+    SrcLoc param_loc[XML_NLAWS + 1][XML_LAW_CARDS];
     int has_rest, has_fric;        /* contact: <restcoef>, <kfric> */
     double rest, fric;
     SrcLoc rest_loc, fric_loc;
@@ -51,12 +50,43 @@ static const char *const ELASTIC_CARDS[EL_N] = {"youngmod", "poissratio", "u_lam
                                                 "u_bulk"};
 static const char *const ELASTIC_ARGS[EL_N] = {"young", "poisson", "lambda", "shear", "bulk"};
 
-static int nonnegative(const XmlCtx *x, const xmlNode *n, const char *attr, double v)
+/* <constitmodel value="N"> is LAWS[N - 1]. */
+static const XmlLaw LAWS[XML_NLAWS] = {
+    {"svk", NULL, {NULL}, {NULL}, 0},
+    {"neohookean", NULL, {NULL}, {NULL}, 0},
+    {"j2", "J2 plasticity", {"yieldstress", "hardening"}, {"yield", "hardening"}, 1},
+};
+
+const XmlLaw *xml_law(int n)
+{
+    return &LAWS[n - 1];
+}
+
+/* The index of n among the own cards of law number `law`, or -1. */
+static int own_card(int law, const xmlNode *n)
+{
+    for (int i = 0; i < XML_LAW_CARDS && LAWS[law - 1].cards[i]; i++)
+        if (xml_is(n, LAWS[law - 1].cards[i]))
+            return i;
+    return -1;
+}
+
+/* The first law that has n as its own card, or 0. */
+static int card_law(const xmlNode *n)
+{
+    for (int k = 1; k <= XML_NLAWS; k++)
+        if (own_card(k, n) >= 0)
+            return k;
+    return 0;
+}
+
+/* The value of a law's own card must not be negative. */
+static int nonnegative(const XmlCtx *x, const xmlNode *n, double v)
 {
     if (v >= 0)
         return 0;
-    diag_error(xml_loc(x, n), "<%s> attribute '%s': must not be negative (got %g)", xml_name(n),
-               attr, v);
+    diag_error(xml_loc(x, n), "<%s> attribute 'value': must not be negative (got %g)",
+               xml_name(n), v);
     return -1;
 }
 
@@ -70,7 +100,8 @@ static int artvisc(const XmlCtx *x, const xmlNode *n, Cards *c)
         return -1;
     c->has_visc = 1;
     c->visc_loc = xml_loc(x, n);
-    return nonnegative(x, n, "factor1", c->beta1) || nonnegative(x, n, "factor2", c->beta2);
+    return xml_admissible(x, n, "factor1", Q_VISCOSITY, c->beta1) ||
+           xml_admissible(x, n, "factor2", Q_VISCOSITY, c->beta2) ? -1 : 0;
 }
 
 static int elastic_card(const XmlCtx *x, const xmlNode *n, Cards *c)
@@ -92,42 +123,47 @@ static int whole_card(const XmlCtx *x, const xmlNode *n, long lo, long hi, long 
     return xml_integer(x, n, "value", 1, lo, hi, v) == 1 ? 0 : -1;
 }
 
-/* Cards of fracture (phase field), plasticity and contact: checked, and kept for
+/* A card of a law's own parameters (LAWS), kept for every law that has it; 1 when n is
+ * none. */
+static int law_param_card(const XmlCtx *x, const xmlNode *n, Cards *c)
+{
+    double v;
+    if (!card_law(n))
+        return 1;
+    c->law_card = c->law_card ? c->law_card : n;
+    if (xml_card_number(x, n, &v) || nonnegative(x, n, v))
+        return -1;
+    for (int k = 1; k <= XML_NLAWS; k++) {
+        const int i = own_card(k, n);
+        if (i < 0)
+            continue;
+        c->has_param[k][i] = 1;
+        c->param[k][i] = v;
+        c->param_loc[k][i] = xml_loc(x, n);
+    }
+    return 0;
+}
+
+/* Cards of fracture (phase field), the laws and contact: checked, and kept for
  * special_models(); 1 when n is none of them. */
 static int other_card(XmlCtx *x, const xmlNode *n, Cards *c)
 {
-    double v;
     if (xml_is(n, "fracture")) {
         c->fracture_card = n;
         return xml_card_bool(x, n, &c->fracture);
     }
-    if (xml_is(n, "yieldstress") || xml_is(n, "hardening")) {
-        int yield = xml_is(n, "yieldstress");
-        c->plastic_card = c->plastic_card ? c->plastic_card : n;
-        *(yield ? &c->has_yield : &c->has_hardening) = 1;
-        *(yield ? &c->yield_loc : &c->hardening_loc) = xml_loc(x, n);
-        return xml_card_number(x, n, yield ? &c->yield : &c->hardening) ||
-               nonnegative(x, n, "value", yield ? c->yield : c->hardening);
-    }
     if (xml_is(n, "restcoef")) {
         c->has_rest = 1;
         c->rest_loc = xml_loc(x, n);
-        if (xml_card_number(x, n, &c->rest))
-            return -1;
-        if (!(c->rest > 0 && c->rest <= 1)) {
-            diag_error(c->rest_loc, "<restcoef> attribute 'value': a coefficient of restitution "
-                                    "in (0, 1] (got %g)", c->rest);
-            return -1;
-        }
-        return 0;
+        return xml_card_admissible(x, n, Q_RESTITUTION, &c->rest);
     }
     if (xml_is(n, "kfric")) {
         c->has_fric = 1;
         c->fric_loc = xml_loc(x, n);
-        return xml_card_number(x, n, &c->fric) || nonnegative(x, n, "value", c->fric);
+        return xml_card_admissible(x, n, Q_FRICTION, &c->fric);
     }
-    (void)v;
-    return xml_fracture_card(x, n, &c->frac);
+    const int r = law_param_card(x, n, c);
+    return r <= 0 ? r : xml_fracture_card(x, n, &c->frac);
 }
 
 /* One card of pass 1; 1 when it is not one of these cards. */
@@ -139,27 +175,27 @@ static int card(XmlCtx *x, const xmlNode *n, Cards *c)
     if (xml_is(n, "density")) {
         c->has_density = 1;
         c->density_loc = xml_loc(x, n);
-        return xml_card_positive(x, n, &c->density);
+        return xml_card_admissible(x, n, Q_DENSITY, &c->density);
     }
     if (xml_is(n, "constitmodel")) {
         c->model_loc = xml_loc(x, n);
-        return whole_card(x, n, 1, 3, &c->model);
+        return whole_card(x, n, 1, XML_NLAWS, &c->model);
     }
     if (xml_is(n, "artvisc"))
         return artvisc(x, n, c);
     if (xml_is(n, "avfactor")) {
         c->has_visc = 1;
         c->visc_loc = xml_loc(x, n);
-        return xml_card_number(x, n, &c->beta1) || nonnegative(x, n, "value", c->beta1);
+        return xml_card_admissible(x, n, Q_VISCOSITY, &c->beta1);
     }
     if (xml_is(n, "mapfac")) {
         c->refine_loc = xml_loc(x, n);
-        return whole_card(x, n, 1, 1000, &c->refine);
+        return whole_card(x, n, 1, SETTING_INT_MAX, &c->refine);
     }
     if (xml_is(n, "nbsrange")) {
         c->has_nbs = 1;
         c->nbs_loc = xml_loc(x, n);
-        return whole_card(x, n, 1, 1000, &c->nbsrange);
+        return whole_card(x, n, 1, SETTING_INT_MAX, &c->nbsrange);
     }
     return other_card(x, n, c);
 }
@@ -201,28 +237,34 @@ static int elastic_option(const Cards *c)
     return 0;
 }
 
-/* J2 plasticity (constitmodel 3) needs <yieldstress> and <hardening>; SoliDualSPHysics turns
- * fracture off under it, and so does the importer, with a warning.  Fracture needs its cards
- * (xml_fracture_check).  The cards of either without it are ignored with a warning. */
+/* The law's own cards are required (J2 plasticity: <yieldstress>, <hardening>); those of
+ * other laws are ignored with a warning.  Where SoliDualSPHysics turns fracture off under
+ * the law, so does the importer, with a warning.  Fracture needs its cards
+ * (xml_fracture_check); without it they are ignored with a warning. */
 static int special_models(const XmlCtx *x, Cards *c)
 {
-    if (c->model == 3) {
-        if (!c->has_yield || !c->has_hardening) {
-            diag_error(c->model_loc, "<constitmodel value=\"3\">: J2 plasticity of "
-                                     "<deformstrucbody mkbound=\"%d\"> needs <%s value=\"...\"/>",
-                       c->mk, c->has_yield ? "hardening" : "yieldstress");
+    const int m = (int)c->model;
+    const XmlLaw *law = xml_law(m);
+    for (int i = 0; i < XML_LAW_CARDS && law->cards[i]; i++)
+        if (!c->has_param[m][i]) {
+            diag_error(c->model_loc, "<constitmodel value=\"%d\">: %s of <deformstrucbody "
+                       "mkbound=\"%d\"> needs <%s value=\"...\"/>", m, law->what, c->mk,
+                       law->cards[i]);
             return -1;
         }
+    if (c->law_card && own_card(m, c->law_card) < 0) {
+        const int k = card_law(c->law_card);
+        diag_warning(xml_loc(x, c->law_card), "<%s> is ignored: only %s (<constitmodel "
+                     "value=\"%d\"/>) uses it", xml_name(c->law_card), xml_law(k)->what, k);
+    }
+    if (law->no_fracture) {
         if (c->fracture)
-            diag_warning(xml_loc(x, c->fracture_card), "<fracture> is ignored with J2 plasticity "
-                                                      "(<constitmodel value=\"3\"/>), as "
-                                                      "SoliDualSPHysics does");
+            diag_warning(xml_loc(x, c->fracture_card), "<fracture> is ignored with %s "
+                         "(<constitmodel value=\"%d\"/>), as SoliDualSPHysics does", law->what,
+                         m);
         c->fracture = 0;
         return 0;
     }
-    if (c->plastic_card)
-        diag_warning(xml_loc(x, c->plastic_card), "<%s> is ignored: only J2 plasticity "
-                     "(<constitmodel value=\"3\"/>) uses it", xml_name(c->plastic_card));
     if (c->fracture)
         return xml_fracture_check(x, &c->frac, c->fracture_card, c->mk);
     if (c->frac.first)
@@ -252,14 +294,11 @@ static void push_setting(BodyDecl *b, SrcLoc loc, const char *key, double v)
  * youngmod, poissratio give mu = E / (2 (1 + nu)), lambda = E nu / ((1 + nu)(1 - nu)). */
 static void lame_2d(const Cards *c, double *lambda, double *mu)
 {
-    if (c->has_el[EL_E]) {
-        const double E = c->el[EL_E], nu = c->el[EL_NU];
-        *mu = E / (2.0 * (1.0 + nu));
-        *lambda = E * nu / ((1.0 + nu) * (1.0 - nu));
-        return;
-    }
-    *mu = c->el[EL_MU];
-    *lambda = c->has_el[EL_K] ? c->el[EL_K] - *mu : c->el[EL_LAMBDA];
+    const int *h = c->has_el;
+    const double *v = c->el;
+    const ElasticInput in = {h[EL_E], h[EL_NU], h[EL_LAMBDA], h[EL_MU], h[EL_K],
+                             v[EL_E], v[EL_NU], v[EL_LAMBDA], v[EL_MU], v[EL_K]};
+    elastic_lame(&in, 2, lambda, mu);
 }
 
 /* The body gets the equivalent lambda and shear. */
@@ -274,22 +313,32 @@ static void elastic_args_2d(const Cards *c, SettingList *args)
 }
 
 /* And SoliDualSPHysics' reference sound speed: eq. 59 with its plane bulk modulus
- * K2 = lambda + mu, c0 = sqrt((K2 + 4 mu / 3) / rho0). */
+ * K2 = lambda + mu. */
 static double sound_speed_2d(const Cards *c)
 {
     double lambda, mu;
     lame_2d(c, &lambda, &mu);
-    return sqrt((lambda + mu + 4.0 * mu / 3.0) / c->density);
+    return elastic_sound_speed(lambda + mu, mu, c->density);
+}
+
+/* The law's arguments from its own cards. */
+static void push_law_args(const Cards *c, SettingList *args)
+{
+    const int m = (int)c->model;
+    const XmlLaw *law = xml_law(m);
+    for (int i = 0; i < XML_LAW_CARDS && law->cards[i]; i++) {
+        const SrcLoc loc = c->param_loc[m][i];
+        ast_push_setting(args, ast_setting(loc, law->args[i], ast_num(loc, c->param[m][i])));
+    }
 }
 
 static void push_material(XmlCtx *x, const Cards *c, BodyDecl *b)
 {
-    static const char *const laws[] = {NULL, "svk", "neohookean", "j2"};
     SrcLoc loc = c->model_loc.line ? c->model_loc : c->loc;
     BodyItem it = {0};
     it.kind = BI_MATERIAL;
     it.loc = loc;
-    it.material.name = ast_strdup(laws[c->model]);
+    it.material.name = ast_strdup(xml_law((int)c->model)->law);
     it.material.loc = loc;
     ast_push_setting(&it.material.args, ast_setting(c->density_loc, "density",
                                                     ast_num(c->density_loc, c->density)));
@@ -300,12 +349,7 @@ static void push_material(XmlCtx *x, const Cards *c, BodyDecl *b)
             if (c->has_el[k])
                 ast_push_setting(&it.material.args, ast_setting(c->el_loc[k], ELASTIC_ARGS[k],
                                                                 ast_num(c->el_loc[k], c->el[k])));
-    if (c->model == 3) { /* stdlib/j2.sph */
-        ast_push_setting(&it.material.args, ast_setting(c->yield_loc, "yield",
-                                                        ast_num(c->yield_loc, c->yield)));
-        ast_push_setting(&it.material.args, ast_setting(c->hardening_loc, "hardening",
-                                                        ast_num(c->hardening_loc, c->hardening)));
-    }
+    push_law_args(c, &it.material.args);
     ast_push_bodyitem(b, it);
     if (!x->uses_law[c->model])
         x->law_loc[c->model] = loc;

@@ -21,6 +21,7 @@
 
 static const char *const NUMBER_CARDS[XF_N] = {"Gc", "pflenscale", "pflim"};
 static const char *const NUMBER_ARGS[XF_N] = {"Gc", "length", "limit"};
+static const Quantity NUMBER_RULES[XF_N] = {Q_GC, Q_LENGTH, Q_LIMIT};
 
 /* <notch>: the quad as a BI_NOTCH item, each corner located at its <pK>. */
 static int notch(const XmlCtx *x, const xmlNode *n, XmlFracture *f)
@@ -85,7 +86,7 @@ int xml_fracture_card(const XmlCtx *x, const xmlNode *n, XmlFracture *f)
     f->first = f->first ? f->first : n;
     if (k < XF_N) {
         f->card[k] = n;
-        return xml_card_positive(x, n, &f->value[k]);
+        return xml_card_admissible(x, n, NUMBER_RULES[k], &f->value[k]);
     }
     return xml_is(n, "notch") ? notch(x, n, f) : restrictphi(x, n, f);
 }

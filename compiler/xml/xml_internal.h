@@ -8,7 +8,7 @@
  *   xml_transform.c GenCase's transformation matrix (<move>, <rotate>, <scale>, ...)
  *   xml_shape.c     the drawings of an mk as an sph shape (and lattice) of a body or `near`
  *   xml_mathexpr.c  <mathexpressions>: user expressions and their locals (lets)
- *   xml_deform.c    <deformstrucs>: bodies, material and settings cards
+ *   xml_deform.c    <deformstrucs>: bodies, material and settings cards; the constitutive models
  *   xml_fracture.c  the phase-field fracture cards of a body
  *   xml_bc.c        <bcvel>, <bcforce>, <measureplane> of a body
  *   xml_functions.c shapes the expressions write out twice, as user functions
@@ -19,6 +19,7 @@
 
 #include <libxml/tree.h>
 
+#include "check/check.h"
 #include "front/ast.h"
 #include "xml.h"
 
@@ -50,6 +51,17 @@ typedef struct {
     const XmlMatrix *map;     /* a surface drawn under a transformation: it, else NULL */
     double reach[2][3];       /* a drawing other than a box: its bounding box */
 } XmlDraw;
+
+/* The constitutive models of <constitmodel value="N">, N = 1 .. XML_NLAWS (xml_deform.c): laws
+ * of the standard library (stdlib/<law>.sph), imported and used by that name. */
+enum { XML_NLAWS = 3, XML_LAW_CARDS = 2 };
+typedef struct {
+    const char *law;
+    const char *what;                   /* the model in messages about its own cards */
+    const char *cards[XML_LAW_CARDS];   /* the cards of its own parameters, all required */
+    const char *args[XML_LAW_CARDS];    /* the law's arguments they give */
+    int no_fracture;                    /* SoliDualSPHysics turns fracture off under it */
+} XmlLaw;
 
 /* One <userexpression>: its expression with its locals renamed to the model's lets. */
 typedef struct {
@@ -88,11 +100,11 @@ typedef struct {
     SettingList scene;
     SrcLoc scene_loc;
     int has_end;
-    /* bodies, and the constitutive models they use (1 svk, 2 neohookean) */
+    /* bodies, and the constitutive models they use (by constitmodel, xml_law) */
     Item *bodies;
     int nbodies;
-    int uses_law[4];       /* by constitmodel: 1 svk, 2 neohookean, 3 j2 */
-    SrcLoc law_loc[4];
+    int uses_law[XML_NLAWS + 1];
+    SrcLoc law_loc[XML_NLAWS + 1];
     int nmeasures;            /* measurement planes so far (their names count on) */
 } XmlCtx;
 
@@ -131,6 +143,11 @@ int xml_integer(const XmlCtx *x, const xmlNode *n, const char *attr, int require
 int xml_card_number(const XmlCtx *x, const xmlNode *n, double *out);
 /* The same, and the value must be positive. */
 int xml_card_positive(const XmlCtx *x, const xmlNode *n, double *out);
+/* Whether v, the value of attribute attr of n, is admissible as q (check.h): 0, or -1 after
+ * reporting "<elem> attribute 'attr': REASON (got v)". */
+int xml_admissible(const XmlCtx *x, const xmlNode *n, const char *attr, Quantity q, double v);
+/* A card <name value="..."/> whose value is admissible as q. */
+int xml_card_admissible(const XmlCtx *x, const xmlNode *n, Quantity q, double *out);
 /* A card <name value="true|false|1|0"/>. */
 int xml_card_bool(const XmlCtx *x, const xmlNode *n, int *out);
 /* x, y and z of a point element such as <point x=".." y=".." z=".."/> (all required). */
@@ -218,6 +235,8 @@ int xml_mathexpressions(XmlCtx *x, const xmlNode *mathexpressions);
 const XmlUserExpr *xml_user_expr(const XmlCtx *x, long id);
 
 int xml_deformstrucs(XmlCtx *x, const xmlNode *deformstrucs);
+/* The model of <constitmodel value="n">, 1 <= n <= XML_NLAWS. */
+const XmlLaw *xml_law(int n);
 
 /* Cards of one body that become body items (xml_bc.c).  mk is the body's own mk;
  * refine its mapfac (for the measurement-plane rule). */

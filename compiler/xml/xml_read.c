@@ -273,13 +273,12 @@ static int read_case(XmlCtx *x, const xmlNode *root)
 
 static void push_imports(const XmlCtx *x, Program *prog)
 {
-    static const char *const laws[] = {NULL, "svk", "neohookean", "j2"};
-    for (int k = 1; k <= 3; k++)
+    for (int k = 1; k <= XML_NLAWS; k++)
         if (x->uses_law[k]) {
             Item it = {0};
             it.kind = IT_IMPORT;
             it.loc = x->law_loc[k];
-            it.name = ast_strdup(laws[k]);
+            it.name = ast_strdup(xml_law(k)->law);
             ast_push_item(prog, it);
         }
 }

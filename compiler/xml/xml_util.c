@@ -225,6 +225,19 @@ int xml_card_positive(const XmlCtx *x, const xmlNode *n, double *out)
     return -1;
 }
 
+int xml_admissible(const XmlCtx *x, const xmlNode *n, const char *attr, Quantity q, double v)
+{
+    const char *why = inadmissible(q, v);
+    if (why)
+        diag_error(xml_loc(x, n), "<%s> attribute '%s': %s (got %g)", xml_name(n), attr, why, v);
+    return why ? -1 : 0;
+}
+
+int xml_card_admissible(const XmlCtx *x, const xmlNode *n, Quantity q, double *out)
+{
+    return xml_card_number(x, n, out) || xml_admissible(x, n, "value", q, *out) ? -1 : 0;
+}
+
 int xml_card_bool(const XmlCtx *x, const xmlNode *n, int *out)
 {
     static const char *const value[] = {"value", NULL};
