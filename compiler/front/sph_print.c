@@ -355,8 +355,11 @@ static void print_expect(const ExpectDecl *x, FILE *out)
             fprintf(out, "reference %s.%s = ", x->measure, x->quantity);
         else
             fprintf(out, "expect %s %s.%s = ", kinds[x->kind], x->measure, x->quantity);
-        sph_print_expr(x->value, out);
-        if (x->kind == EXPECT_REFERENCE) {
+        if (x->file)
+            fprintf(out, "file \"%s\"", x->file);
+        else
+            sph_print_expr(x->value, out);
+        if (x->kind == EXPECT_REFERENCE && !x->tolerance) {
             fputc('\n', out);
             return;
         }
