@@ -11,25 +11,16 @@ int emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyPl
     tpl_set(&env, "B", "%s", b->name);
     tpl_set(&env, "DIM", "%d", E->m->dim);
     tpl_set(&env, "KERNEL", "%s", E->m->kernel == KERNEL_CUBIC ? "SPH_CUBIC" : "SPH_WENDLAND");
-    tpl_set(&env, "BETA1", "%.17g", b->beta1);
-    tpl_set(&env, "BETA2", "%.17g", b->beta2);
-    tpl_set(&env, "C0", "%.17g", b->c0);
-    tpl_set(&env, "HG", "%.17g", 0.5 * b->hourglass * b->E); /* alpha E / 2 */
 #define PLAN_SWITCH(member, name, sw, value) tpl_switch(&env, #sw, p->member);
     PLAN_FEATURES(PLAN_SWITCH)
 #undef PLAN_SWITCH
     tpl_set(&env, "NSTATE", "%d", p->nstate);
-    const double *g = E->m->gravity; /* compact components */
-    tpl_set(&env, "G0", "%.17g", g[0]);
-    tpl_set(&env, "G1", "%.17g", E->m->dim == 2 ? g[2] : g[1]);
-    tpl_set(&env, "G2", "%.17g", E->m->dim == 2 ? 0.0 : g[2]);
-    if (p->fracture) {
-        const FractureModel *f = &b->fracture;
-        tpl_set(&env, "GC", "%.17g", f->Gc);
-        tpl_set(&env, "EPS0", "%.17g", f->eps0);
-        tpl_set(&env, "SLIMIT", "%.17g", f->limit);
-        tpl_set(&env, "PF_A", "%.17g", b->c0 * b->c0 / (2 * f->eps0)); /* c^2 / (2 eps0) */
-    }
+    int k = 0;
+#define PLAN_KEY(member, key, value, when)                                                    \
+    if (p->numbers >> k++ & 1)                                                                 \
+        tpl_set(&env, #key, "%.17g", p->member);
+    PLAN_NUMBERS(PLAN_KEY)
+#undef PLAN_KEY
     char path[4096];
     snprintf(path, sizeof path, "%s/%s", E->templates, file);
     int rc = tpl_expand(path, &env, E->out);

@@ -24,6 +24,24 @@ static void features(const Model *m, const BodyModel *b, const LawRoots *r, Body
 #undef PLAN_VALUE
 }
 
+#define PLAN_ROW(member, key, value, when) +1
+_Static_assert(0 PLAN_NUMBERS(PLAN_ROW) <= 32, "BodyPlan.numbers has a bit per row of PLAN_NUMBERS");
+#undef PLAN_ROW
+
+/* Each row of PLAN_NUMBERS (plan.h) that holds for body b, after its features. */
+static void numbers(const Model *m, const BodyModel *b, BodyPlan *p)
+{
+    int k = 0;
+#define PLAN_VALUE(member, key, value, when)                                                  \
+    if (when) {                                                                                \
+        p->member = (value);                                                                   \
+        p->numbers |= 1u << k;                                                                 \
+    }                                                                                          \
+    k++;
+    PLAN_NUMBERS(PLAN_VALUE)
+#undef PLAN_VALUE
+}
+
 int lower_model(const Model *m, Plan *plan)
 {
     int bad = 0;
@@ -40,6 +58,7 @@ int lower_model(const Model *m, Plan *plan)
         bad |= law_build(&p->law, m, b->law, b->law_args, m->dim, b->fracture.on, &p->roots) != 0;
         p->nstate = p->roots.nslots;
         features(m, b, &p->roots, p);
+        numbers(m, b, p);
         plan->fracture |= p->fracture;
     }
     if (bad)

@@ -31,10 +31,33 @@
     X(bc_fns, "bc_fns", BC_FNS, bcs_applied(b, BC_VELOCITY) + bcs_applied(b, BC_FORCE))        \
     X(symplectic, NULL, SYMPLECTIC, m->integrator == INTEGRATOR_SYMPLECTIC) /* else Verlet */
 
+/* The numbers of a body's code that the templates read, one row each:
+ *
+ *   X(member, key in templates/, value, when)
+ *
+ * computed by lower.c where `when` holds (from m, b and its features p); a template reads
+ * the member's value as @KEY@ (a key not bound is an error where a template uses it). */
+#define PLAN_NUMBERS(X)                                                                       \
+    X(beta1, BETA1, b->beta1, 1) /* eq. 58 */                                                  \
+    X(beta2_value, BETA2, b->beta2, 1)                                                         \
+    X(c0, C0, b->c0, 1) /* eq. 59 */                                                           \
+    X(hg, HG, 0.5 * b->hourglass * b->E, 1) /* alpha E / 2 */                                  \
+    X(g0, G0, m->gravity[0], 1) /* gravity, compact components */                              \
+    X(g1, G1, m->dim == 2 ? m->gravity[2] : m->gravity[1], 1)                                  \
+    X(g2, G2, m->dim == 2 ? 0.0 : m->gravity[2], 1)                                            \
+    X(gc, GC, b->fracture.Gc, p->fracture)                                                     \
+    X(eps0, EPS0, b->fracture.eps0, p->fracture)                                               \
+    X(slimit, SLIMIT, b->fracture.limit, p->fracture) /* s_l of eq. 63 */                      \
+    X(pf_a, PF_A, b->c0 * b->c0 / (2 * b->fracture.eps0), p->fracture) /* c^2 / (2 eps0) */
+
 typedef struct {
 #define PLAN_MEMBER(member, name, sw, value) int member;
     PLAN_FEATURES(PLAN_MEMBER)
 #undef PLAN_MEMBER
+#define PLAN_NUMBER(member, key, value, when) double member;
+    PLAN_NUMBERS(PLAN_NUMBER)
+#undef PLAN_NUMBER
+    unsigned numbers;   /* bit k: row k of PLAN_NUMBERS holds (its `when`) */
     int nstate;         /* state values per particle of its law (plasticity); 0: none */
     SGraph law;         /* the material law, constants folded, for this body's dimension */
     LawRoots roots;
