@@ -561,30 +561,50 @@ static int plane_cuts(const BodyModel *b)
     return 0;
 }
 
+static int check_refine(const Model *m, const Setting *s, BodyModel *b)
+{
+    return setting_int(m, s, 1, &b->refine);
+}
+
+static int check_nbsrange(const Model *m, const Setting *s, BodyModel *b)
+{
+    return setting_int(m, s, 1, &b->nbsrange);
+}
+
+static int check_restitution(const Model *m, const Setting *s, BodyModel *b)
+{
+    return check_contact_setting(m, s, &b->restitution);
+}
+
+static int check_friction(const Model *m, const Setting *s, BodyModel *b)
+{
+    return check_contact_setting(m, s, &b->friction);
+}
+
+/* The body settings (docs/language.md), each with its check; a new one is a row here. */
+static const struct {
+    const char *key;
+    int (*check)(const Model *m, const Setting *s, BodyModel *b);
+} SETTINGS[] = {
+    {"refine", check_refine},           {"nbsrange", check_nbsrange},
+    {"viscosity", check_viscosity},     {"hourglass", check_hourglass},
+    {"lattice", check_lattice},         {"restitution", check_restitution},
+    {"friction", check_friction},       {"soundspeed", check_soundspeed},
+    {"plane", check_plane},
+};
+enum { NSETTINGS = sizeof SETTINGS / sizeof SETTINGS[0] };
+
 static int check_setting(const Model *m, const Setting *s, BodyModel *b)
 {
-    if (!strcmp(s->key, "plane"))
-        return check_plane(m, s, b);
-    if (!strcmp(s->key, "refine"))
-        return setting_int(m, s, 1, &b->refine);
-    if (!strcmp(s->key, "nbsrange"))
-        return setting_int(m, s, 1, &b->nbsrange);
-    if (!strcmp(s->key, "viscosity"))
-        return check_viscosity(m, s, b);
-    if (!strcmp(s->key, "hourglass"))
-        return check_hourglass(m, s, b);
-    if (!strcmp(s->key, "lattice"))
-        return check_lattice(m, s, b);
-    if (!strcmp(s->key, "restitution"))
-        return check_contact_setting(m, s, &b->restitution);
-    if (!strcmp(s->key, "friction"))
-        return check_contact_setting(m, s, &b->friction);
-    if (!strcmp(s->key, "soundspeed"))
-        return check_soundspeed(m, s, b);
-    diag_error(s->loc, "unknown body setting '%s' (expected refine, nbsrange, viscosity, "
-                       "hourglass, lattice, restitution, friction, soundspeed, plane or "
-                       "restrict)",
-               s->key);
+    for (int k = 0; k < NSETTINGS; k++)
+        if (!strcmp(s->key, SETTINGS[k].key))
+            return SETTINGS[k].check(m, s, b);
+    char expected[256] = "";
+    for (int k = 0; k < NSETTINGS; k++) /* `restrict` is read with the fracture */
+        snprintf(expected + strlen(expected), sizeof expected - strlen(expected), "%s, ",
+                 SETTINGS[k].key);
+    expected[strlen(expected) - 2] = 0;
+    diag_error(s->loc, "unknown body setting '%s' (expected %s or restrict)", s->key, expected);
     return -1;
 }
 
