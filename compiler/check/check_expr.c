@@ -44,7 +44,7 @@ static int check_call(const ExprScope *s, const Expr *e, int tail)
         return -1;
     }
     int bad = 0;
-    int is_if = strcmp(e->name, "if") == 0;
+    int is_if = !fn && builtin_function(e->name) == BI_if;
     for (int i = 0; i < e->nargs; i++)
         bad |= check_scalar_expr(s, e->args[i], is_if && i > 0 ? tail : 0);
     return bad ? -1 : 0;

@@ -2,10 +2,10 @@
  *
  * The checker uses it to fold constants (`let`, settings, shape coordinates); tests use it
  * to compare the compiled C of an expression against the model's meaning. */
-#include <math.h>
 #include <string.h>
 
 #include "eval.h"
+#include "lang/arith.h"
 #include "lang/builtins.h"
 
 const ConstDef *model_find_const(const Model *m, const char *name)
@@ -48,24 +48,6 @@ static int eval_name(const Model *m, const Expr *e, const EvalEnv *env, double *
     return EVAL_NOT_CONSTANT;
 }
 
-static double apply1(const char *f, double x)
-{
-    if (!strcmp(f, "sin")) return sin(x);
-    if (!strcmp(f, "cos")) return cos(x);
-    if (!strcmp(f, "tan")) return tan(x);
-    if (!strcmp(f, "cot")) return 1.0 / tan(x);
-    if (!strcmp(f, "sinh")) return sinh(x);
-    if (!strcmp(f, "cosh")) return cosh(x);
-    if (!strcmp(f, "tanh")) return tanh(x);
-    if (!strcmp(f, "coth")) return 1.0 / tanh(x);
-    if (!strcmp(f, "sqrt")) return sqrt(x);
-    if (!strcmp(f, "log")) return log10(x);
-    if (!strcmp(f, "ln")) return log(x);
-    if (!strcmp(f, "exp")) return exp(x);
-    if (!strcmp(f, "abs")) return fabs(x);
-    return NAN;
-}
-
 static int eval_user_fn(const Model *m, const FnDef *fn, const double *args, const EvalEnv *env,
                         double *out)
 {
@@ -81,7 +63,8 @@ static int eval_user_fn(const Model *m, const FnDef *fn, const double *args, con
 
 static int eval_call(const Model *m, const Expr *e, const EvalEnv *env, double *out)
 {
-    if (strcmp(e->name, "if") == 0) {
+    int f = builtin_function(e->name);
+    if (f == BI_if) { /* only the chosen branch: the other may skip or need a variable */
         double c;
         int r = eval_expr(m, e->args[0], env, &c);
         if (r != EVAL_OK)
@@ -99,33 +82,19 @@ static int eval_call(const Model *m, const Expr *e, const EvalEnv *env, double *
     const FnDef *fn = model_find_fn(m, e->name);
     if (fn)
         return eval_user_fn(m, fn, a, env, out);
-    if (!strcmp(e->name, "pow")) *out = pow(a[0], a[1]);
-    else if (!strcmp(e->name, "min")) *out = fmin(a[0], a[1]);
-    else if (!strcmp(e->name, "max")) *out = fmax(a[0], a[1]);
-    else if (e->nargs == 1) *out = apply1(e->name, a[0]);
-    else return EVAL_ERROR;
+    if (f < 0 || BUILTIN_FUNCTION[f].arity != e->nargs)
+        return EVAL_ERROR;
+    *out = builtin_value(f, a);
     return EVAL_OK;
 }
 
-static double apply_binary(OpKind op, double x, double y)
-{
-    switch (op) {
-    case OP_ADD: return x + y;
-    case OP_SUB: return x - y;
-    case OP_MUL: return x * y;
-    case OP_DIV: return x / y;
-    case OP_POW: return pow(x, y);
-    case OP_LT: return x < y;
-    case OP_GT: return x > y;
-    case OP_LE: return x <= y;
-    case OP_GE: return x >= y;
-    case OP_EQ: return x == y;
-    case OP_NE: return x != y;
-    case OP_AND: return (x != 0.0) && (y != 0.0);
-    case OP_OR: return (x != 0.0) || (y != 0.0);
-    default: return NAN;
-    }
-}
+/* The operators of the language in the folding arithmetic. */
+static const ArithOp ARITH[] = {
+    [OP_ADD] = AR_ADD, [OP_SUB] = AR_SUB, [OP_MUL] = AR_MUL, [OP_DIV] = AR_DIV,
+    [OP_POW] = AR_POW, [OP_LT] = AR_LT,   [OP_GT] = AR_GT,   [OP_LE] = AR_LE,
+    [OP_GE] = AR_GE,   [OP_EQ] = AR_EQ,   [OP_NE] = AR_NE,   [OP_AND] = AR_AND,
+    [OP_OR] = AR_OR,   [OP_NEG] = AR_NEG, [OP_NOT] = AR_NOT,
+};
 
 int eval_expr(const Model *m, const Expr *e, const EvalEnv *env, double *out)
 {
@@ -146,14 +115,14 @@ int eval_expr(const Model *m, const Expr *e, const EvalEnv *env, double *out)
     case EX_UNARY:
         if ((r = eval_expr(m, e->args[0], env, &x)) != EVAL_OK)
             return r == EVAL_SKIP ? EVAL_ERROR : r;
-        *out = e->op == OP_NEG ? -x : (double)(x == 0.0);
+        *out = arith_unary(ARITH[e->op], x);
         return EVAL_OK;
     case EX_BINARY:
         if ((r = eval_expr(m, e->args[0], env, &x)) != EVAL_OK)
             return r == EVAL_SKIP ? EVAL_ERROR : r;
         if ((r = eval_expr(m, e->args[1], env, &y)) != EVAL_OK)
             return r == EVAL_SKIP ? EVAL_ERROR : r;
-        *out = apply_binary(e->op, x, y);
+        *out = arith_binary(ARITH[e->op], x, y);
         return EVAL_OK;
     }
     return EVAL_ERROR;

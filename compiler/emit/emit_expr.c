@@ -23,17 +23,6 @@ static void name(FILE *out, const EmitScope *s, const char *n)
     fprintf(out, "p->%s", n); /* a particle variable (checked) */
 }
 
-static const char *c_function(const char *f)
-{
-    static const char *const map[][2] = {
-        {"ln", "log"}, {"log", "log10"}, {"abs", "fabs"}, {"min", "fmin"}, {"max", "fmax"},
-    };
-    for (size_t i = 0; i < sizeof map / sizeof map[0]; i++)
-        if (!strcmp(f, map[i][0]))
-            return map[i][1];
-    return f;
-}
-
 static void args(FILE *out, const EmitScope *s, const Expr *e)
 {
     for (int i = 0; i < e->nargs; i++) {
@@ -43,9 +32,18 @@ static void args(FILE *out, const EmitScope *s, const Expr *e)
     }
 }
 
+/* A user function f_NAME(...), or a built-in by its form (lang/builtins.h). */
 static void call(FILE *out, const EmitScope *s, const Expr *e)
 {
-    if (!strcmp(e->name, "if")) {
+    if (model_find_fn(s->model, e->name)) {
+        fprintf(out, "f_%s(", e->name);
+        args(out, s, e);
+        fputs(")", out);
+        return;
+    }
+    const Builtin *b = &BUILTIN_FUNCTION[builtin_function(e->name)]; /* checked */
+    switch (b->form) {
+    case BF_IF:
         fputs("(", out);
         emit_expr(out, s, e->args[0]);
         fputs(" ? ", out);
@@ -54,19 +52,17 @@ static void call(FILE *out, const EmitScope *s, const Expr *e)
         emit_expr(out, s, e->args[2]);
         fputs(")", out);
         return;
-    }
-    if (!strcmp(e->name, "cot") || !strcmp(e->name, "coth")) {
-        fprintf(out, "(1.0 / %s(", e->name[3] == 'h' ? "tanh" : "tan");
+    case BF_RECIP:
+        fprintf(out, "(1.0 / %s(", b->c);
         emit_expr(out, s, e->args[0]);
         fputs("))", out);
         return;
+    default:
+        fprintf(out, "%s(", b->c);
+        args(out, s, e);
+        fputs(")", out);
+        return;
     }
-    if (model_find_fn(s->model, e->name))
-        fprintf(out, "f_%s(", e->name);
-    else
-        fprintf(out, "%s(", c_function(e->name));
-    args(out, s, e);
-    fputs(")", out);
 }
 
 /* A number as a C double literal: %.17g writes whole numbers without a point (2, 1e+16 is
@@ -140,7 +136,7 @@ int expr_uses_variables(const Model *m, const Expr *e)
 
 static int is_if(const Expr *e)
 {
-    return e->kind == EX_CALL && !strcmp(e->name, "if") && e->nargs == 3;
+    return e->kind == EX_CALL && builtin_function(e->name) == BI_if && e->nargs == 3;
 }
 
 int expr_may_skip(const Expr *e)

@@ -259,19 +259,6 @@ static Val unary(Law *L, const Expr *e)
     return a;
 }
 
-static const char *c_math_name(const char *f)
-{
-    static const char *const map[][2] = {
-        {"sin", "sin"},   {"cos", "cos"},   {"tan", "tan"},   {"sinh", "sinh"},
-        {"cosh", "cosh"}, {"tanh", "tanh"}, {"sqrt", "sqrt"}, {"ln", "log"},
-        {"log", "log10"}, {"exp", "exp"},   {"abs", "fabs"},
-    };
-    for (size_t i = 0; i < sizeof map / sizeof map[0]; i++)
-        if (!strcmp(f, map[i][0]))
-            return map[i][1];
-    return NULL;
-}
-
 static Val tensor_fn(Law *L, const Expr *e, Val a)
 {
     const char *f = e->name;
@@ -333,28 +320,51 @@ static Val user_fn(Law *L, const Expr *e, const FnDef *fn)
     return r;
 }
 
+/* A built-in function of Table 2 by its form (lang/builtins.h); `if` also chooses between
+ * tensors. */
+static Val builtin(Law *L, const Expr *e, int f)
+{
+    const Builtin *b = &BUILTIN_FUNCTION[f];
+    if (check_arity(e, b->arity))
+        return BAD;
+    if (b->form == BF_IF) {
+        Val c = need_scalar(e, eval(L, e->args[0]), "the condition of 'if'");
+        Val x = eval(L, e->args[1]), y = eval(L, e->args[2]);
+        if (!ok(c) || !ok(x) || !ok(y))
+            return BAD;
+        if (x.tensor != y.tensor) {
+            diag_error(e->loc, "the branches of 'if' must have the same type");
+            return BAD;
+        }
+        if (!x.tensor)
+            return scalar(sg_select(L->g, c.s, x.s, y.s));
+        for (int k = 0; k < 9; k++)
+            x.t[k] = sg_select(L->g, c.s, x.t[k], y.t[k]);
+        return x;
+    }
+    Val a[2];
+    int bad = 0;
+    for (int i = 0; i < b->arity; i++)
+        bad |= !ok(a[i] = need_scalar(e, eval(L, e->args[i]), e->name));
+    if (bad)
+        return BAD;
+    switch (b->form) {
+    case BF_POW: return scalar(sg_binary(L->g, SN_POW, a[0].s, a[1].s));
+    case BF_MIN: return scalar(sg_binary(L->g, SN_MIN, a[0].s, a[1].s));
+    case BF_MAX: return scalar(sg_binary(L->g, SN_MAX, a[0].s, a[1].s));
+    case BF_RECIP: { /* 1 / c(x), its call shared with uses of c itself (cot and tan) */
+        int t = sg_call(L->g, builtin_of_c(b->c), a[0].s);
+        return scalar(sg_binary(L->g, SN_DIV, sg_const(L->g, 1.0), t));
+    }
+    default: return scalar(sg_call(L->g, f, a[0].s));
+    }
+}
+
 static Val call(Law *L, const Expr *e)
 {
     const FnDef *fn = model_find_fn(L->m, e->name);
     if (fn)
         return user_fn(L, e, fn);
-    if (!strcmp(e->name, "if")) {
-        if (check_arity(e, 3))
-            return BAD;
-        Val c = need_scalar(e, eval(L, e->args[0]), "the condition of 'if'");
-        Val a = eval(L, e->args[1]), b = eval(L, e->args[2]);
-        if (!ok(c) || !ok(a) || !ok(b))
-            return BAD;
-        if (a.tensor != b.tensor) {
-            diag_error(e->loc, "the branches of 'if' must have the same type");
-            return BAD;
-        }
-        if (!a.tensor)
-            return scalar(sg_select(L->g, c.s, a.s, b.s));
-        for (int k = 0; k < 9; k++)
-            a.t[k] = sg_select(L->g, c.s, a.t[k], b.t[k]);
-        return a;
-    }
     if (!strcmp(e->name, "ddot")) {
         if (check_arity(e, 2))
             return BAD;
@@ -368,26 +378,9 @@ static Val call(Law *L, const Expr *e)
         Val a = need_tensor(e, eval(L, e->args[0]), e->name);
         return ok(a) ? tensor_fn(L, e, a) : BAD;
     }
-    if (!strcmp(e->name, "pow") || !strcmp(e->name, "min") || !strcmp(e->name, "max")) {
-        if (check_arity(e, 2))
-            return BAD;
-        Val a = need_scalar(e, eval(L, e->args[0]), e->name);
-        Val b = need_scalar(e, eval(L, e->args[1]), e->name);
-        SnOp op = e->name[0] == 'p' ? SN_POW : e->name[1] == 'i' ? SN_MIN : SN_MAX;
-        return ok(a) && ok(b) ? scalar(sg_binary(L->g, op, a.s, b.s)) : BAD;
-    }
-    const char *cf = c_math_name(e->name);
-    if (cf || !strcmp(e->name, "cot") || !strcmp(e->name, "coth")) {
-        if (check_arity(e, 1))
-            return BAD;
-        Val a = need_scalar(e, eval(L, e->args[0]), e->name);
-        if (!ok(a))
-            return BAD;
-        if (cf)
-            return scalar(sg_call(L->g, cf, a.s));
-        int t = sg_call(L->g, e->name[3] == 'h' ? "tanh" : "tan", a.s);
-        return scalar(sg_binary(L->g, SN_DIV, sg_const(L->g, 1.0), t));
-    }
+    int f = builtin_function(e->name);
+    if (f >= 0)
+        return builtin(L, e, f);
     diag_error(e->loc, "unknown function '%s'", e->name);
     return BAD;
 }
@@ -447,7 +440,7 @@ static int state_stmt(Law *L, const MatStmt *s)
                        s->name);
             return -1;
         }
-        int input = sg_input(L->g, LAW_INPUT_STATE + r->nslots + k);
+        int input = sg_input(L->g, LAW_INPUT_STATE, r->nslots + k);
         *(v.tensor ? &in.t[k] : &in.s) = input;
     }
     r->states[r->nstates++] = (LawState){s->name, r->nslots, size};
@@ -673,7 +666,8 @@ static void bind_F(Law *L, int dim)
     for (int k = 0; k < 9; k++) {
         int r = k / 3, c = k % 3;
         int out_of_plane = dim == 2 && (r == 1 || c == 1);
-        F.t[k] = out_of_plane ? sg_const(L->g, r == c ? 1.0 : 0.0) : sg_input(L->g, k);
+        F.t[k] = out_of_plane ? sg_const(L->g, r == c ? 1.0 : 0.0)
+                              : sg_input(L->g, LAW_INPUT_F, k);
     }
     bind(L, "F", F);
 }
@@ -681,7 +675,7 @@ static void bind_F(Law *L, int dim)
 /* S = s^2 S+ + (S - S+) (eq. 18), psi = s^2 psi+ + (psi - psi+) (eq. 7). */
 static void degrade(SGraph *g, LawRoots *r)
 {
-    int s = sg_input(g, LAW_INPUT_S);
+    int s = sg_input(g, LAW_INPUT_S, -1);
     int s2 = sg_binary(g, SN_MUL, s, s);
     for (int k = 0; k < 9; k++)
         r->Sd[k] = sg_binary(g, SN_ADD, sg_binary(g, SN_MUL, s2, r->Sp[k]),

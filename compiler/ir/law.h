@@ -20,7 +20,7 @@ typedef struct {
     int has_tension;
     int Sp[9];  /* its tensile part S+ (eq. 17, 31), from the law's `tension` block */
     int psip;   /* the tensile energy psi+ (eq. 11, 20) */
-    int Sd[9];  /* degraded by the phase field s (input 9): S = s^2 S+ + S- (eq. 18) */
+    int Sd[9];  /* degraded by the phase field s: S = s^2 S+ + S- (eq. 18) */
     int psid;   /* psi = s^2 psi+ + psi- (eq. 7) */
     LawState states[LAW_MAX_STATES];
     int nstates;
@@ -36,9 +36,10 @@ typedef struct {
 int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *params, int dim,
               int tension, LawRoots *out);
 
-/* Graph inputs: F is 0-8, the phase field s of a degraded law 9, state slot k is
- * LAW_INPUT_STATE + k (emitted as st[k]). */
-#define LAW_INPUT_S 9
-#define LAW_INPUT_STATE 16
+/* The law's graph inputs, named as the parameters of the emitted material function:
+ * F[k] (row-major), the phase field s of a degraded law, the state slots st[k]. */
+#define LAW_INPUT_F "F"
+#define LAW_INPUT_S "s"
+#define LAW_INPUT_STATE "st"
 
 #endif

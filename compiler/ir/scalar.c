@@ -4,6 +4,8 @@
 #include <string.h>
 
 #include "scalar.h"
+#include "lang/arith.h"
+#include "lang/builtins.h"
 #include "util/source.h"
 
 void sg_init(SGraph *g)
@@ -30,8 +32,9 @@ static unsigned hash_node(const SNode *s)
     unsigned long long bits;
     memcpy(&bits, &s->v, sizeof bits);
     h ^= (unsigned)(bits ^ (bits >> 32));
-    if (s->fn)
-        for (const char *p = s->fn; *p; p++)
+    h = h * 31u + (unsigned)s->fn;
+    if (s->name)
+        for (const char *p = s->name; *p; p++)
             h = h * 31u + (unsigned char)*p;
     for (int k = 0; k < s->nargs; k++)
         h = h * 131u + (unsigned)(s->args[k] + 17);
@@ -40,13 +43,13 @@ static unsigned hash_node(const SNode *s)
 
 static int same_node(const SNode *x, const SNode *y)
 {
-    if (x->op != y->op || x->a != y->a || x->b != y->b || x->c != y->c)
+    if (x->op != y->op || x->a != y->a || x->b != y->b || x->c != y->c || x->fn != y->fn)
         return 0;
     if (memcmp(&x->v, &y->v, sizeof x->v) != 0)
         return 0;
     if (x->nargs != y->nargs || memcmp(x->args, y->args, (size_t)x->nargs * sizeof(int)))
         return 0;
-    return (!x->fn && !y->fn) || (x->fn && y->fn && !strcmp(x->fn, y->fn));
+    return (!x->name && !y->name) || (x->name && y->name && !strcmp(x->name, y->name));
 }
 
 static void grow_table(SGraph *g)
@@ -102,10 +105,11 @@ int sg_const(SGraph *g, double v)
     return intern(g, s);
 }
 
-int sg_input(SGraph *g, int index)
+int sg_input(SGraph *g, const char *name, int index)
 {
     SNode s = node(SN_INPUT, -1, -1, -1);
-    s.v = index;
+    s.name = name;
+    s.v = index < 0 ? -1 : index;
     return intern(g, s);
 }
 
@@ -127,27 +131,14 @@ int sg_is_const(const SGraph *g, int id, double *v)
 
 /* ------------------------------------------------------------------ folding */
 
-static double fold_binary(SnOp op, double x, double y)
-{
-    switch (op) {
-    case SN_ADD: return x + y;
-    case SN_SUB: return x - y;
-    case SN_MUL: return x * y;
-    case SN_DIV: return x / y;
-    case SN_POW: return pow(x, y);
-    case SN_MIN: return fmin(x, y);
-    case SN_MAX: return fmax(x, y);
-    case SN_LT: return x < y;
-    case SN_LE: return x <= y;
-    case SN_GT: return x > y;
-    case SN_GE: return x >= y;
-    case SN_EQ: return x == y;
-    case SN_NE: return x != y;
-    case SN_AND: return x != 0.0 && y != 0.0;
-    case SN_OR: return x != 0.0 || y != 0.0;
-    default: return NAN;
-    }
-}
+/* The graph's operators in the folding arithmetic (the interpreter's, check/eval.c). */
+static const ArithOp ARITH[] = {
+    [SN_ADD] = AR_ADD, [SN_SUB] = AR_SUB, [SN_MUL] = AR_MUL, [SN_DIV] = AR_DIV,
+    [SN_NEG] = AR_NEG, [SN_POW] = AR_POW, [SN_MIN] = AR_MIN, [SN_MAX] = AR_MAX,
+    [SN_LT] = AR_LT,   [SN_LE] = AR_LE,   [SN_GT] = AR_GT,   [SN_GE] = AR_GE,
+    [SN_EQ] = AR_EQ,   [SN_NE] = AR_NE,   [SN_AND] = AR_AND, [SN_OR] = AR_OR,
+    [SN_NOT] = AR_NOT,
+};
 
 static int commutative(SnOp op)
 {
@@ -186,7 +177,7 @@ static int fold_identity(SGraph *g, SnOp op, int a, int b)
         if (cb && y == 1.0) return a;
         if (cb && y == 0.0) return sg_const(g, 1.0);
         if (cb && y == 2.0) return sg_binary(g, SN_MUL, a, a);
-        if (cb && y == 0.5) return sg_call(g, "sqrt", a);
+        if (cb && y == 0.5) return sg_call(g, BI_sqrt, a);
         break;
     default:
         break;
@@ -198,7 +189,7 @@ int sg_binary(SGraph *g, SnOp op, int a, int b)
 {
     double x, y;
     if (sg_is_const(g, a, &x) && sg_is_const(g, b, &y))
-        return sg_const(g, fold_binary(op, x, y));
+        return sg_const(g, arith_binary(ARITH[op], x, y));
     int f = fold_identity(g, op, a, b);
     if (f >= 0)
         return f;
@@ -216,28 +207,19 @@ int sg_unary(SGraph *g, SnOp op, int a)
 {
     double x;
     if (sg_is_const(g, a, &x))
-        return sg_const(g, op == SN_NEG ? -x : (double)(x == 0.0));
+        return sg_const(g, arith_unary(ARITH[op], x));
     if (op == SN_NEG && g->nodes[a].op == SN_NEG)
         return g->nodes[a].a;
     return intern(g, node(op, a, -1, -1));
 }
 
-int sg_call(SGraph *g, const char *fn, int a)
+/* A constant argument folds by the interpreter's value of the built-in, unless that is
+ * NaN (sqrt of a negative constant stays a call in the generated code). */
+int sg_call(SGraph *g, int fn, int a)
 {
     double x;
     if (sg_is_const(g, a, &x)) {
-        double r = NAN;
-        if (!strcmp(fn, "sqrt")) r = sqrt(x);
-        else if (!strcmp(fn, "log")) r = log(x);
-        else if (!strcmp(fn, "log10")) r = log10(x);
-        else if (!strcmp(fn, "exp")) r = exp(x);
-        else if (!strcmp(fn, "fabs")) r = fabs(x);
-        else if (!strcmp(fn, "sin")) r = sin(x);
-        else if (!strcmp(fn, "cos")) r = cos(x);
-        else if (!strcmp(fn, "tan")) r = tan(x);
-        else if (!strcmp(fn, "sinh")) r = sinh(x);
-        else if (!strcmp(fn, "cosh")) r = cosh(x);
-        else if (!strcmp(fn, "tanh")) r = tanh(x);
+        double r = builtin_value(fn, &x);
         if (!isnan(r))
             return sg_const(g, r);
     }
@@ -259,7 +241,7 @@ int sg_select(SGraph *g, int c, int a, int b)
 int sg_ext(SGraph *g, const char *fn, const int *args, int nargs, int nout)
 {
     SNode s = node(SN_EXT, -1, nout, -1);
-    s.fn = fn;
+    s.name = fn;
     s.nargs = nargs;
     memcpy(s.args, args, (size_t)nargs * sizeof(int));
     return intern(g, s);
@@ -288,12 +270,10 @@ void sg_ref(const SGraph *g, int id, FILE *out)
         else
             fprintf(out, "%.17g", s->v);
     } else if (s->op == SN_INPUT) {
-        if ((int)s->v < 9)
-            fprintf(out, "F[%d]", (int)s->v);
-        else if ((int)s->v < 16)
-            fputs("s", out); /* the phase field (law.h: LAW_INPUT_S) */
+        if (s->v < 0)
+            fputs(s->name, out);
         else
-            fprintf(out, "st[%d]", (int)s->v - 16); /* a state slot (LAW_INPUT_STATE) */
+            fprintf(out, "%s[%d]", s->name, (int)s->v);
     } else if (s->op == SN_PARAM) {
         fprintf(out, "p%d", (int)s->v);
     } else if (s->op == SN_PART) {
@@ -344,7 +324,11 @@ static void emit_node(const SGraph *g, int id, FILE *out)
     case SN_POW: fputs("pow(", out); break;
     case SN_MIN: fputs("fmin(", out); break;
     case SN_MAX: fputs("fmax(", out); break;
-    case SN_CALL: fprintf(out, "%s(", s->fn); arg_ref(g, s->a, out); fputs(")", out); return;
+    case SN_CALL:
+        fprintf(out, "%s(", BUILTIN_FUNCTION[s->fn].c);
+        arg_ref(g, s->a, out);
+        fputs(")", out);
+        return;
     case SN_SELECT:
         sg_ref(g, s->a, out);
         fputs(" ? ", out);
@@ -390,7 +374,7 @@ static void emit_ext(const SGraph *g, int id, FILE *out, const char *indent)
         sg_ref(g, s->args[k], out);
     }
     fprintf(out, "%s%sdouble t%d[%d];\n%s%s(", packed ? "};\n" : "", indent, id, s->b, indent,
-            s->fn);
+            s->name);
     if (packed)
         fprintf(out, "a%d", id);
     for (int k = 0; !packed && k < s->nargs; k++) {

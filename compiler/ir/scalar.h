@@ -11,13 +11,13 @@
 
 typedef enum {
     SN_CONST,  /* v */
-    SN_INPUT,  /* F[(int)v] */
+    SN_INPUT,  /* name[(int)v], or name when v < 0: an input of the emitted function */
     SN_PARAM,  /* law parameter (int)v, symbolic (checking only) */
     SN_ADD, SN_SUB, SN_MUL, SN_DIV, SN_NEG, SN_POW, SN_MIN, SN_MAX,
     SN_LT, SN_LE, SN_GT, SN_GE, SN_EQ, SN_NE, SN_AND, SN_OR, SN_NOT,
-    SN_CALL,   /* fn(a): sqrt, log, ... */
+    SN_CALL,   /* a built-in function of a: sqrt, log10, ... */
     SN_SELECT, /* a ? b : c */
-    SN_EXT,    /* fn(args..., out): a runtime routine with b outputs (sph_sym_pos3, ...) */
+    SN_EXT,    /* name(args..., out): a runtime routine with b outputs (sph_sym_pos3, ...) */
     SN_PART    /* output (int)v of the SN_EXT node a */
 } SnOp;
 
@@ -26,8 +26,9 @@ typedef enum {
 typedef struct {
     SnOp op;
     int a, b, c;        /* operands (node ids), -1 when unused */
-    double v;           /* SN_CONST value, SN_INPUT / SN_PARAM index */
-    const char *fn;     /* SN_CALL, SN_EXT: C function name (static string) */
+    double v;           /* SN_CONST value, SN_INPUT / SN_PARAM / SN_PART index */
+    const char *name;   /* SN_INPUT: its array; SN_EXT: the routine (static strings) */
+    int fn;             /* SN_CALL: the built-in (BuiltinId, lang/builtins.h) */
     int args[SG_MAX_ARGS]; /* SN_EXT operands */
     int nargs;
     int line;           /* model line of the statement that created it */
@@ -47,11 +48,11 @@ void sg_init(SGraph *g);
 void sg_free(SGraph *g);
 
 int sg_const(SGraph *g, double v);
-int sg_input(SGraph *g, int index);
+int sg_input(SGraph *g, const char *name, int index); /* name[index]; name when index < 0 */
 int sg_param(SGraph *g, int index);
 int sg_binary(SGraph *g, SnOp op, int a, int b);
 int sg_unary(SGraph *g, SnOp op, int a);         /* SN_NEG, SN_NOT */
-int sg_call(SGraph *g, const char *fn, int a);   /* fn: a C math function name */
+int sg_call(SGraph *g, int fn, int a);           /* fn: a BF_CALL built-in, BI_sqrt, ... */
 int sg_select(SGraph *g, int c, int a, int b);
 /* A call of a runtime routine with nargs scalar inputs and nout outputs; its outputs are
  * sg_part(g, ext, k).  Emitted as `double tN[nout]; fn(a0, ..., tN);` (inputs passed as

@@ -1,6 +1,9 @@
 /* builtins.c — the built-in names of the expression language (paper Tables 1 and 2). */
+#include <math.h>
+#include <stddef.h>
 #include <string.h>
 
+#include "arith.h"
 #include "builtins.h"
 
 /* Order matters: it is the field order of sph_pt in runtime/sphrt.h. */
@@ -17,19 +20,40 @@ int builtin_variable(const char *name)
     return -1;
 }
 
-static const struct {
-    const char *name;
-    int arity;
-} FUNCTIONS[] = {
-    {"sin", 1},  {"cos", 1},  {"tan", 1},  {"cot", 1},   {"sinh", 1}, {"cosh", 1},
-    {"tanh", 1}, {"coth", 1}, {"sqrt", 1}, {"log", 1},   {"ln", 1},   {"exp", 1},
-    {"abs", 1},  {"pow", 2},  {"min", 2},  {"max", 2},   {"if", 3},
+const Builtin BUILTIN_FUNCTION[NBUILTIN_FUNCTIONS] = {
+#define X(name, arity, form, c, value) {#name, arity, form, c},
+    BUILTIN_FUNCTIONS(X)
+#undef X
 };
+
+int builtin_function(const char *name)
+{
+    for (int f = 0; f < NBUILTIN_FUNCTIONS; f++)
+        if (strcmp(name, BUILTIN_FUNCTION[f].name) == 0)
+            return f;
+    return -1;
+}
 
 int builtin_function_arity(const char *name)
 {
-    for (size_t i = 0; i < sizeof FUNCTIONS / sizeof FUNCTIONS[0]; i++)
-        if (strcmp(name, FUNCTIONS[i].name) == 0)
-            return FUNCTIONS[i].arity;
+    int f = builtin_function(name);
+    return f < 0 ? -1 : BUILTIN_FUNCTION[f].arity;
+}
+
+double builtin_value(int f, const double *a)
+{
+    switch (f) {
+#define X(name, arity, form, c, value) case BI_##name: return value;
+        BUILTIN_FUNCTIONS(X)
+#undef X
+    }
+    return NAN;
+}
+
+int builtin_of_c(const char *c)
+{
+    for (int f = 0; f < NBUILTIN_FUNCTIONS; f++)
+        if (BUILTIN_FUNCTION[f].form == BF_CALL && strcmp(c, BUILTIN_FUNCTION[f].c) == 0)
+            return f;
     return -1;
 }

@@ -7,7 +7,65 @@ int builtin_variable(const char *name); /* index or -1 */
 extern const char *const BUILTIN_VARIABLES[];
 extern const int NBUILTIN_VARIABLES;
 
-/* Built-in scalar functions (Table 2): arity or -1 when unknown. */
-int builtin_function_arity(const char *name);
+/* How a built-in function is computed, in the generated C and in the law's scalar graph. */
+typedef enum {
+    BF_CALL,   /* c(x, ...); in the graph a call (SN_CALL) */
+    BF_RECIP,  /* 1.0 / c(x), c the function of a BF_CALL row; in the graph 1 / that call */
+    BF_POW,    /* c(x, y); in the graph the operator SN_POW (as x ^ y) */
+    BF_MIN,    /* c(x, y); in the graph SN_MIN */
+    BF_MAX,    /* c(x, y); in the graph SN_MAX */
+    BF_IF,     /* x ? y : z, only the chosen branch evaluated; in the graph a select */
+} BuiltinForm;
+
+/* The built-in functions (Table 2), one row each: X(name, arity, form, c, value) with
+ *   name   the function in the language (`log` is base 10, `ln` the natural logarithm);
+ *   form   a BuiltinForm;
+ *   c      the C function of the generated code (NULL for if);
+ *   value  its value for the arguments a[0], a[1], ... (<math.h>, lang/arith.h): what the
+ *          interpreter (check/eval.c) and the graph (ir/scalar.c) fold constants to.
+ * A new scalar function is one BF_CALL row; the checker, both folders, the law's graph and
+ * the emitted C all read this table. */
+#define BUILTIN_FUNCTIONS(X)                                                       \
+    X(sin,  1, BF_CALL,  "sin",   sin(a[0]))                                       \
+    X(cos,  1, BF_CALL,  "cos",   cos(a[0]))                                       \
+    X(tan,  1, BF_CALL,  "tan",   tan(a[0]))                                       \
+    X(cot,  1, BF_RECIP, "tan",   1.0 / tan(a[0]))                                 \
+    X(sinh, 1, BF_CALL,  "sinh",  sinh(a[0]))                                      \
+    X(cosh, 1, BF_CALL,  "cosh",  cosh(a[0]))                                      \
+    X(tanh, 1, BF_CALL,  "tanh",  tanh(a[0]))                                      \
+    X(coth, 1, BF_RECIP, "tanh",  1.0 / tanh(a[0]))                                \
+    X(sqrt, 1, BF_CALL,  "sqrt",  sqrt(a[0]))                                      \
+    X(log,  1, BF_CALL,  "log10", log10(a[0]))                                     \
+    X(ln,   1, BF_CALL,  "log",   log(a[0]))                                       \
+    X(exp,  1, BF_CALL,  "exp",   exp(a[0]))                                       \
+    X(abs,  1, BF_CALL,  "fabs",  fabs(a[0]))                                      \
+    X(pow,  2, BF_POW,   "pow",   arith_binary(AR_POW, a[0], a[1]))                \
+    X(min,  2, BF_MIN,   "fmin",  arith_binary(AR_MIN, a[0], a[1]))                \
+    X(max,  2, BF_MAX,   "fmax",  arith_binary(AR_MAX, a[0], a[1]))                \
+    X(if,   3, BF_IF,    NULL,    a[0] != 0.0 ? a[1] : a[2])
+
+/* Their indices: BI_sin, BI_cos, ... */
+typedef enum {
+#define X(name, arity, form, c, value) BI_##name,
+    BUILTIN_FUNCTIONS(X)
+#undef X
+    NBUILTIN_FUNCTIONS
+} BuiltinId;
+
+typedef struct {
+    const char *name;
+    int arity;
+    BuiltinForm form;
+    const char *c;
+} Builtin;
+
+extern const Builtin BUILTIN_FUNCTION[NBUILTIN_FUNCTIONS];
+
+int builtin_function(const char *name);          /* its BuiltinId, or -1 when unknown */
+int builtin_function_arity(const char *name);    /* its arity, or -1 when unknown */
+/* The value of built-in f for the arguments a[0 .. arity-1] (all of them, also for if). */
+double builtin_value(int f, const double *a);
+/* The BF_CALL row of C function c (what a BF_RECIP row inverts), or -1. */
+int builtin_of_c(const char *c);
 
 #endif
