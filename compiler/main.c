@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check/model.h"
+#include "check/check.h"
 #include "driver/driver.h"
 #include "front/sph_print.h"
 #include "lower/plan.h"

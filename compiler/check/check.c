@@ -8,7 +8,8 @@
 #include "util/diag.h"
 #include "mesh.h"
 #include "util/source.h"
-#include "eval.h"
+#include "model/eval.h"
+#include "ir/law.h"
 #include "lang/builtins.h"
 
 /* ------------------------------------------------------------------ let, fn, material */

@@ -1,9 +1,13 @@
-/* check.h — helpers shared by the checker's files (check*.c, elastic.c); the XML importer
- * shares the elastic constants and the admissibility rules. */
+/* check.h — the second stage, the syntax tree checked into the Model (model/model.h); the
+ * helpers its files share (check*.c, elastic.c); the elastic constants and admissibility
+ * rules the XML importer shares. */
 #ifndef SPHC_CHECK_H
 #define SPHC_CHECK_H
 
-#include "model.h"
+#include "model/model.h"
+
+/* Check the program; returns 0 and fills *m when there are no errors. */
+int check_program(const Program *p, Model *m);
 
 typedef struct {
     const Model *model;
@@ -58,8 +62,5 @@ int check_admissible(SrcLoc loc, const char *name, Quantity q, double v);
 
 /* The largest whole-number body setting (refine, nbsrange). */
 enum { SETTING_INT_MAX = 1000 };
-
-/* Material laws (law.c): check a law's statements with the body's arguments. */
-int law_check(const Model *m, const MaterialDef *law);
 
 #endif

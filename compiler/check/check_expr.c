@@ -4,7 +4,7 @@
 
 #include "check.h"
 #include "util/diag.h"
-#include "eval.h"
+#include "model/eval.h"
 #include "lang/builtins.h"
 
 static int in_scope(const ExprScope *s, const char *name)

@@ -4,7 +4,7 @@
 #ifndef SPHC_DRIVER_H
 #define SPHC_DRIVER_H
 
-#include "check/model.h"
+#include "model/model.h"
 #include "emit/emit.h"
 #include "front/ast.h"
 #include "lower/plan.h"

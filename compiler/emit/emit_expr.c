@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "emit_expr.h"
-#include "check/eval.h"
+#include "model/eval.h"
 #include "lang/builtins.h"
 
 static void name(FILE *out, const EmitScope *s, const char *n)

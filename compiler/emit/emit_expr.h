@@ -4,7 +4,7 @@
 
 #include <stdio.h>
 
-#include "check/model.h"
+#include "model/model.h"
 
 typedef struct {
     const Model *model;

@@ -6,7 +6,7 @@
 
 #include <stdio.h>
 
-#include "check/model.h"
+#include "model/model.h"
 #include "emit.h"
 #include "emit_expr.h"
 #include "lower/plan.h"

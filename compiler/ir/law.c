@@ -8,9 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check/check.h"
 #include "util/diag.h"
-#include "check/eval.h"
+#include "model/eval.h"
 #include "law.h"
 #include "lang/builtins.h"
 

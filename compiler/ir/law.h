@@ -2,7 +2,7 @@
 #ifndef SPHC_LAW_H
 #define SPHC_LAW_H
 
-#include "check/model.h"
+#include "model/model.h"
 #include "scalar.h"
 
 #define LAW_MAX_SLOTS 48   /* per-particle state values of one law (a tensor takes 9) */
@@ -35,6 +35,10 @@ typedef struct {
  * fracture).  Returns 0, or -1 after reporting errors. */
 int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *params, int dim,
               int tension, LawRoots *out);
+
+/* Check a law's statements symbolically (its parameters unknown, in 3D, with its tension
+ * block): the checker's test of every material law.  Returns 0, or -1 after reporting. */
+int law_check(const Model *m, const MaterialDef *law);
 
 /* The law's graph inputs, named as the parameters of the emitted material function:
  * F[k] (row-major), the phase field s of a degraded law, the state slots st[k]. */

@@ -4,7 +4,7 @@
 #ifndef SPHC_PLAN_H
 #define SPHC_PLAN_H
 
-#include "check/model.h"
+#include "model/model.h"
 #include "ir/law.h"
 
 /* The features of a body's code, one row each:

@@ -14,7 +14,7 @@
 #include <string.h>
 
 #include "util/diag.h"
-#include "check/eval.h"
+#include "model/eval.h"
 #include "xml_internal.h"
 #include "lang/builtins.h"
 

@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check/model.h"
+#include "model/model.h"
 #include "xml_internal.h"
 #include "lang/builtins.h"
 

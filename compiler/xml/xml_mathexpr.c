@@ -15,7 +15,7 @@
 #include <string.h>
 
 #include "util/diag.h"
-#include "check/model.h"
+#include "model/model.h"
 #include "xml_internal.h"
 #include "lang/builtins.h"
 

@@ -154,9 +154,6 @@ static inline int model_has_crush(const Model *m)
     return m->dt <= 0 && m->dt_mode != TIMESTEP_UNDEFORMED;
 }
 
-/* Check the program; returns 0 and fills *m when there are no errors. */
-int check_program(const Program *p, Model *m);
-
 /* Print the checked model (sphc --dump=model). */
 void model_dump(const Model *m, FILE *out);
 
