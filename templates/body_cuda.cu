@@ -130,9 +130,9 @@ static void @B@_momentum_pass(sph_body *b)
                 f[r] -= hpi * fv[r];
             pv -= hpi * vw;
 //@endif
-//@if HOURGLASS
+//@if PAIR_TERMS
             const int k = b->fb_k[p]; /* its table entry, also with SPH_CUDA_RECOMPUTE */
-            @B@_hourglass(b, i, j, k < 0 ? ~k : k, f);
+            @B@_pair_terms(b, i, j, k < 0 ? ~k : k, f);
 //@endif
             for (int r = 0; r < D; r++)
                 fi[r] += f[r];

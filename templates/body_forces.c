@@ -156,11 +156,11 @@ static void @B@_momentum_pass(sph_body *b)
                     f -= hpi * fv;
                     pv -= hpi * vw;
 //@endif
-//@if HOURGLASS
+//@if PAIR_TERMS
                     sph_real fh[D];
                     for (int r = 0; r < D; r++)
                         fh[r] = f[r];
-                    @B@_hourglass(b, i, j, k, fh);
+                    @B@_pair_terms(b, i, j, k, fh);
                     for (int r = 0; r < D; r++)
                         f[r] = fh[r];
 //@endif

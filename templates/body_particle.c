@@ -143,3 +143,15 @@ SPH_FN void @B@_hourglass(const sph_body *b, int i, int j, int k, sph_real *f)
         f[r] -= (sph_real)(hg * xij[r]);
 }
 //@endif
+//@if PAIR_TERMS
+
+/* The terms body @B@ adds to the force f on particle i of the pair (i, j), offset table
+ * entry k, in both targets' momentum passes (the same from j's side with the reversed
+ * pair).  A new pair term is a function above and a line here, under its switch. */
+SPH_FN void @B@_pair_terms(const sph_body *b, int i, int j, int k, sph_real *f)
+{
+//@if HOURGLASS
+    @B@_hourglass(b, i, j, k, f);
+//@endif
+}
+//@endif

@@ -29,7 +29,8 @@
     X(crush, "crush", CRUSH, model_has_crush(m)) /* time step bound on compression */          \
     X(measure, "measure", MEASURE, b->nmeasures > 0) /* measurement planes */                  \
     X(bc_fns, "bc_fns", BC_FNS, bcs_applied(b, BC_VELOCITY) + bcs_applied(b, BC_FORCE))        \
-    X(symplectic, NULL, SYMPLECTIC, m->integrator == INTEGRATOR_SYMPLECTIC) /* else Verlet */
+    X(symplectic, NULL, SYMPLECTIC, m->integrator == INTEGRATOR_SYMPLECTIC) /* else Verlet */ \
+    X(pair_terms, NULL, PAIR_TERMS, b->hourglass > 0) /* any term of B_pair_terms */
 
 /* The numbers of a body's code that the templates read, one row each:
  *
