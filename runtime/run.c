@@ -62,13 +62,109 @@ static void catch_stop_signals(void)
 
 /* ------------------------------------------------------------------ output */
 
-static int energy_columns(const sph_model *m)
+/* The columns of energies.csv after time, one row each below: a body's column, named
+ * <body>_<name>, stands in the body's block (BLOCK: strain and kinetic energy, body by body)
+ * or, after the blocks, with those of the other bodies it applies to (EACH); a SCENE column
+ * follows those, once.  compat.c reads the strain, kinetic and fracture columns by place:
+ * new columns go after them.  The kind says which of the two totals a column joins (the
+ * kinetic energy, or the rest); TOTAL is their sum. */
+typedef enum { BLOCK, EACH, SCENE } energy_layout;
+typedef enum { HELD, KINETIC, DISSIPATED, TOTAL } energy_kind;
+
+typedef struct {
+    const char *name;
+    energy_layout layout;
+    energy_kind kind;
+    int (*applies)(const sph_model *m, int i); /* body i; -1: the scene */
+    double (*value)(const sph_sim *s, int i);  /* NULL: the total */
+} energy_column;
+
+static int every(const sph_model *m, int i) { return (void)m, (void)i, 1; }
+static int with_fracture(const sph_model *m, int i) { return m->bodies[i].fracture != NULL; }
+static int with_dissipation(const sph_model *m, int i) { return m->bodies[i].dissipation > 0; }
+static int with_viscosity(const sph_model *m, int i) { return m->bodies[i].viscous; }
+static int with_contact(const sph_model *m, int i) { return (void)i, m->contact != NULL; }
+
+/* A body's strain (which 0) or kinetic (1) energy; the contacts' stored (0) or dissipated (1). */
+static double body_energy(const sph_sim *s, int i, int which)
 {
-    int n = 2 + 2 * m->nbodies;
+    double e[2];
+    sph_body_energies(&s->bodies[i], &e[0], &e[1]);
+    return e[which];
+}
+
+static double contact_energy(const sph_sim *s, int which)
+{
+    double e[2];
+    sph_contact_energies(s, &e[0], &e[1]);
+    return e[which];
+}
+
+static double strain(const sph_sim *s, int i) { return body_energy(s, i, 0); }
+static double kinetic(const sph_sim *s, int i) { return body_energy(s, i, 1); }
+static double fracture(const sph_sim *s, int i) { return sph_fracture_energy(&s->bodies[i]); }
+static double plastic(const sph_sim *s, int i) { return sph_dissipated_energy(&s->bodies[i]); }
+static double viscous(const sph_sim *s, int i) { return s->bodies[i].visc_dissipated; }
+static double contact(const sph_sim *s, int i) { return (void)i, contact_energy(s, 0); }
+static double contact_lost(const sph_sim *s, int i) { return (void)i, contact_energy(s, 1); }
+
+static const energy_column ENERGY_COLUMNS[] = {
+    {"strain", BLOCK, HELD, every, strain},
+    {"kinetic", BLOCK, KINETIC, every, kinetic},
+    {"fracture", EACH, HELD, with_fracture, fracture}, /* crack surface energy */
+    {"plastic", EACH, DISSIPATED, with_dissipation, plastic}, /* the material law's */
+    {"viscous", EACH, DISSIPATED, with_viscosity, viscous},   /* artificial viscosity's */
+    {"contact", SCENE, HELD, with_contact, contact},
+    /* what the contacts' damping and friction took */
+    {"contact_dissipated", SCENE, DISSIPATED, with_contact, contact_lost},
+    {"total", SCENE, TOTAL, every, NULL},
+};
+enum { ENERGY_ROWS = sizeof ENERGY_COLUMNS / sizeof *ENERGY_COLUMNS };
+
+/* A column of energies.csv: its row and its body (-1: the scene). */
+typedef struct {
+    const energy_column *col;
+    int body;
+} energy_slot;
+
+/* The columns of model m after time, in their order (malloc'd, *n of them). */
+static energy_slot *energy_slots(const sph_model *m, int *n)
+{
+    energy_slot *slot = malloc((size_t)ENERGY_ROWS * ((size_t)m->nbodies + 1) * sizeof *slot);
+    const energy_column *c, *end = ENERGY_COLUMNS + ENERGY_ROWS;
+    *n = 0;
     for (int i = 0; i < m->nbodies; i++)
-        n += (m->bodies[i].fracture != NULL) + (m->bodies[i].dissipation > 0) +
-             m->bodies[i].viscous;
-    return n + (m->contact ? 2 : 0);
+        for (c = ENERGY_COLUMNS; c < end; c++)
+            if (c->layout == BLOCK && c->applies(m, i))
+                slot[(*n)++] = (energy_slot){c, i};
+    for (c = ENERGY_COLUMNS; c < end; c++)
+        for (int i = 0; i < m->nbodies; i++)
+            if (c->layout == EACH && c->applies(m, i))
+                slot[(*n)++] = (energy_slot){c, i};
+    for (c = ENERGY_COLUMNS; c < end; c++)
+        if (c->layout == SCENE && c->applies(m, -1))
+            slot[(*n)++] = (energy_slot){c, -1};
+    return slot;
+}
+
+/* The two totals of a row's values v (kinetic energy in total[1], the rest in total[0]),
+ * added up in a fixed order: body by body the energy each holds, then what the bodies
+ * dissipated, then the scene's columns as one sum. */
+static void energy_totals(const energy_slot *slot, const double *v, int n, int nbodies,
+                          double total[2])
+{
+    double scene = 0;
+    total[0] = total[1] = 0;
+    for (int i = 0; i < nbodies; i++)
+        for (int k = 0; k < n; k++)
+            if (slot[k].body == i && slot[k].col->kind != DISSIPATED)
+                total[slot[k].col->kind == KINETIC] += v[k];
+    for (int k = 0; k < n; k++)
+        if (slot[k].body >= 0 && slot[k].col->kind == DISSIPATED)
+            total[0] += v[k];
+        else if (slot[k].body < 0 && slot[k].col->kind != TOTAL)
+            scene += v[k];
+    total[0] += scene;
 }
 
 static int open_outputs(run_state *r)
@@ -79,37 +175,21 @@ static int open_outputs(run_state *r)
     free(dir);
     if (bad)
         return -1;
-    /* time, strain and kinetic energy of each body, fracture energy of each body with
-     * fracture, plastic work of each body with plasticity, viscous dissipation of each body
-     * with artificial viscosity, contact (stored, dissipated), total */
-    int ncol = energy_columns(m);
-    char **cols = calloc((size_t)ncol, sizeof *cols);
-    cols[0] = joinf("time%s%s", "", "");
-    int c = 1;
-    for (int i = 0; i < m->nbodies; i++) {
-        cols[c++] = joinf("%s_strain%s", m->bodies[i].name, "");
-        cols[c++] = joinf("%s_kinetic%s", m->bodies[i].name, "");
-    }
-    for (int i = 0; i < m->nbodies; i++)
-        if (m->bodies[i].fracture)
-            cols[c++] = joinf("%s_fracture%s", m->bodies[i].name, "");
-    for (int i = 0; i < m->nbodies; i++)
-        if (m->bodies[i].dissipation)
-            cols[c++] = joinf("%s_plastic%s", m->bodies[i].name, "");
-    for (int i = 0; i < m->nbodies; i++)
-        if (m->bodies[i].viscous)
-            cols[c++] = joinf("%s_viscous%s", m->bodies[i].name, "");
-    if (m->contact) {
-        cols[c++] = joinf("contact%s%s", "", "");
-        cols[c++] = joinf("contact_dissipated%s%s", "", "");
-    }
-    cols[c] = joinf("total%s%s", "", "");
-    char *path = joinf("%s/energies.csv%s", r->opt.out_dir, "");
-    bad = sph_csv_open(&r->energies, path, (const char *const *)cols, ncol);
-    free(path);
+    int ncol;
+    energy_slot *slot = energy_slots(m, &ncol);
+    char **cols = calloc((size_t)ncol + 1, sizeof *cols);
+    cols[0] = strdup("time");
     for (int k = 0; k < ncol; k++)
+        cols[1 + k] = slot[k].body < 0 ? strdup(slot[k].col->name)
+                                       : joinf("%s_%s", m->bodies[slot[k].body].name,
+                                               slot[k].col->name);
+    char *path = joinf("%s/energies.csv%s", r->opt.out_dir, "");
+    bad = sph_csv_open(&r->energies, path, (const char *const *)cols, ncol + 1);
+    free(path);
+    for (int k = 0; k <= ncol; k++)
         free(cols[k]);
     free(cols);
+    free(slot);
     r->rec.measure_base = calloc((size_t)m->nbodies, sizeof(int));
     for (int i = 0; i < m->nbodies; i++) {
         r->rec.measure_base[i] = r->nmeasures;
@@ -137,33 +217,18 @@ static int open_outputs(run_state *r)
 static int record(run_state *r)
 {
     const sph_sim *s = &r->sim;
-    int ncol = energy_columns(r->m), c = 1 + 2 * s->nbodies;
-    double *row = calloc((size_t)ncol, sizeof(double)), total[2] = {0, 0};
+    int ncol;
+    energy_slot *slot = energy_slots(r->m, &ncol);
+    double *row = calloc((size_t)ncol + 1, sizeof(double)), total[2];
     row[0] = s->t;
-    for (int i = 0; i < s->nbodies; i++) {
-        sph_body_energies(&s->bodies[i], &row[1 + 2 * i], &row[2 + 2 * i]);
-        total[0] += row[1 + 2 * i], total[1] += row[2 + 2 * i];
-        if (s->bodies[i].desc->fracture) { /* stored energy: strain + crack surface */
-            row[c] = sph_fracture_energy(&s->bodies[i]);
-            total[0] += row[c++];
-        }
-    }
-    for (int i = 0; i < s->nbodies; i++)
-        if (s->bodies[i].desc->dissipation) { /* plastic work: where the rest went */
-            row[c] = sph_dissipated_energy(&s->bodies[i]);
-            total[0] += row[c++];
-        }
-    for (int i = 0; i < s->nbodies; i++)
-        if (s->bodies[i].desc->viscous) { /* what the artificial viscosity took */
-            row[c] = s->bodies[i].visc_dissipated;
-            total[0] += row[c++];
-        }
-    if (r->m->contact) { /* stored in the contacts, and what their damping and friction took */
-        sph_contact_energies(s, &row[c], &row[c + 1]);
-        total[0] += row[c] + row[c + 1];
-        c += 2;
-    }
-    row[ncol - 1] = total[0] + total[1];
+    for (int k = 0; k < ncol; k++)
+        if (slot[k].col->value)
+            row[1 + k] = slot[k].col->value(s, slot[k].body);
+    energy_totals(slot, row + 1, ncol, s->nbodies, total);
+    for (int k = 0; k < ncol; k++)
+        if (slot[k].col->kind == TOTAL)
+            row[1 + k] = total[0] + total[1];
+    free(slot);
     int bad = sph_csv_row(&r->energies, row);
     if (r->m->compat_outputs)
         bad |= sph_compat_energies(&r->compat, row);
