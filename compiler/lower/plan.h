@@ -15,21 +15,21 @@
  * plan has an int member for each; a template's //@if SWITCH keeps its lines where the
  * member is nonzero (//@else where it is zero), and --dump=plan prints name=member in this
  * order.  A new feature is one row here. */
-#define PLAN_FEATURES(X)                                                                      \
-    X(viscosity, "viscosity", VISCOSITY, b->beta1 > 0 || b->beta2 > 0) /* eq. 57-60 */         \
-    X(beta2, "beta2", BETA2, b->beta2 > 0) /* the quadratic term of eq. 58 */                  \
-    X(gravity, "gravity", GRAVITY, m->gravity[0] != 0 || m->gravity[1] != 0 || m->gravity[2] != 0) \
-    X(velocity_bcs, "velocity_bcs", VELOCITY_BCS, bcs_applied(b, BC_VELOCITY) > 0)              \
-    X(force_bcs, "force_bcs", FORCE_BCS, bcs_applied(b, BC_FORCE) > 0)                          \
-    X(hourglass, "hourglass", HOURGLASS, b->hourglass > 0) /* hourglass control penalty */      \
-    X(fracture, "fracture", FRACTURE, b->fracture.on) /* phase field, eq. 6-9, 61-63 */         \
-    X(restrict_phase, "restrict", RESTRICT, b->fracture.restrict_expr != NULL)                 \
-    X(state, "state", STATE, r->nslots > 0) /* its law has state (plasticity) */               \
-    X(contact, "contact", CONTACT, model_has_contact(m)) /* between the scene's bodies */      \
-    X(crush, "crush", CRUSH, model_has_crush(m)) /* time step bound on compression */          \
-    X(measure, "measure", MEASURE, b->nmeasures > 0) /* measurement planes */                  \
-    X(bc_fns, "bc_fns", BC_FNS, bcs_applied(b, BC_VELOCITY) + bcs_applied(b, BC_FORCE))        \
-    X(symplectic, NULL, SYMPLECTIC, m->integrator == INTEGRATOR_SYMPLECTIC) /* else Verlet */ \
+#define PLAN_FEATURES(X)                                                                           \
+    X(viscosity, "viscosity", VISCOSITY, b->beta1 > 0 || b->beta2 > 0) /* eq. 57-60 */             \
+    X(beta2, "beta2", BETA2, b->beta2 > 0) /* the quadratic term of eq. 58 */                      \
+    X(gravity, "gravity", GRAVITY, m->gravity[0] || m->gravity[1] || m->gravity[2])                \
+    X(velocity_bcs, "velocity_bcs", VELOCITY_BCS, bcs_applied(b, BC_VELOCITY) > 0)                 \
+    X(force_bcs, "force_bcs", FORCE_BCS, bcs_applied(b, BC_FORCE) > 0)                             \
+    X(hourglass, "hourglass", HOURGLASS, b->hourglass > 0) /* hourglass control penalty */         \
+    X(fracture, "fracture", FRACTURE, b->fracture.on) /* phase field, eq. 6-9, 61-63 */            \
+    X(restrict_phase, "restrict", RESTRICT, b->fracture.restrict_expr != NULL)                     \
+    X(state, "state", STATE, r->nslots > 0) /* its law has state (plasticity) */                   \
+    X(contact, "contact", CONTACT, model_has_contact(m)) /* between the scene's bodies */          \
+    X(crush, "crush", CRUSH, model_has_crush(m)) /* time step bound on compression */              \
+    X(measure, "measure", MEASURE, b->nmeasures > 0) /* measurement planes */                      \
+    X(bc_fns, "bc_fns", BC_FNS, bcs_applied(b, BC_VELOCITY) + bcs_applied(b, BC_FORCE))            \
+    X(symplectic, NULL, SYMPLECTIC, m->integrator == INTEGRATOR_SYMPLECTIC) /* else Verlet */      \
     X(pair_terms, NULL, PAIR_TERMS, b->hourglass > 0) /* any term of B_pair_terms */
 
 /* The numbers of a body's code that the templates read, one row each:
@@ -38,17 +38,17 @@
  *
  * computed by lower.c where `when` holds (from m, b and its features p); a template reads
  * the member's value as @KEY@ (a key not bound is an error where a template uses it). */
-#define PLAN_NUMBERS(X)                                                                       \
-    X(beta1, BETA1, b->beta1, 1) /* eq. 58 */                                                  \
-    X(beta2_value, BETA2, b->beta2, 1)                                                         \
-    X(c0, C0, b->c0, 1) /* eq. 59 */                                                           \
-    X(hg, HG, 0.5 * b->hourglass * b->E, 1) /* alpha E / 2 */                                  \
-    X(g0, G0, m->gravity[0], 1) /* gravity, compact components */                              \
-    X(g1, G1, m->dim == 2 ? m->gravity[2] : m->gravity[1], 1)                                  \
-    X(g2, G2, m->dim == 2 ? 0.0 : m->gravity[2], 1)                                            \
-    X(gc, GC, b->fracture.Gc, p->fracture)                                                     \
-    X(eps0, EPS0, b->fracture.eps0, p->fracture)                                               \
-    X(slimit, SLIMIT, b->fracture.limit, p->fracture) /* s_l of eq. 63 */                      \
+#define PLAN_NUMBERS(X)                                                                            \
+    X(beta1, BETA1, b->beta1, 1) /* eq. 58 */                                                      \
+    X(beta2_value, BETA2, b->beta2, 1)                                                             \
+    X(c0, C0, b->c0, 1) /* eq. 59 */                                                               \
+    X(hg, HG, 0.5 * b->hourglass * b->E, 1) /* alpha E / 2 */                                      \
+    X(g0, G0, m->gravity[0], 1) /* gravity, compact components */                                  \
+    X(g1, G1, m->dim == 2 ? m->gravity[2] : m->gravity[1], 1)                                      \
+    X(g2, G2, m->dim == 2 ? 0.0 : m->gravity[2], 1)                                                \
+    X(gc, GC, b->fracture.Gc, p->fracture)                                                         \
+    X(eps0, EPS0, b->fracture.eps0, p->fracture)                                                   \
+    X(slimit, SLIMIT, b->fracture.limit, p->fracture) /* s_l of eq. 63 */                          \
     X(pf_a, PF_A, b->c0 * b->c0 / (2 * b->fracture.eps0), p->fracture) /* c^2 / (2 eps0) */
 
 typedef struct {
