@@ -8,7 +8,7 @@
  *   cc     (driver/cc.c: cc or nvcc against the runtime)                           -> program
  *
  * --dump=ast|model|plan prints a stage's product and stops; --to-sph prints the syntax tree
- * as an .sph model (to convert an XML case); --check stops after the checker.
+ * as an .sph model (to convert an XML case); --check stops after lowering.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -75,14 +75,17 @@ int main(int argc, char **argv)
         print_sph(&o, &prog);
         return 0;
     }
-    if (o.check_only && !o.dump)
-        return 0;
 
-    Plan plan;
+    Plan plan; /* --check lowers too: a law that folds to a non-finite value with a body's
+                * parameters is an error of the model */
     if (lower_model(&m, &plan))
         return 1;
     if (o.dump) {
         plan_dump(&plan, stdout);
+        return 0;
+    }
+    if (o.check_only) {
+        plan_free(&plan);
         return 0;
     }
 

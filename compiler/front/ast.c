@@ -226,6 +226,7 @@ MatStmt ast_matstmt(MatStmtKind kind, SrcLoc loc, const char *name, Expr *value)
     m.loc = loc;
     m.name = ast_strdup(name);
     m.value = value;
+    m.depth = 1;
     return m;
 }
 

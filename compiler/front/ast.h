@@ -45,6 +45,9 @@ struct Expr {
 /* The deepest expression or shape the front ends accept: later stages walk the tree
  * recursively, and a chain such as 1 + 1 + ... + 1 parses into one level per operator. */
 #define AST_MAX_DEPTH 1000
+/* The deepest nesting of blocks (if, else, tension) in a material law: the law evaluator
+ * takes several kilobytes of stack per level. */
+#define AST_MAX_BLOCK_DEPTH 100
 
 /* "key value" pair: scene settings, body settings, named arguments of a call
  * such as box(from [..] to [..]) or svk(density 1000, shear 0.7e6).  A named argument may
@@ -95,6 +98,7 @@ struct MatStmt {
     Expr *value;       /* LET/STRESS/ENERGY/STATE/ASSIGN value, IF condition */
     MatStmtList body;  /* IF then-part, BLOCK contents */
     MatStmtList orelse;/* IF else-part */
+    int depth;         /* levels of blocks from here down: 1 for a statement without */
 };
 
 typedef struct {

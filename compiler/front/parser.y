@@ -100,6 +100,21 @@ static ShapeExpr *shape_depth_limited(ShapeExpr *s)
     return s;
 }
 
+/* A block statement: its depth from its parts, reported once where it passes the limit. */
+static MatStmt block_depth_limited(MatStmt s)
+{
+    const MatStmtList *parts[2] = {&s.body, &s.orelse};
+    s.depth = 1;
+    for (int p = 0; p < 2; p++)
+        for (int k = 0; k < parts[p]->n; k++)
+            if (parts[p]->items[k].depth >= s.depth)
+                s.depth = parts[p]->items[k].depth + 1;
+    if (s.depth == AST_MAX_BLOCK_DEPTH + 1)
+        diag_error(s.loc, "blocks of a material law nested too deeply (more than %d levels)",
+                   AST_MAX_BLOCK_DEPTH);
+    return s;
+}
+
 static Item new_item(ItemKind kind, SrcLoc loc)
 {
     Item it = { 0 };
@@ -413,9 +428,10 @@ matstmt
     | ENERGY IDENT '=' expr             { $$ = ast_matstmt(MS_ENERGY, LOC(@2), $2, $4); }
     | STATE IDENT '=' expr              { $$ = ast_matstmt(MS_STATE, LOC(@2), $2, $4); }
     | IF expr '{' matstmts '}' else_opt { $$ = ast_matstmt(MS_IF, LOC(@1), NULL, $2);
-                                          $$.body = $4; $$.orelse = $6; }
+                                          $$.body = $4; $$.orelse = $6;
+                                          $$ = block_depth_limited($$); }
     | IDENT '{' matstmts '}'            { $$ = ast_matstmt(MS_BLOCK, LOC(@1), $1, NULL);
-                                          $$.body = $3; }
+                                          $$.body = $3; $$ = block_depth_limited($$); }
     | IDENT '=' expr                    { $$ = ast_matstmt(MS_ASSIGN, LOC(@1), $1, $3); }
     | DISSIPATION IDENT                 { $$ = ast_matstmt(MS_DISSIPATION, LOC(@2), $2, NULL); }
     ;

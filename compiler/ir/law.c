@@ -683,6 +683,40 @@ static void degrade(SGraph *g, LawRoots *r)
                         sg_binary(g, SN_SUB, r->psi, r->psip));
 }
 
+/* A constant that is not finite in what the law computes (a division by zero, the inverse
+ * of a singular constant tensor) is the model's error, at the line that computes it, not
+ * the C compiler's on the generated code.  Returns 0, or -1 after reporting. */
+static int finite_results(const SGraph *g, const MaterialDef *law, const double *params,
+                          const LawRoots *r)
+{
+    int roots[3 * 9 + 3 + LAW_MAX_SLOTS], n = 0;
+    for (int k = 0; k < 9; k++)
+        roots[n++] = r->S[k];
+    roots[n++] = r->psi;
+    for (int k = 0; k < r->nslots; k++)
+        roots[n++] = r->next[k];
+    for (int k = 0; r->has_tension && k < 9; k++) {
+        roots[n++] = r->Sp[k];
+        roots[n++] = r->Sd[k];
+    }
+    if (r->has_tension) {
+        roots[n++] = r->psip;
+        roots[n++] = r->psid;
+    }
+    const int id = sg_first_nonfinite(g, roots, n);
+    if (id < 0)
+        return 0;
+    const SNode *s = &g->nodes[id];
+    SrcLoc loc = {s->file, s->line, 0};
+    char values[512] = "";
+    for (int k = 0, len = 0; params && k < law->nparams && len < (int)sizeof values - 64; k++)
+        len += snprintf(values + len, sizeof values - (size_t)len, "%s%s = %g", k ? ", " : " with ",
+                        law->params[k], params[k]);
+    diag_error(loc, "material '%s' computes %s here%s (a division by zero, or the inverse of a "
+                    "singular tensor)", law->name, isnan(s->v) ? "NaN" : "an infinite value", values);
+    return -1;
+}
+
 int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *params, int dim,
               int tension, LawRoots *out)
 {
@@ -717,6 +751,8 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *p
         L.g->line = law->loc.line; /* the degradation is the law's as a whole */
         degrade(L.g, &L.out);
     }
+    if (!bad)
+        bad = finite_results(L.g, law, params, &L.out) != 0;
     if (!bad)
         *out = L.out;
     return bad ? -1 : 0;

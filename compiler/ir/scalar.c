@@ -344,20 +344,40 @@ static void emit_node(const SGraph *g, int id, FILE *out)
     fputs(")", out);
 }
 
-static void mark(const SGraph *g, int id, char *live)
+/* The nodes the roots need, in live[]: a node's operands were made before it (smaller ids),
+ * so one sweep from the last node down marks them all, without recursion however deep the
+ * graph. */
+static void mark_live(const SGraph *g, const int *roots, int nroots, char *live)
 {
-    if (id < 0 || live[id])
-        return;
-    live[id] = 1;
-    const SNode *s = &g->nodes[id];
-    if (s->op == SN_EXT) {
-        for (int k = 0; k < s->nargs; k++)
-            mark(g, s->args[k], live);
-        return;
+    for (int k = 0; k < nroots; k++)
+        if (roots[k] >= 0)
+            live[roots[k]] = 1;
+    for (int id = g->n - 1; id >= 0; id--) {
+        const SNode *s = &g->nodes[id];
+        if (!live[id])
+            continue;
+        if (s->op == SN_EXT) {
+            for (int k = 0; k < s->nargs; k++)
+                live[s->args[k]] = 1;
+            continue;
+        }
+        const int ops[3] = {s->a, s->b, s->c};
+        for (int k = 0; k < 3; k++)
+            if (ops[k] >= 0)
+                live[ops[k]] = 1;
     }
-    mark(g, s->a, live);
-    mark(g, s->b, live);
-    mark(g, s->c, live);
+}
+
+int sg_first_nonfinite(const SGraph *g, const int *roots, int nroots)
+{
+    char *live = calloc((size_t)g->n + 1, 1);
+    mark_live(g, roots, nroots, live);
+    int found = -1;
+    for (int id = 0; id < g->n && found < 0; id++)
+        if (live[id] && g->nodes[id].op == SN_CONST && !isfinite(g->nodes[id].v))
+            found = id;
+    free(live);
+    return found;
 }
 
 /* double tN[nout]; fn(a0, a1, a2, tN);  or, with more than four arguments (a tensor),
@@ -388,8 +408,7 @@ static void emit_ext(const SGraph *g, int id, FILE *out, const char *indent)
 void sg_emit(const SGraph *g, const int *roots, int nroots, FILE *out, const char *indent)
 {
     char *live = calloc((size_t)g->n + 1, 1);
-    for (int k = 0; k < nroots; k++)
-        mark(g, roots[k], live);
+    mark_live(g, roots, nroots, live);
     int line = -1;
     const char *file = NULL;
     for (int id = 0; id < g->n; id++) {

@@ -62,6 +62,10 @@ int sg_part(SGraph *g, int ext, int k);
 
 int sg_is_const(const SGraph *g, int id, double *v);
 
+/* The first constant the roots need that is not finite (a division by zero folded, ...),
+ * or -1. */
+int sg_first_nonfinite(const SGraph *g, const int *roots, int nroots);
+
 /* Emit the nodes reachable from roots as `const double tN = ...;` lines, with a comment
  * naming the model line each group came from.  name_of(root k) is printed by the caller;
  * use sg_ref to print an operand (constant, input, or temporary). */
