@@ -37,7 +37,7 @@ static int check_let(Model *m, const Item *it)
     double v;
     if (check_const_expr(m, it->value, "the value of a 'let'", &v))
         return -1;
-    m->consts[m->nconsts++] = (ConstDef){it->name, v, it->loc};
+    model_add_const(m, (ConstDef){it->name, v, it->loc});
     return 0;
 }
 
@@ -97,7 +97,7 @@ static int check_fn(Model *m, const Item *it)
     ExprScope s = {m, it->params, it->nparams, 0, 0, "the body of a function"};
     /* Register first so that the body can be checked; recursion is refused below (a
      * function sees only those defined before it, so only a call of itself can recur). */
-    m->fns[m->nfns++] = (FnDef){it->name, it->params, it->nparams, it->value, it->loc, 0};
+    model_add_fn(m, (FnDef){it->name, it->params, it->nparams, it->value, it->loc, 0});
     if (check_scalar_expr(&s, it->value, 0)) {
         m->nfns--;
         return -1;
@@ -437,17 +437,19 @@ static int check_mesh_count(const Model *m, SrcLoc at)
 static int check_bodies(Model *m, const Program *p)
 {
     int bad = 0;
+    NameIndex names = {0};
     for (int i = 0; i < p->n; i++) {
         if (p->items[i].kind != IT_BODY)
             continue;
         const BodyDecl *d = &p->items[i].body;
-        for (int b = 0; b < m->nbodies; b++)
-            if (!strcmp(m->bodies[b].name, d->name)) {
-                diag_error(d->loc, "body '%s' is defined twice", d->name);
-                bad = 1;
-            }
+        if (name_index_get(&names, d->name) >= 0) {
+            diag_error(d->loc, "body '%s' is defined twice", d->name);
+            bad = 1;
+        }
+        name_index_put(&names, d->name, m->nbodies);
         bad |= check_body(m, d, &m->bodies[m->nbodies++]) != 0;
     }
+    name_index_free(&names);
     SrcLoc top = {p->file, 1, 1};
     if (!m->nbodies && !bad) {
         diag_error(top, "the model has no body");

@@ -37,6 +37,9 @@
 typedef void *yyscan_t;
 #endif
 
+/* The longest model file, identifier or number, and string (a file name) the scanner takes. */
+enum { LEX_MAX_FILE = 256 << 20, LEX_MAX_NAME = 1024, LEX_MAX_STRING = 4096 };
+
 /* Scanner state (yyextra of the flex scanner). */
 typedef struct LexState {
     const char *file;        /* SrcLoc.file of every token */
@@ -784,9 +787,11 @@ void yyerror(YYLTYPE *loc, yyscan_t scanner, ParseState *ps, const char *msg)
 
 /* ---------------------------------------------------------------- entry point */
 
-int parse_file(const char *path, Program *prog)
+/* The whole file in memory (*len bytes): the scanner then never refills its buffer, which
+ * made a token of millions of characters cost time quadratic in its length.  NULL after
+ * reporting. */
+static char *read_model(const char *path, size_t *len)
 {
-    int before = diag_error_count();
     FILE *f = fopen(path, "r");
     struct stat st;
     if (f && fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
@@ -796,8 +801,34 @@ int parse_file(const char *path, Program *prog)
     }
     if (!f) {
         diag_fatal_noloc("cannot open '%s': %s", path, strerror(errno));
-        return 1;
+        return NULL;
     }
+    size_t cap = 1 << 16, n = 0, got;
+    char *buf = malloc(cap);
+    while ((got = fread(buf + n, 1, cap - n, f)) > 0) {
+        n += got;
+        if (n == cap && cap >= LEX_MAX_FILE) {
+            diag_fatal_noloc("'%s' is larger than %d MiB, the most a model file may be", path,
+                             LEX_MAX_FILE >> 20);
+            free(buf);
+            fclose(f);
+            return NULL;
+        }
+        if (n == cap)
+            buf = realloc(buf, cap *= 2);
+    }
+    fclose(f);
+    *len = n;
+    return buf;
+}
+
+int parse_file(const char *path, Program *prog)
+{
+    int before = diag_error_count();
+    size_t len;
+    char *text = read_model(path, &len);
+    if (!text)
+        return 1;
 
     LexState lex = { 0 };
     lex.file = ast_strdup(path); /* lives as long as the tree */
@@ -813,14 +844,14 @@ int parse_file(const char *path, Program *prog)
 
     yyscan_t scanner;
     if (yylex_init_extra(&lex, &scanner) != 0) {
-        fclose(f);
+        free(text);
         diag_fatal_noloc("out of memory");
         return 1;
     }
-    yyset_in(f, scanner);
+    yy_scan_bytes(text, (int)len, scanner);
+    free(text);
     int rc = yyparse(scanner, &ps);
     yylex_destroy(scanner);
-    fclose(f);
     free(lex.text);
 
     int errors = diag_error_count() - before;

@@ -10,18 +10,26 @@
 
 const ConstDef *model_find_const(const Model *m, const char *name)
 {
-    for (int i = 0; i < m->nconsts; i++)
-        if (strcmp(m->consts[i].name, name) == 0)
-            return &m->consts[i];
-    return NULL;
+    const int k = name_index_get(&m->const_index, name);
+    return k >= 0 && k < m->nconsts && !strcmp(m->consts[k].name, name) ? &m->consts[k] : NULL;
 }
 
 const FnDef *model_find_fn(const Model *m, const char *name)
 {
-    for (int i = 0; i < m->nfns; i++)
-        if (strcmp(m->fns[i].name, name) == 0)
-            return &m->fns[i];
-    return NULL;
+    const int k = name_index_get(&m->fn_index, name);
+    return k >= 0 && k < m->nfns && !strcmp(m->fns[k].name, name) ? &m->fns[k] : NULL;
+}
+
+void model_add_const(Model *m, ConstDef c)
+{
+    name_index_put(&m->const_index, c.name, m->nconsts);
+    m->consts[m->nconsts++] = c;
+}
+
+void model_add_fn(Model *m, FnDef f)
+{
+    name_index_put(&m->fn_index, f.name, m->nfns);
+    m->fns[m->nfns++] = f;
 }
 
 static int eval_name(const Model *m, const Expr *e, const EvalEnv *env, double *out)

@@ -20,8 +20,11 @@ typedef struct EvalEnv {
  * EVAL_NOT_CONSTANT (it needs a variable that env does not provide) or EVAL_ERROR. */
 int eval_expr(const Model *m, const Expr *e, const EvalEnv *env, double *out);
 
-/* The `let` constant or `fn` of that name, or NULL. */
+/* The `let` constant or `fn` of that name, or NULL (hashed: model_add_* keep the index). */
 const ConstDef *model_find_const(const Model *m, const char *name);
 const FnDef *model_find_fn(const Model *m, const char *name);
+/* Append a constant or a function to the model (its array has room) and index its name. */
+void model_add_const(Model *m, ConstDef c);
+void model_add_fn(Model *m, FnDef f);
 
 #endif

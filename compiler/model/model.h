@@ -6,6 +6,7 @@
 #define SPHC_MODEL_H
 
 #include "front/ast.h"
+#include "util/name_index.h"
 
 /* in the order of sph_shape_kind (runtime/sphrt.h) */
 typedef enum { SHAPE_BOX, SHAPE_CYLINDER, SHAPE_SPHERE, SHAPE_SURFACE, SHAPE_PRISM,
@@ -136,6 +137,7 @@ typedef struct {
     int nconsts;
     FnDef *fns;
     int nfns;
+    NameIndex const_index, fn_index; /* name -> index in consts, fns (model_add_*) */
     const MaterialDef **laws;
     int nlaws;
     BodyModel *bodies;

@@ -30,6 +30,10 @@ static char *read_source_line(const char *path, int line)
     return s ? strndup(s, len) : NULL;
 }
 
+/* A line longer than this many bytes is shown as the part around the column, between
+ * "...": a generated model may have a line of megabytes. */
+enum { SHOW_MAX = 400 };
+
 static void show_source(SrcLoc loc)
 {
     if (!loc.file || loc.line <= 0)
@@ -41,14 +45,19 @@ static void show_source(SrcLoc loc)
     int width = snprintf(num, sizeof num, "%d", loc.line);
     if (width < 4)
         width = 4;
-    fprintf(stderr, " %*d | %s\n", width, loc.line, text);
+    size_t len = strlen(text), col = loc.col > 0 ? (size_t)loc.col - 1 : 0;
+    if (col > len)
+        col = len;
+    size_t from = 0, to = len;
+    if (len > SHOW_MAX) {
+        from = col > SHOW_MAX / 2 ? col - SHOW_MAX / 2 : 0;
+        to = from + SHOW_MAX < len ? from + SHOW_MAX : len;
+    }
+    fprintf(stderr, " %*d | %s%.*s%s\n", width, loc.line, from ? "..." : "", (int)(to - from),
+            text + from, to < len ? "..." : "");
     if (loc.col > 0) {
-        size_t len = strlen(text);
-        size_t col = (size_t)loc.col - 1;
-        if (col > len)
-            col = len;
-        fprintf(stderr, " %*s | ", width, "");
-        for (size_t i = 0; i < col; i++)
+        fprintf(stderr, " %*s | %s", width, "", from ? "   " : "");
+        for (size_t i = from; i < col; i++)
             fputc(text[i] == '\t' ? '\t' : ' ', stderr);
         fputs("^\n", stderr);
     }
