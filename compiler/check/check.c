@@ -218,6 +218,27 @@ static int scene_setting(Model *m, const Setting *s)
     return -1;
 }
 
+int setting_once(SeenSettings *seen, const Setting *s, const char *where)
+{
+    const int k = name_index_get(&seen->keys, s->key);
+    if (k >= 0) {
+        diag_error(s->loc, "'%s' is given twice in %s", s->key, where);
+        diag_note(seen->first[k]->loc, "first given here");
+        return -1;
+    }
+    seen->first = realloc(seen->first, (size_t)(seen->n + 1) * sizeof *seen->first);
+    seen->first[seen->n] = s;
+    name_index_put(&seen->keys, s->key, seen->n++);
+    return 0;
+}
+
+void seen_settings_free(SeenSettings *seen)
+{
+    name_index_free(&seen->keys);
+    free(seen->first);
+    memset(seen, 0, sizeof *seen);
+}
+
 /* Where the scene sets KEY (its value), or NULL when it keeps the default. */
 static const SrcLoc *setting_loc(const Item *scene, const char *key)
 {
@@ -228,8 +249,11 @@ static const SrcLoc *setting_loc(const Item *scene, const char *key)
 static int check_scene(Model *m, const Item *scene)
 {
     int bad = 0;
+    SeenSettings seen = {0};
     for (int i = 0; i < scene->scene.n; i++)
-        bad |= scene_setting(m, &scene->scene.items[i]) != 0;
+        bad |= setting_once(&seen, &scene->scene.items[i], "the scene") ||
+               scene_setting(m, &scene->scene.items[i]) != 0;
+    seen_settings_free(&seen);
     if (bad)
         return -1;
     const char *missing = !m->dim ? "dimension" : !(m->dp > 0) ? "dp" : !(m->t_end > 0) ? "end" : NULL;

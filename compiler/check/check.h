@@ -9,6 +9,17 @@
 /* Check the program; returns 0 and fills *m when there are no errors. */
 int check_program(const Program *p, Model *m);
 
+/* The settings of a scene or a body seen so far, to refuse one given twice. */
+typedef struct {
+    NameIndex keys;           /* key -> its setting in first[] */
+    const Setting **first;
+    int n;
+} SeenSettings;
+/* 0 the first time s's key is seen; -1 after reporting it as given twice (with a note at
+ * the first).  `where` names the scene or the body for the message. */
+int setting_once(SeenSettings *seen, const Setting *s, const char *where);
+void seen_settings_free(SeenSettings *seen);
+
 typedef struct {
     const Model *model;
     char **params;      /* function parameters in scope */
@@ -25,6 +36,7 @@ int check_const_expr(const Model *m, const Expr *e, const char *what, double *ou
 int check_vec3(const Model *m, const Expr *e, const char *what, double out[3]);
 
 /* Bodies (check_body.c). */
+int quad_spans(const double p[4][3], SrcLoc loc, const char *what);
 int check_body(Model *m, const BodyDecl *d, BodyModel *b);
 int check_region(const Model *m, const ShapeExpr *s, Region *r);
 

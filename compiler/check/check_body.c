@@ -654,6 +654,38 @@ static int check_bc(const Model *m, const BcDecl *d, BcModel *bc)
     return bad ? -1 : 0;
 }
 
+/* The four corners of a quad (a measurement plane, a notch) must be four points spanning an
+ * area: two equal or three in a line measure nothing (select.c would find no particle, or
+ * divide by a zero normal).  0, or -1 after reporting. */
+int quad_spans(const double p[4][3], SrcLoc loc, const char *what)
+{
+    double size = 0, area = 0;
+    for (int a = 0; a < 4; a++)
+        for (int c = 0; c < 3; c++)
+            size = fmax(size, fabs(p[a][c] - p[0][c]));
+    for (int a = 0; a < 4; a++)
+        for (int b = a + 1; b < 4; b++)
+            if (p[a][0] == p[b][0] && p[a][1] == p[b][1] && p[a][2] == p[b][2]) {
+                diag_error(loc, "the %s has corners %d and %d at the same point", what, a + 1, b + 1);
+                return -1;
+            }
+    for (int t = 0; t < 2; t++) { /* the triangles (0, 1, 2) and (0, 2, 3) */
+        double u[3], v[3];
+        for (int c = 0; c < 3; c++) {
+            u[c] = p[t + 1][c] - p[0][c];
+            v[c] = p[t + 2][c] - p[0][c];
+        }
+        const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                             u[0] * v[1] - u[1] * v[0]};
+        area += 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    }
+    if (!(area > 1e-9 * size * size)) {
+        diag_error(loc, "the %s's corners lie on a line: they span no area", what);
+        return -1;
+    }
+    return 0;
+}
+
 static int check_measure(const Model *m, const MeasureDecl *d, MeasureModel *ms)
 {
     ms->name = d->name;
@@ -661,7 +693,7 @@ static int check_measure(const Model *m, const MeasureDecl *d, MeasureModel *ms)
     int bad = 0;
     for (int k = 0; k < 4; k++)
         bad |= check_vec3(m, d->points[k], "a plane corner", ms->p[k]);
-    return bad ? -1 : 0;
+    return bad || quad_spans(ms->p, d->loc, "measurement plane") ? -1 : 0;
 }
 
 /* ------------------------------------------------------------------ the body */
@@ -712,9 +744,18 @@ int check_body(Model *m, const BodyDecl *d, BodyModel *b)
     b->bcs = calloc((size_t)d->n + 1, sizeof *b->bcs);
     b->measures = calloc((size_t)d->n + 1, sizeof *b->measures);
     int nshape = 0, nmat = 0, bad = 0;
-    /* The material first: other items do not depend on it, but its constants do on nothing. */
-    for (int i = 0; i < d->n; i++)
-        bad |= check_item(m, &d->items[i], b, &nshape, &nmat) != 0;
+    SeenSettings seen = {0};
+    char where[300];
+    snprintf(where, sizeof where, "body '%s'", d->name);
+    for (int i = 0; i < d->n; i++) {
+        const BodyItem *it = &d->items[i];
+        if (it->kind == BI_SETTING && setting_once(&seen, &it->setting, where)) {
+            bad = 1;
+            continue;
+        }
+        bad |= check_item(m, it, b, &nshape, &nmat) != 0;
+    }
+    seen_settings_free(&seen);
     if (!nshape) {
         diag_error(d->loc, "body '%s' has no shape", d->name);
         bad = 1;

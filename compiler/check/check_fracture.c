@@ -88,7 +88,7 @@ static int check_notch(const Model *m, const BodyItem *it, FractureModel *f)
     int bad = 0;
     for (int k = 0; k < 4; k++)
         bad |= check_vec3(m, it->measure.points[k], "a notch corner", q[k]);
-    if (bad)
+    if (bad || quad_spans((const double(*)[3])q, it->loc, "notch"))
         return -1;
     f->notches = realloc(f->notches, (size_t)(f->nnotches + 1) * sizeof *f->notches);
     f->notch_locs = realloc(f->notch_locs, (size_t)(f->nnotches + 1) * sizeof *f->notch_locs);
