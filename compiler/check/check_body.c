@@ -734,6 +734,58 @@ static int check_item(Model *m, const BodyItem *it, BodyModel *b, int *nshape, i
     return -1;
 }
 
+/* The box around primitive p (a cylinder's and a surface's conservatively). */
+static void prim_box(const ShapePrim *p, double lo[3], double hi[3])
+{
+    for (int k = 0; k < 3; k++) {
+        const double r = p->kind == SHAPE_CYLINDER || p->kind == SHAPE_SPHERE ? p->r : 0;
+        const double b = p->kind == SHAPE_SPHERE ? p->a[k] : p->b[k];
+        lo[k] = fmin(p->a[k], b) - r;
+        hi[k] = fmax(p->a[k], b) + r;
+    }
+}
+
+/* A body must be wider than its particle spacing along each of its axes (the others would
+ * be one particle or none, without the neighbours the kernel correction needs), and a
+ * shape subtracted must not take all of it: both would only be found, or found with the
+ * wrong reason, when the program fills the body.  0, or -1 after reporting at loc. */
+static int region_fits(const Model *m, const BodyModel *b, SrcLoc loc)
+{
+    const double dx = m->dp / b->refine;
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int k = 0; k < b->region.n; k++) {
+        double plo[3], phi[3];
+        if (b->region.prims[k].subtract)
+            continue;
+        prim_box(&b->region.prims[k], plo, phi);
+        for (int c = 0; c < 3; c++)
+            lo[c] = fmin(lo[c], plo[c]), hi[c] = fmax(hi[c], phi[c]);
+    }
+    for (int c = 0; c < 3; c++) {
+        if (m->dim == 2 && c == 1) /* the x-z plane */
+            continue;
+        if (hi[c] - lo[c] < dx) {
+            diag_error(loc, "body '%s' is %g m across along %c, less than its particle spacing "
+                            "%g: it would be one particle thick at most (make dp smaller or "
+                            "refine larger)", b->name, hi[c] - lo[c], "xyz"[c], dx);
+            return -1;
+        }
+    }
+    for (int k = 0; k < b->region.n; k++) {
+        const ShapePrim *p = &b->region.prims[k];
+        int covers = p->subtract && p->kind == SHAPE_BOX;
+        for (int c = 0; covers && c < 3; c++)
+            covers = (m->dim == 2 && c == 1) ||
+                     (fmin(p->a[c], p->b[c]) <= lo[c] && fmax(p->a[c], p->b[c]) >= hi[c]);
+        if (covers) {
+            diag_error(loc, "body '%s' is empty: the box subtracted as its shape's part %d "
+                            "covers all of the rest", b->name, k + 1);
+            return -1;
+        }
+    }
+    return 0;
+}
+
 int check_body(Model *m, const BodyDecl *d, BodyModel *b)
 {
     memset(b, 0, sizeof *b);
@@ -766,6 +818,9 @@ int check_body(Model *m, const BodyDecl *d, BodyModel *b)
     }
     if (!bad && b->c0_set > 0) /* after the material, which sets eq. 59's */
         b->c0 = b->c0_set;
+    for (int i = 0; !bad && i < d->n; i++)
+        if (d->items[i].kind == BI_SHAPE)
+            bad |= region_fits(m, b, d->items[i].loc) != 0;
     if (!bad)
         bad |= check_fracture_body(b, d) != 0 || plane_cuts(b) != 0;
     return bad ? -1 : 0;
