@@ -10,6 +10,7 @@
  * --dump=ast|model|plan prints a stage's product and stops; --to-sph prints the syntax tree
  * as an .sph model (to convert an XML case); --check stops after lowering.
  */
+#include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,7 +21,9 @@
 #include "lower/plan.h"
 #include "util/diag.h"
 
-/* The file's stem: "cases/beam2d.sph" -> "beam2d". */
+/* The file's stem, "cases/my-beam.sph" -> "my-beam": the program's name.  Characters other
+ * than letters, digits and . _ + - (which the generated code would have to quote) become
+ * '_', with a note saying so. */
 static char *stem(const char *path)
 {
     const char *base = strrchr(path, '/');
@@ -29,9 +32,15 @@ static char *stem(const char *path)
     char *dot = strrchr(s, '.');
     if (dot && dot != s)
         *dot = 0;
+    int changed = 0;
     for (char *c = s; *c; c++)
-        if (!((*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9')))
+        if (!isalnum((unsigned char)*c) && !strchr("._+-", *c)) {
             *c = '_';
+            changed = 1;
+        }
+    if (changed)
+        fprintf(stderr, "sphc: note: the program is named '%s' (characters other than letters, "
+                        "digits and . _ + - became '_')\n", s);
     return s;
 }
 

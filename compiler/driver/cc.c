@@ -131,8 +131,10 @@ int build_program(const Plan *plan, const Options *o, const Paths *paths)
     snprintf(inc, sizeof inc, "-I%s", paths->include);
     if (write_source(plan, o->target, paths, src))
         return -1;
-    if (o->emit_only)
+    if (o->emit_only) {
+        printf("sphc: wrote %s\n", src);
         return 0;
+    }
     const char *exe = o->output ? o->output : m->name;
     int rc = COMPILERS[o->target].compile(m, o, src, lib, inc, exe);
     if (!o->emit_dir) {
@@ -144,5 +146,8 @@ int build_program(const Plan *plan, const Options *o, const Paths *paths)
                          "inspect it", COMPILERS[o->target].name, rc);
         return -1;
     }
+    printf("sphc: built %s%s (%s)%s%s\n", strchr(exe, '/') ? "" : "./", exe,
+           target_name(o->target), o->emit_dir ? ", its source in " : "",
+           o->emit_dir ? src : "");
     return 0;
 }

@@ -14,6 +14,8 @@ typedef enum { TARGET_CPU, TARGET_CUDA } Target;
 int target_named(const char *name, Target *t);
 /* The generated file's suffix: "c" or "cu". */
 const char *target_suffix(Target t);
+/* Its name, as --target takes it. */
+const char *target_name(Target t);
 
 /* Write the whole generated program for target t; templates_dir holds the templates.  Returns
  * 0, or -1 after reporting. */

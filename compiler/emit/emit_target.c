@@ -166,3 +166,8 @@ const char *target_suffix(Target t)
 {
     return TARGETS[t]->suffix;
 }
+
+const char *target_name(Target t)
+{
+    return TARGETS[t]->name;
+}
