@@ -303,18 +303,16 @@ static Val user_fn(Law *L, const Expr *e, const FnDef *fn)
 {
     if (check_arity(e, fn->nparams))
         return BAD;
-    int mark = L->nenv;
-    Val args[16];
-    if (fn->nparams > 16)
-        return BAD;
-    for (int i = 0; i < fn->nparams; i++) {
+    int mark = L->nenv, bad = 0;
+    Val *args = malloc((size_t)(fn->nparams + 1) * sizeof *args);
+    for (int i = 0; i < fn->nparams && !bad; i++) {
         args[i] = need_scalar(e->args[i], eval(L, e->args[i]), "a function argument");
-        if (!ok(args[i]))
-            return BAD;
+        bad = !ok(args[i]);
     }
-    for (int i = 0; i < fn->nparams; i++)
+    for (int i = 0; i < fn->nparams && !bad; i++)
         bind(L, fn->params[i], args[i]);
-    Val r = eval(L, fn->body);
+    free(args);
+    Val r = bad ? BAD : eval(L, fn->body);
     L->nenv = mark;
     return r;
 }

@@ -2,6 +2,7 @@
  *
  * The checker uses it to fold constants (`let`, settings, shape coordinates); tests use it
  * to compare the compiled C of an expression against the model's meaning. */
+#include <stdlib.h>
 #include <string.h>
 
 #include "eval.h"
@@ -79,21 +80,21 @@ static int eval_call(const Model *m, const Expr *e, const EvalEnv *env, double *
             return r == EVAL_SKIP ? EVAL_ERROR : r;
         return eval_expr(m, e->args[c != 0.0 ? 1 : 2], env, out);
     }
-    double a[8];
-    if (e->nargs > 8)
-        return EVAL_ERROR;
-    for (int i = 0; i < e->nargs; i++) {
-        int r = eval_expr(m, e->args[i], env, &a[i]);
-        if (r != EVAL_OK)
-            return r == EVAL_SKIP ? EVAL_ERROR : r;
-    }
+    double few[8], *a = e->nargs > 8 ? malloc((size_t)e->nargs * sizeof *a) : few;
+    int r = EVAL_OK;
+    for (int i = 0; i < e->nargs && r == EVAL_OK; i++)
+        if ((r = eval_expr(m, e->args[i], env, &a[i])) == EVAL_SKIP)
+            r = EVAL_ERROR;
     const FnDef *fn = model_find_fn(m, e->name);
-    if (fn)
-        return eval_user_fn(m, fn, a, env, out);
-    if (f < 0 || BUILTIN_FUNCTION[f].arity != e->nargs)
-        return EVAL_ERROR;
-    *out = builtin_value(f, a);
-    return EVAL_OK;
+    if (r == EVAL_OK && fn)
+        r = eval_user_fn(m, fn, a, env, out);
+    else if (r == EVAL_OK && (f < 0 || BUILTIN_FUNCTION[f].arity != e->nargs))
+        r = EVAL_ERROR;
+    else if (r == EVAL_OK)
+        *out = builtin_value(f, a);
+    if (a != few)
+        free(a);
+    return r;
 }
 
 /* The operators of the language in the folding arithmetic. */
