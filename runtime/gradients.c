@@ -59,18 +59,20 @@ static void particle_pairs(const double *X, int i, int dim, const int *start, co
     }
 }
 
-/* L = M^{-T}, or the identity where M is (nearly) singular. */
-static void correction(const double *m, int dim, double *L)
+/* L = M^{-T}, or the identity where M is (nearly) singular: returns 1 there. */
+static int correction(const double *m, int dim, double *L)
 {
     double c[9];
     double det = cofactor(m, dim, c);
     int singular = !(fabs(det) >= 1e-6);
     for (int k = 0; k < dim * dim; k++)
         L[k] = singular ? (k % (dim + 1) == 0 ? 1.0 : 0.0) : c[k] / det;
+    return singular;
 }
 
-void sph_gradients(const double *X, int n, int dim, const int *start, const int *nb,
-                   sph_kernel_kind kernel, double h, double vol, double **w, double **L)
+int sph_gradients(const double *X, int n, int dim, const int *start, const int *nb,
+                  sph_kernel_kind kernel, double h, double vol, double **w, double **L,
+                  int *first_singular)
 {
     size_t npairs = n > 0 ? (size_t)start[n] : 0;
     double *wp = w ? malloc(npairs * dim * sizeof *wp + 1) : NULL;
@@ -79,12 +81,19 @@ void sph_gradients(const double *X, int n, int dim, const int *start, const int 
         sph_error("out of memory for kernel gradients (%zu pairs)", npairs);
         exit(SPH_EXIT_SETUP);
     }
-#pragma omp parallel for schedule(dynamic, 256)
+    int nsingular = 0, first = n;
+#pragma omp parallel for schedule(dynamic, 256) reduction(+ : nsingular) reduction(min : first)
     for (int i = 0; i < n; i++) {
         double m[9];
         particle_pairs(X, i, dim, start, nb, kernel, h, vol, wp, m);
-        correction(m, dim, *L + (size_t)i * dim * dim);
+        if (correction(m, dim, *L + (size_t)i * dim * dim)) {
+            nsingular++;
+            first = i < first ? i : first;
+        }
     }
     if (w)
         *w = wp;
+    if (first_singular)
+        *first_singular = nsingular ? first : -1;
+    return nsingular;
 }

@@ -478,6 +478,31 @@ static int check_size(const sph_body *b)
     return 0;
 }
 
+/* Particles whose neighbours do not span the body's dimensions (too few of them, or all in
+ * a line) leave the kernel correction singular: gradients there would be wrong, and a
+ * particle alone moves without resistance.  Where no notch cut the pairs, that is a body too
+ * thin or too small for its spacing, refused before the run; next to a notch it is the cut
+ * itself (L = I there, as before). */
+static int too_few_neighbours(const sph_body *b, const sph_body_desc *d, int nsingular,
+                              int first)
+{
+    if (d->fracture && d->fracture->nnotches)
+        return 0;
+    const double *x = b->X + (size_t)first * b->dim;
+    char at[96];
+    if (b->dim == 3)
+        snprintf(at, sizeof at, "(%g, %g, %g)", x[0], x[1], x[2]);
+    else
+        snprintf(at, sizeof at, "(x %g, z %g)", x[0], x[1]);
+    sph_error("body '%s': %d of its %d particles have too few neighbours for the kernel "
+              "correction (the %d of particle %d at %s do not span %d dimensions): the body is "
+              "too small or too thin for its spacing %g; make the spacing smaller (dp, refine) "
+              "or the kernel wider (coefh)",
+              d->name, nsingular, b->n, b->nb_start[first + 1] - b->nb_start[first], first, at,
+              b->dim, b->dx);
+    return -1;
+}
+
 int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
 {
     memset(b, 0, sizeof *b);
@@ -511,9 +536,12 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
     b->npairs = b->nb_start[b->n];
     if (d->fracture && d->fracture->nnotches) /* before the gradients: L sees the cut */
         SPH_TIMED("set-up: notches", cut_notches(b, d->fracture));
+    int nsingular = 0, first = -1;
     SPH_TIMED("set-up: kernel gradients and L",
-              sph_gradients(b->X, b->n, b->dim, b->nb_start, b->nb, m->kernel, b->h, b->vol, NULL,
-                            &b->L));
+              nsingular = sph_gradients(b->X, b->n, b->dim, b->nb_start, b->nb, m->kernel, b->h,
+                                        b->vol, NULL, &b->L, &first));
+    if (nsingular && too_few_neighbours(b, d, nsingular, first))
+        return -1;
     SPH_TIMED("set-up: silent pairs", drop_silent_pairs(b, m->kernel));
     SPH_TIMED("set-up: offset tables", offset_tables(b, m->kernel));
     SPH_TIMED("set-up: half lists and stripes", half_lists(b));

@@ -61,7 +61,7 @@ static void test_box(int dim, sph_kernel_kind kern, const double hi3[3], double 
     for (int k = 0; k < dim * dim; k++)
         A[k] = rnd(&seed);
     sph_neighbours(X, n, dim, 2 * h, 0, dx, &st, &nb);
-    sph_gradients(X, n, dim, st, nb, kern, h, vol, &w, &L);
+    sph_gradients(X, n, dim, st, nb, kern, h, vol, &w, &L, NULL);
     double ec = 0.0, eu = 0.0, asym = 0.0, wmax = 0.0;
     int interior = 0;
     for (int i = 0; i < n; i++) {
@@ -95,7 +95,9 @@ static void test_singular(void)
 {
     double X[6] = { 0, 0, 1, 0, 10, 10 }, *w, *L, e = 0.0;
     int st[4] = { 0, 1, 2, 2 }, nb[2] = { 1, 0 };
-    sph_gradients(X, 3, 2, st, nb, SPH_WENDLAND, 1.0, 1.0, &w, &L);
+    int first = -2;
+    const int n = sph_gradients(X, 3, 2, st, nb, SPH_WENDLAND, 1.0, 1.0, &w, &L, &first);
+    check(n == 3 && first == 0, "singular M counted (3, from particle 0)", n * 10 + first, 30);
     for (int i = 0; i < 3; i++)
         for (int k = 0; k < 4; k++)
             e = fmax(e, fabs(L[i * 4 + k] - (k == 0 || k == 3)));
