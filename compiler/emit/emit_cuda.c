@@ -72,11 +72,8 @@ static void scene_step_cuda(Emitter *E)
         fprintf(out, "    sph_cuda_state_copy(&s->bodies[%d], DEV[%d], to_device);\n", i, i);
     if (contact)
         fputs("    if (to_device)\n        sph_cuda_contact_from_host(&CONTACT_DEV, s);\n", out);
-    fputs("}\n\n/* Cauchy stress of every particle, for output (from the host copy). */\n"
-          "static void model_stress_output(sph_sim *s)\n{\n", out);
-    for (int i = 0; i < m->nbodies; i++)
-        fprintf(out, "    %s_stress_output(&s->bodies[%d]);\n", m->bodies[i].name, i);
     fputs("}\n\n", out);
+    emit_stress_output(E, " (from the host copy)");
 }
 
 /* The stability monitor's pass: every body's sums on the device, back to the host. */

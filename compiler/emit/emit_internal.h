@@ -85,6 +85,8 @@ void emit_bc_passes(Emitter *E, const BodyModel *b, const BodyPlan *p);
 /* Every body's passes of one step, body i named by the printf format `body` ("%d": i); with
  * contact, every body's forces, then the call `contact`, then every body's update. */
 void emit_step_bodies(Emitter *E, const char *body, const char *contact);
+/* model_stress_output: every body's Cauchy stress for output (`from`: where it is read). */
+void emit_stress_output(Emitter *E, const char *from);
 
 /* ---- phase-field fracture (emit_fracture.c) */
 /* The rest of the material function after its opening comment line. */

@@ -78,10 +78,15 @@ void emit_scene_cpu(Emitter *E)
             sym ? "symplectic predictor-corrector (Alg. 2)" : "Verlet (Alg. 1)");
     emit_step_bodies(E, "&s->bodies[%d]", "SPH_PASS(sph_contact_forces, (s, dt))");
     fputs("    (void)t, (void)t_half, (void)t_next;\n}\n\n", out);
-    fputs("/* Cauchy stress of every particle, for output. */\n"
-          "static void model_stress_output(sph_sim *s)\n{\n", out);
-    for (int i = 0; i < m->nbodies; i++)
-        fprintf(out, "    %s_stress_output(&s->bodies[%d]);\n", m->bodies[i].name, i);
-    fputs("}\n\n", out);
+    emit_stress_output(E, "");
+}
+
+void emit_stress_output(Emitter *E, const char *from)
+{
+    fprintf(E->out, "/* Cauchy stress of every particle, for output%s. */\n"
+                    "static void model_stress_output(sph_sim *s)\n{\n", from);
+    for (int i = 0; i < E->m->nbodies; i++)
+        fprintf(E->out, "    %s_stress_output(&s->bodies[%d]);\n", E->m->bodies[i].name, i);
+    fputs("}\n\n", E->out);
 }
 
