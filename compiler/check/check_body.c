@@ -771,9 +771,13 @@ static int region_fits(const Model *m, const BodyModel *b, SrcLoc loc)
             return -1;
         }
     }
-    for (int k = 0; k < b->region.n; k++) {
+    int last_added = -1; /* the shapes apply in order: one added after a cut fills again */
+    for (int k = 0; k < b->region.n; k++)
+        if (!b->region.prims[k].subtract)
+            last_added = k;
+    for (int k = last_added + 1; k < b->region.n; k++) {
         const ShapePrim *p = &b->region.prims[k];
-        int covers = p->subtract && p->kind == SHAPE_BOX;
+        int covers = p->kind == SHAPE_BOX;
         for (int c = 0; covers && c < 3; c++)
             covers = (m->dim == 2 && c == 1) ||
                      (fmin(p->a[c], p->b[c]) <= lo[c] && fmax(p->a[c], p->b[c]) >= hi[c]);

@@ -4,9 +4,9 @@
 #   WORK/many_drawings.xml  mk 1: 2000 boxes of one column of 4 nodes each, side by side
 #                           (8000 nodes); mk 2, drawn after them, takes the first 10
 #                           columns over: 7960 particles;
-#   WORK/many_drawings_50k.xml  mk 1: one box drawn 50000 times (compiled only: the shape
-#                           nested 50000 levels deep before, and the compiler's walks
-#                           overflowed);
+#   WORK/many_drawings_50k.xml  mk 1: one box of three columns drawn 50000 times, mk 2 a
+#                           box beside it (compiled only: the shape nested 50000 levels
+#                           deep before, and the compiler's walks overflowed);
 #   WORK/many_drawings_bad/alternating.xml  600 times a box of mk 1, then a box of mk 2 over
 #                           it: the shape would nest 1200 levels, which is refused.
 
@@ -16,8 +16,9 @@ function(many_drawings_case path ncolumns alternate same)
   set(box "          <drawbox><point x=\"@X@\" y=\"-1\" z=\"0\" />"
           "<size x=\"0.2e-3\" y=\"2\" z=\"3e-3\" /></drawbox>\n")
   string(CONCAT box ${box})
-  if(same) # one box, repeated
+  if(same) # one box three columns wide, repeated
     string(REPLACE "@X@" "0" box "${box}")
+    string(REPLACE "x=\"0.2e-3\"" "x=\"2.2e-3\"" box "${box}")
     string(REPEAT "${box}" ${ncolumns} boxes)
   else()
     foreach(k RANGE ${last})
@@ -29,10 +30,14 @@ function(many_drawings_case path ncolumns alternate same)
       endif()
     endforeach()
   endif()
-  if(NOT alternate)
+  if(NOT alternate AND NOT same)
     string(APPEND boxes "          <setmkbound mk=\"2\" />\n"
                         "          <drawbox><point x=\"0\" y=\"-1\" z=\"0\" />"
                         "<size x=\"9.2e-3\" y=\"2\" z=\"3e-3\" /></drawbox>\n")
+  elseif(same) # mk 2 beside mk 1, which keeps all its nodes
+    string(APPEND boxes "          <setmkbound mk=\"2\" />\n"
+                        "          <drawbox><point x=\"5e-3\" y=\"-1\" z=\"0\" />"
+                        "<size x=\"4.2e-3\" y=\"2\" z=\"3e-3\" /></drawbox>\n")
   endif()
   file(WRITE "${path}" "<?xml version=\"1.0\" encoding=\"UTF-8\" ?>
 <case>
