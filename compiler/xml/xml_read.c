@@ -12,11 +12,16 @@
  * dependency order (geometry, scene, expressions, bodies) and the items are appended in
  * the order a .sph model would have them: imports, scene, lets, bodies. */
 #include <errno.h>
+#include <limits.h>
+#include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 
+#include <libxml/SAX2.h>
+#include <libxml/entities.h>
 #include <libxml/parser.h>
 
 #include "util/diag.h"
@@ -127,10 +132,31 @@ static char *escape_attribute_lt(const char *s, size_t len, size_t *outlen)
 
 /* ------------------------------------------------------------------ libxml2 */
 
+/* Entities.  libxml2 keeps a reference (&name;) in the tree and expands it each time the
+ * text is read, so a few kilobytes of nested or repeated references could expand to
+ * gigabytes.  Each time the parser looks an entity up (where it is declared and where it
+ * is used), its text counts against one budget for the file: past ENTITY_TEXT_MAX bytes
+ * in all, or past ENTITY_REFS_MAX look-ups (each a node of the tree), the file is
+ * refused.  The text counted is an upper bound of what the entity expands to, so the tree
+ * read afterwards stays within the budget too.  External entities and parameter entities
+ * are refused, not read. */
+enum {
+    ENTITY_TEXT_MAX = 1 << 20,
+    ENTITY_REFS_MAX = 100000,
+    ENTITY_DEPTH_MAX = 40, /* entities in entities, as libxml2's own limit */
+    NAME_SHOWN = 64        /* bytes of a name a message shows */
+};
+
 typedef struct {
     const char *file;
     int reported;
-} ErrorSink;
+    xmlParserCtxt *ctxt;
+    size_t entity_text; /* bytes counted so far */
+    long entity_refs;   /* look-ups so far */
+} ParseState;
+
+/* The parse in progress, for the entity callbacks. */
+static ParseState *parsing;
 
 /* The first error libxml2 finds is reported; the ones that follow from it are not. */
 #if LIBXML_VERSION >= 21200
@@ -139,7 +165,7 @@ static void xml_error(void *data, const xmlError *err)
 static void xml_error(void *data, xmlErrorPtr err)
 #endif
 {
-    ErrorSink *sink = data;
+    ParseState *sink = data;
     if (!err || err->level < XML_ERR_ERROR || sink->reported)
         return;
     sink->reported = 1;
@@ -150,6 +176,129 @@ static void xml_error(void *data, xmlErrorPtr err)
         msg[--n] = 0;
     SrcLoc loc = {sink->file, err->line > 0 ? err->line : 0, 0};
     diag_error(loc, "malformed XML: %s", msg);
+}
+
+/* A name from the file, cut to NAME_SHOWN bytes. */
+static const char *shown(const xmlChar *name, char buf[NAME_SHOWN + 4])
+{
+    snprintf(buf, NAME_SHOWN + 4, "%.*s%s", NAME_SHOWN, name ? (const char *)name : "",
+             name && strlen((const char *)name) > NAME_SHOWN ? "..." : "");
+    return buf;
+}
+
+/* An entity error, at the line the document's parser has reached; the parse stops. */
+static void entity_error(ParseState *p, void *ctx, const char *fmt, ...)
+{
+    if (!p->reported) {
+        char msg[512];
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(msg, sizeof msg, fmt, ap);
+        va_end(ap);
+        const xmlParserCtxt *c = p->ctxt;
+        int line = c->inputNr > 0 && c->inputTab[0] ? c->inputTab[0]->line : 0;
+        diag_error((SrcLoc){p->file, line > 0 ? line : 0, 0}, "%s", msg);
+        p->reported = 1;
+    }
+    xmlStopParser(ctx);
+}
+
+/* What a general entity counts: its text with each reference in it replaced by what the
+ * entity named counts, or by the reference itself when that is more (an upper bound of
+ * its expansion and at least its length), capped at ENTITY_TEXT_MAX + 1.  Remembered in
+ * the entity's _private (the count + 2; 1 while it is counted) once every entity it
+ * names is declared.  -1 after an error. */
+#define COUNTING ((void *)1)
+static long entity_count(ParseState *p, void *ctx, xmlEntity *ent, int depth, int *partial)
+{
+    char b1[NAME_SHOWN + 4];
+    if (ent->etype == XML_INTERNAL_PREDEFINED_ENTITY)
+        return 1;
+    if (ent->etype != XML_INTERNAL_GENERAL_ENTITY) {
+        char file[200];
+        snprintf(file, sizeof file, "%s", ent->SystemID ? (const char *)ent->SystemID : "");
+        entity_error(p, ctx, "external entity '&%s;' (file '%s') is not read: external "
+                             "entities are refused", shown(ent->name, b1), file);
+        return -1;
+    }
+    if (ent->_private == COUNTING) {
+        entity_error(p, ctx, "entity '&%s;' refers to itself", shown(ent->name, b1));
+        return -1;
+    }
+    if (ent->_private)
+        return (long)((uintptr_t)ent->_private - 2);
+    if (depth > ENTITY_DEPTH_MAX) {
+        entity_error(p, ctx, "entities nest more than %d deep (at '&%s;')", ENTITY_DEPTH_MAX,
+                     shown(ent->name, b1));
+        return -1;
+    }
+    ent->_private = COUNTING;
+    const char *s = ent->content ? (const char *)ent->content : "";
+    size_t count = 0;
+    int undeclared = 0;
+    while (*s && count <= ENTITY_TEXT_MAX) {
+        const char *amp = strchr(s, '&'), *semi = amp ? strchr(amp, ';') : NULL;
+        if (!semi) {
+            count += strlen(s);
+            break;
+        }
+        count += (size_t)(semi + 1 - s);
+        s = semi + 1;
+        if (amp[1] == '#') /* a character reference (one character, fewer bytes) */
+            continue;
+        xmlChar *name = xmlStrndup((const xmlChar *)amp + 1, (int)(semi - amp - 1));
+        xmlEntity *sub = xmlGetDocEntity(p->ctxt->myDoc, name);
+        xmlFree(name);
+        if (!sub) {
+            undeclared = 1; /* declared later, or an error of libxml2's */
+            continue;
+        }
+        long n = entity_count(p, ctx, sub, depth + 1, &undeclared);
+        if (n < 0)
+            return -1;
+        if ((size_t)n > (size_t)(semi + 1 - amp))
+            count += (size_t)n - (size_t)(semi + 1 - amp);
+    }
+    if (count > ENTITY_TEXT_MAX)
+        count = ENTITY_TEXT_MAX + 1;
+    ent->_private = undeclared ? NULL : (void *)(uintptr_t)(count + 2);
+    *partial |= undeclared;
+    return (long)count;
+}
+
+/* libxml2 looks a general entity up: it is counted first. */
+static xmlEntity *get_entity(void *ctx, const xmlChar *name)
+{
+    ParseState *p = parsing;
+    char b[NAME_SHOWN + 4];
+    xmlEntity *ent = p->ctxt->myDoc ? xmlGetDocEntity(p->ctxt->myDoc, name) : NULL;
+    if (!p->reported && ent && ent->etype != XML_INTERNAL_PREDEFINED_ENTITY) {
+        int partial = 0;
+        long n = entity_count(p, ctx, ent, 0, &partial);
+        if (n > ENTITY_TEXT_MAX)
+            entity_error(p, ctx, "entity '&%s;' expands to more than %d bytes of text (the "
+                                 "limit for a case file)", shown(name, b), ENTITY_TEXT_MAX);
+        else if (n >= 0 && (p->entity_text += (size_t)n) > ENTITY_TEXT_MAX)
+            entity_error(p, ctx, "entities expand to more than %d bytes of text in all (the "
+                                 "limit for a case file; '&%s;' adds %ld here)",
+                         ENTITY_TEXT_MAX, shown(name, b), n);
+        else if (n >= 0 && ++p->entity_refs > ENTITY_REFS_MAX)
+            entity_error(p, ctx, "more than %d entity declarations and references (the limit "
+                                 "for a case file)", ENTITY_REFS_MAX);
+    }
+    if (p->reported) {
+        xmlStopParser(ctx);
+        return NULL;
+    }
+    return xmlSAX2GetEntity(ctx, name);
+}
+
+static xmlEntity *get_parameter_entity(void *ctx, const xmlChar *name)
+{
+    char b[NAME_SHOWN + 4];
+    entity_error(parsing, ctx, "parameter entity '%%%s;': parameter entities are not read",
+                 shown(name, b));
+    return NULL;
 }
 
 static xmlDoc *parse_document(const char *path)
@@ -165,15 +314,31 @@ static xmlDoc *parse_document(const char *path)
     }
     char *text = escape_attribute_lt(raw, len, &elen);
     free(raw);
-    ErrorSink sink = {path, 0};
-    xmlSetStructuredErrorFunc(&sink, xml_error);
-    xmlDoc *doc = xmlReadMemory(text, (int)elen, path, NULL,
-                                XML_PARSE_NONET | XML_PARSE_HUGE);
+    if (elen > INT_MAX) {
+        diag_error((SrcLoc){path, 0, 0}, "the file is too large (%zu bytes)", len);
+        free(text);
+        return NULL;
+    }
+    xmlParserCtxt *ctxt = xmlNewParserCtxt();
+    if (!ctxt) {
+        diag_error((SrcLoc){path, 0, 0}, "out of memory");
+        free(text);
+        return NULL;
+    }
+    ctxt->sax->getEntity = get_entity;
+    ctxt->sax->getParameterEntity = get_parameter_entity;
+    ParseState state = {path, 0, ctxt, 0, 0};
+    parsing = &state;
+    xmlSetStructuredErrorFunc(&state, xml_error);
+    /* Not XML_PARSE_HUGE: it would lift libxml2's own limits on entities too. */
+    xmlDoc *doc = xmlCtxtReadMemory(ctxt, text, (int)elen, path, NULL, XML_PARSE_NONET);
     xmlSetStructuredErrorFunc(NULL, NULL);
+    parsing = NULL;
+    xmlFreeParserCtxt(ctxt);
     free(text);
-    if (!doc && !sink.reported)
+    if (!doc && !state.reported)
         diag_error((SrcLoc){path, 0, 0}, "malformed XML");
-    if (doc && sink.reported) {
+    if (doc && state.reported) {
         xmlFreeDoc(doc);
         doc = NULL;
     }

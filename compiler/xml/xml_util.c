@@ -77,13 +77,28 @@ xmlNode *xml_child(const xmlNode *n, const char *name)
     return NULL;
 }
 
+/* A value made of text and entity references is read in one pass into a buffer
+ * (xmlGetProp appends piece by piece, in time quadratic in their number). */
 char *xml_attr(const xmlNode *n, const char *name)
 {
-    xmlChar *v = xmlGetProp(n, (const xmlChar *)name);
-    if (!v)
+    const xmlAttr *a = xmlHasProp(n, (const xmlChar *)name);
+    if (!a)
         return NULL;
-    char *s = ast_strdup((const char *)v);
-    xmlFree(v);
+    if (a->type != XML_ATTRIBUTE_NODE || !a->children || !a->children->next) {
+        xmlChar *v = xmlGetProp(n, (const xmlChar *)name);
+        if (!v)
+            return NULL;
+        char *s = ast_strdup((const char *)v);
+        xmlFree(v);
+        return s;
+    }
+    xmlBuffer *buf = xmlBufferCreate();
+    if (!buf)
+        return NULL;
+    xmlNodeBufGetContent(buf, (const xmlNode *)a);
+    const xmlChar *v = xmlBufferContent(buf);
+    char *s = ast_strdup(v ? (const char *)v : "");
+    xmlBufferFree(buf);
     return s;
 }
 
