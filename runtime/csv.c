@@ -1,6 +1,8 @@
 /* csv.c — CSV time series: a header line of column names, then one row of values per
- * call (%.10g, separated by commas or the file's separator), flushed at once so that the
- * data survive a run that is stopped early.
+ * call (%.10g, separated by commas or the file's separator).  Each line is made whole in
+ * memory and handed to the system in one write(2), past any stdio buffer: the rows are in
+ * the file as soon as they are written, and a run killed (or a disk filled) between two
+ * rows leaves whole rows only (a row whose write fails is cut off again).
  *
  * A checkpoint records how long every open file is (sph_csv_open_files); a run resumed from
  * it keeps those files, cut back to that length, and appends to them (sph_csv_resume). */
@@ -28,12 +30,72 @@ static int write_error(const char *what, int err)
     return -1;
 }
 
-/* Flushes f; returns 0, or the error of the failed write. */
-static int flush_checked(FILE *f)
+/* Appends line (len bytes) to c's file with one write; returns 0, or the error, after
+ * cutting the file back to where the line began. */
+static int write_line(sph_csv *c, const char *line, size_t len)
 {
-    if (fflush(f) != 0 || ferror(f))
-        return errno ? errno : EIO;
+    const int fd = fileno(c->f);
+    const off_t at = lseek(fd, 0, SEEK_CUR);
+    size_t done = 0;
+    while (done < len) { /* (a regular file takes it whole but for a full disk) */
+        const ssize_t n = write(fd, line + done, len - done);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            const int err = n < 0 && errno ? errno : ENOSPC;
+            if (at >= 0 && !ftruncate(fd, at))
+                lseek(fd, at, SEEK_SET);
+            return err;
+        }
+        done += (size_t)n;
+    }
     return 0;
+}
+
+/* A line of text in a growing buffer. */
+typedef struct {
+    char *s;
+    size_t len, cap;
+} line_buf;
+
+static void put(line_buf *b, const char *text)
+{
+    const size_t n = strlen(text);
+    if (b->len + n + 1 > b->cap) {
+        const size_t cap = 2 * (b->len + n + 1);
+        char *grown = realloc(b->s, cap);
+        if (!grown) {
+            free(b->s);
+            *b = (line_buf){0};
+            return;
+        }
+        b->s = grown, b->cap = cap;
+    }
+    if (b->s) {
+        memcpy(b->s + b->len, text, n + 1);
+        b->len += n;
+    }
+}
+
+/* The line of fields k < n, given as text (text[k]) or as numbers (values[k], %.10g); 0,
+ * or the error of writing it. */
+static int write_fields(sph_csv *c, const char *const *text, const double *values)
+{
+    line_buf b = {malloc(64), 0, 64};
+    if (b.s)
+        b.s[0] = '\0';
+    for (int k = 0; k < c->ncols; k++) {
+        char num[40], sep[2] = {c->sep, '\0'};
+        if (k)
+            put(&b, sep);
+        if (!text)
+            snprintf(num, sizeof num, "%.10g", values[k]);
+        put(&b, text ? text[k] : num);
+    }
+    put(&b, "\n");
+    const int err = b.s ? write_line(c, b.s, b.len) : ENOMEM;
+    free(b.s);
+    return err;
 }
 
 int sph_csv_open(sph_csv *c, const char *path, const char *const *columns, int ncols)
@@ -76,7 +138,8 @@ static int keep(sph_csv *c, const char *path)
         c->f = NULL;
         return -1;
     }
-    if (ftruncate(fileno(c->f), (off_t)files.keep_len[k]) || fseek(c->f, 0, SEEK_END)) {
+    if (ftruncate(fileno(c->f), (off_t)files.keep_len[k]) ||
+        lseek(fileno(c->f), 0, SEEK_END) < 0) {
         const int err = errno;
         fclose(c->f);
         c->f = NULL;
@@ -98,14 +161,7 @@ int sph_csv_open_sep(sph_csv *c, const char *path, const char *const *columns, i
     if (!c->f)
         return write_error(path, errno);
     track(c, path);
-    errno = 0;
-    for (int k = 0; k < ncols; k++) {
-        if (k)
-            fputc(c->sep, c->f);
-        fputs(columns[k], c->f);
-    }
-    fputc('\n', c->f);
-    int err = flush_checked(c->f);
+    const int err = write_fields(c, columns, NULL);
     if (err) {
         fclose(c->f);
         c->f = NULL;
@@ -118,15 +174,8 @@ int sph_csv_row(sph_csv *c, const double *values)
 {
     if (!c->f)
         return -1;
-    errno = 0;
-    for (int k = 0; k < c->ncols; k++) {
-        if (k)
-            fputc(c->sep, c->f);
-        fprintf(c->f, "%.10g", values[k]);
-    }
-    fputc('\n', c->f);
-    int err = flush_checked(c->f);
-    return err ? write_error("CSV file", err) : 0;
+    const int err = write_fields(c, NULL, values);
+    return err ? write_error(c->path ? c->path : "CSV file", err) : 0;
 }
 
 void sph_csv_close(sph_csv *c)
@@ -149,7 +198,8 @@ int sph_csv_open_files(const char ***paths, long **lengths)
     *lengths = malloc(((size_t)files.nopen + 1) * sizeof **lengths);
     int n = 0;
     for (int k = 0; k < files.nopen && *paths && *lengths; k++) {
-        const long len = files.open[k]->f ? ftell(files.open[k]->f) : -1;
+        const long len = files.open[k]->f ? (long)lseek(fileno(files.open[k]->f), 0, SEEK_CUR)
+                                          : -1;
         if (len < 0)
             continue;
         (*paths)[n] = files.open[k]->path;

@@ -1,6 +1,8 @@
 /* json.c — a small streaming JSON writer for summary.json: pretty-printed with a
  * 2-space indent.  j->first[d] is 1 while the object or array at depth d has no
- * member yet, which decides where commas go.  Nesting is limited to 31 levels. */
+ * member yet, which decides where commas go.  Nesting is limited to 31 levels.  The file is
+ * written beside its name and renamed over it when closed (sph_open_whole): a reader, or a
+ * run killed while writing it, never sees a part of one. */
 #include "output.h"
 
 #include <errno.h>
@@ -93,9 +95,14 @@ int sph_json_open(sph_json *j, const char *path)
 {
     j->depth = 1;
     j->first[1] = 1;
-    j->f = fopen(path, "w");
-    if (!j->f)
-        return write_error(path, errno);
+    j->path = strdup(path);
+    j->f = j->path ? sph_open_whole(path) : NULL;
+    if (!j->f) {
+        const int err = j->path ? errno : ENOMEM;
+        free(j->path);
+        j->path = NULL;
+        return write_error(path, err);
+    }
     errno = 0;
     fputc('{', j->f);
     return 0;
@@ -157,9 +164,10 @@ int sph_json_close(sph_json *j)
         return -1;
     close_level(j, '}'); /* the caller has closed every level it opened */
     fputc('\n', j->f);
-    int err = ferror(j->f) ? (errno ? errno : EIO) : 0;
-    if (fclose(j->f) != 0 && !err)
-        err = errno ? errno : EIO;
+    const int err = sph_close_whole(j->f, j->path);
+    const int bad = err ? write_error(j->path, err) : 0;
     j->f = NULL;
-    return err ? write_error("JSON file", err) : 0;
+    free(j->path);
+    j->path = NULL;
+    return bad;
 }

@@ -1,7 +1,7 @@
 /* options.c — the command line of a generated program.
  *
  *   --out DIR  --threads N  --end T  --every T  --frames T  --checkpoint T  --restart FILE
- *   --quiet  --profile  --help | -h
+ *   --overwrite  --quiet  --progress T  --profile  --help | -h
  *
  * Options with a value also accept the spelling --opt=value. */
 #include "output.h"
@@ -14,7 +14,7 @@
 
 typedef enum {
     OPT_OUT, OPT_THREADS, OPT_END, OPT_EVERY, OPT_FRAMES, OPT_CHECKPOINT, OPT_RESTART,
-    OPT_QUIET, OPT_PROFILE, OPT_HELP
+    OPT_OVERWRITE, OPT_QUIET, OPT_PROGRESS, OPT_PROFILE, OPT_HELP
 } opt_id;
 
 typedef struct {
@@ -26,8 +26,9 @@ typedef struct {
 static const opt_info OPTIONS[] = {
     {"--out", OPT_OUT, 1},     {"--threads", OPT_THREADS, 1}, {"--end", OPT_END, 1},
     {"--every", OPT_EVERY, 1}, {"--frames", OPT_FRAMES, 1},   {"--checkpoint", OPT_CHECKPOINT, 1},
-    {"--restart", OPT_RESTART, 1}, {"--quiet", OPT_QUIET, 0},  {"--profile", OPT_PROFILE, 0},
-    {"--help", OPT_HELP, 0},       {"-h", OPT_HELP, 0},
+    {"--restart", OPT_RESTART, 1}, {"--overwrite", OPT_OVERWRITE, 0},
+    {"--quiet", OPT_QUIET, 0},     {"--progress", OPT_PROGRESS, 1},
+    {"--profile", OPT_PROFILE, 0}, {"--help", OPT_HELP, 0},       {"-h", OPT_HELP, 0},
 };
 #define NOPTIONS (int)(sizeof OPTIONS / sizeof OPTIONS[0])
 
@@ -56,7 +57,11 @@ static void usage(FILE *f, const char *prog, const char *model)
             "                simulated time (at output times) and at the end of the run\n"
             "  --restart FILE  resume the run of FILE, a checkpoint of this model, in its\n"
             "                folder (unless --out is given) to the end time\n"
-            "  --quiet       no progress line\n"
+            "  --overwrite   replace the outputs of an earlier run in the output folder\n"
+            "                (without it such a folder is refused)\n"
+            "  --quiet       no progress lines\n"
+            "  --progress T  a progress line every T seconds when the output is not a\n"
+            "                terminal (a log; default 10, 0: none)\n"
             "  --profile     the time each pass of the step takes, printed at the end and\n"
             "                written to summary.json\n"
             "  -h, --help    show this help and exit\n",
@@ -102,15 +107,20 @@ static int parse_positive_int(const char *s, int *out)
     return 0;
 }
 
-static int parse_positive_double(const char *s, double *out)
+static int parse_double(const char *s, double *out, double lowest, int with_lowest)
 {
     char *end;
     errno = 0;
     double v = strtod(s, &end);
-    if (end == s || *end || errno || !isfinite(v) || v <= 0)
+    if (end == s || *end || errno || !isfinite(v) || v < lowest || (v == lowest && !with_lowest))
         return -1;
     *out = v;
     return 0;
+}
+
+static int parse_positive_double(const char *s, double *out)
+{
+    return parse_double(s, out, 0, 0);
 }
 
 /* Stores the value of option id; 0 on success, -1 (message printed) otherwise. */
@@ -128,6 +138,7 @@ static int set_value(sph_options *o, opt_id id, const char *name, const char *va
     case OPT_EVERY:   bad = parse_positive_double(value, &o->t_out); break;
     case OPT_FRAMES:  bad = parse_positive_double(value, &o->t_frames); break;
     case OPT_CHECKPOINT: bad = parse_positive_double(value, &o->t_checkpoint); break;
+    case OPT_PROGRESS: bad = parse_double(value, &o->progress, 0, 1); break;
     case OPT_RESTART:
         bad = value[0] == '\0';
         o->restart = value;
@@ -137,8 +148,10 @@ static int set_value(sph_options *o, opt_id id, const char *name, const char *va
     if (!bad)
         return 0;
     fprintf(stderr, "%s: error: invalid value '%s' for %s%s\n", prog, value, name,
-            id == OPT_OUT ? "" : id == OPT_THREADS ? " (expected a positive integer)"
-                       : id == OPT_RESTART ? "" : " (expected a positive number)");
+            id == OPT_OUT || id == OPT_RESTART ? ""
+            : id == OPT_THREADS                ? " (expected a positive integer)"
+            : id == OPT_PROGRESS               ? " (expected seconds, 0 or more)"
+                                               : " (expected a positive number)");
     usage(stderr, prog, model);
     return -1;
 }
@@ -181,7 +194,8 @@ int sph_parse_options(sph_options *o, const char *model_name, int argc, char **a
     const char *model = model_name && model_name[0] ? model_name : "sph";
     const char *prog = program_name(argc, argv, model);
     *o = (sph_options){.out_dir = NULL, .threads = 0, .t_end = -1, .t_out = -1, .t_frames = -1,
-                       .t_checkpoint = -1, .restart = NULL, .quiet = 0, .profile = 0};
+                       .t_checkpoint = -1, .restart = NULL, .quiet = 0, .profile = 0,
+                       .overwrite = 0, .progress = 10};
     for (int i = 1; i < argc; i++) {
         const char *value;
         const opt_info *opt = find_option(argv[i], &value);
@@ -197,6 +211,8 @@ int sph_parse_options(sph_options *o, const char *model_name, int argc, char **a
                 return fail(prog, model, "option takes no value: ", argv[i]);
             if (opt->id == OPT_QUIET)
                 o->quiet = 1;
+            else if (opt->id == OPT_OVERWRITE)
+                o->overwrite = 1;
             else
                 o->profile = 1;
             continue;
@@ -207,6 +223,9 @@ int sph_parse_options(sph_options *o, const char *model_name, int argc, char **a
         if (set_value(o, opt->id, opt->name, value ? value : argv[++i], prog, model))
             return -1;
     }
+    if (o->restart && o->overwrite) /* (it would remove the files it continues) */
+        return fail(prog, model, "--overwrite with --restart: a resumed run continues the "
+                                 "files of its folder", "");
     if (!o->out_dir)
         o->out_dir = o->restart ? folder_of(o->restart) : default_out_dir(model);
     return 0;

@@ -10,6 +10,19 @@
 /* mkdir -p */
 int sph_mkdirs(const char *path);
 
+/* A file written whole: sph_open_whole opens PATH.tmp beside it (NULL and errno when it
+ * cannot), sph_close_whole closes it and renames it over PATH once complete (0, or the
+ * error, the temporary file removed), so that a run killed while writing leaves the
+ * previous file or none, never a part of one. */
+FILE *sph_open_whole(const char *path);
+int sph_close_whole(FILE *f, const char *path);
+
+/* The files a run writes in folder dir (summary.json, the CSV files, the checkpoint, the
+ * frames and .pvd lists in particles/, and those cut short while being written), by their
+ * names: how many there are, the first one's in first (len bytes; NULL: not wanted), and
+ * all of them removed when remove_them (-1 after reporting one that cannot be). */
+long sph_run_files(const char *dir, int remove_them, char *first, size_t len);
+
 /* One VTK XML UnstructuredGrid (.vtu) file of a body's particles (VTK_VERTEX cells), binary
  * "raw" appended data with UInt64 headers, Float64 values.  Points are the current positions
  * X+u in 3D (2D: y = body->y_plane).  Point data: "displacement" (3), "velocity" (3),
@@ -21,7 +34,8 @@ int sph_write_vtu(const char *path, const sph_body *b, double t);
 /* A ParaView collection (.pvd) listing files[k] (relative to the pvd) at times[k]. */
 int sph_write_pvd(const char *path, const char *const *files, const double *times, int n);
 
-/* A CSV time series: opened once with a header line, appended row by row (flushed).
+/* A CSV time series: opened once with a header line, appended row by row, each line with
+ * one write (no half row is left by a run killed between two).
  * Fields are separated by commas, or by `sep` with sph_csv_open_sep. */
 typedef struct {
     FILE *f;
@@ -41,9 +55,11 @@ int sph_csv_open_files(const char ***paths, long **lengths);
  * back to its length, and appends to it (no header); opening any other is an error. */
 void sph_csv_resume(const char *const *paths, const long *lengths, int n);
 
-/* A small JSON writer (pretty-printed, 2-space indent) for summary.json. */
+/* A small JSON writer (pretty-printed, 2-space indent) for summary.json, written whole
+ * (sph_open_whole). */
 typedef struct {
     FILE *f;
+    char *path;
     int depth;
     int first[32]; /* per depth: no member written yet */
 } sph_json;
@@ -58,16 +74,20 @@ void sph_json_str(sph_json *j, const char *key, const char *s); /* escaped */
 void sph_json_bool(sph_json *j, const char *key, int v);
 int sph_json_close(sph_json *j);  /* writes the final "}" and closes */
 
-/* Progress line on a terminal (only when stderr is a tty and not quiet):
- * "\r[ 42.0%] t = 0.1234 s  dt = 2.1e-06 s  1234 steps/s  ETA 0:00:12" */
+/* Progress lines, unless quiet: on a terminal (stderr is one) rewritten in place at 4 Hz,
+ * "\r[ 42.0%] t = 0.1234 s  dt = 2.1e-06 s  1234 steps/s  ETA 0:00:12" within its width;
+ * in a log (stdout is not a terminal) "NAME: [ 42.0%] t = ...  ETA 0:00:12  (0:00:09)" (the
+ * wall time so far) every log_every seconds (0: none), within 80 columns. */
 typedef struct {
     int enabled;
     double t_end;
     double wall_start, wall_last;
     long step_last;
+    double log_every, log_last;
+    long log_step;
 } sph_progress;
-void sph_progress_start(sph_progress *p, double t_end, int quiet);
-void sph_progress_update(sph_progress *p, double t, double dt, long step); /* rate-limited: 4 Hz */
+void sph_progress_start(sph_progress *p, double t_end, int quiet, double log_every);
+void sph_progress_update(sph_progress *p, const char *name, double t, double dt, long step);
 void sph_progress_finish(sph_progress *p);
 
 /* The profile (profile.c): the passes' times in summary.json ("profile"), and as a table. */
@@ -88,6 +108,8 @@ typedef struct {
     const char *restart;  /* --restart FILE: resume from this checkpoint (NULL: none) */
     int quiet;            /* --quiet */
     int profile;          /* --profile: the time of each pass of the step */
+    int overwrite;        /* --overwrite: replace the outputs of an earlier run in out_dir */
+    double progress;      /* --progress T: a progress line every T s in a log (0: none) */
 } sph_options;
 /* Parses argv; prints usage and returns -1 on a bad option (the caller exits 2);
  * returns 1 after printing --help, 0 otherwise. */

@@ -2,8 +2,15 @@
  *
  * Exit codes: 0 success; 1 an expectation of the model failed; 2 bad command line;
  * 3 the run went unstable (stopped by the monitor; the last good output is kept);
- * 4 output could not be written or set-up failed; 6 a run with checkpoints stopped by a
- * signal, after writing one (5, a CUDA failure, is sph_cuda.h's). */
+ * 4 output could not be written (or the output folder holds an earlier run's outputs, without
+ * --overwrite) or set-up failed; 6 a run with checkpoints stopped by a signal, after writing
+ * one; 7 a run without checkpoints stopped by a signal (5, a CUDA failure, is sph_cuda.h's).
+ *
+ * A run never leaves a mix of two runs or a part of a file: summary.json says "running"
+ * from before the first output, and how the run ended at its end; the files written whole
+ * (frames, .pvd lists, summary.json) are renamed into place once complete, the CSV files grow
+ * by whole rows; a folder that holds another run's outputs is refused unless --overwrite
+ * removes them (a run resumed with --restart continues its own). */
 #include <math.h>
 #include <omp.h>
 #include <signal.h>
@@ -34,9 +41,10 @@ static double dt_floor(const run_state *r)
     return r->m->dt_fixed > 0 ? 0.0 : r->m->dtmin_coef * min_h_over_c0(r);
 }
 
-/* A run with checkpoints that gets SIGTERM (a batch system's notice) or SIGINT stops after
- * the step under way (on the device: after the batch of steps queued, at most 20), writes a
- * checkpoint and exits (SPH_EXIT_STOPPED); a second signal ends it at once. */
+/* A run that gets SIGTERM (a batch system's notice) or SIGINT stops after the step under
+ * way (on the device: after the batch of steps queued, at most 20), writes summary.json
+ * ("stopped") and, with checkpoints, a checkpoint, and exits (SPH_EXIT_STOPPED with a
+ * checkpoint, SPH_EXIT_SIGNALLED without); a second signal ends it at once. */
 static volatile sig_atomic_t stop_signal;
 
 static void on_stop_signal(int sig)
@@ -170,6 +178,9 @@ static void energy_totals(const energy_slot *slot, const double *v, int n, int n
 static int open_outputs(run_state *r)
 {
     const sph_model *m = r->m;
+    /* (--overwrite: an earlier run's files go first; refuse_used_folder checked for them) */
+    if (r->opt.overwrite && sph_run_files(r->opt.out_dir, 1, NULL, 0) < 0)
+        return -1;
     char *dir = joinf("%s%s/particles", r->opt.out_dir, "");
     int bad = sph_mkdirs(dir);
     free(dir);
@@ -337,9 +348,15 @@ static void body_summary(sph_json *j, const sph_body *b)
     sph_json_end_object(j);
 }
 
-static int write_summary(run_state *r, double wall, long particles, long pairs, int *failed)
+/* summary.json: the run and how it stands, status "running" (written before the first
+ * output, so that a folder's summary never speaks of an earlier run, nor calls a run that was
+ * killed stable) or how it ended: "finished" (its expectations evaluated, *failed set when
+ * one failed), "unstable", "stopped" (by a signal) or "failed" (an output could not be
+ * written); then the timers, the monitor's verdict and the bodies. */
+static int write_summary(run_state *r, const char *status, double wall, int *failed)
 {
     const sph_sim *s = &r->sim;
+    const long particles = r->particles, pairs = r->pairs;
     char path[4096];
     snprintf(path, sizeof path, "%s/summary.json", r->opt.out_dir);
     sph_json j;
@@ -347,6 +364,7 @@ static int write_summary(run_state *r, double wall, long particles, long pairs, 
         return -1;
     sph_json_str(&j, "model", r->m->name);
     sph_json_str(&j, "source", r->m->source);
+    sph_json_str(&j, "status", status);
     sph_json_int(&j, "dimension", r->m->dim);
     sph_json_int(&j, "threads", omp_get_max_threads());
     sph_json_int(&j, "particles", particles);
@@ -359,6 +377,10 @@ static int write_summary(run_state *r, double wall, long particles, long pairs, 
         sph_json_num(&j, "time", r->t_resumed);
         sph_json_int(&j, "step", r->step_resumed);
         sph_json_end_object(&j);
+    }
+    if (!strcmp(status, "running")) {
+        sph_json_num(&j, "end_time", r->t_end);
+        return sph_json_close(&j);
     }
     sph_json_num(&j, "wall_time", wall);
     sph_json_num(&j, "setup_time", r->setup_seconds);
@@ -384,16 +406,17 @@ static int write_summary(run_state *r, double wall, long particles, long pairs, 
     for (int i = 0; i < s->nbodies; i++)
         body_summary(&j, &s->bodies[i]);
     sph_json_end_array(&j);
-    if (stop_signal) { /* a run cut short: its expectations are for the whole run */
+    if (!strcmp(status, "stopped")) { /* cut short: its expectations are for the whole run */
         sph_json_key_object(&j, "stopped");
         sph_json_str(&j, "signal", stop_name());
         sph_json_num(&j, "time", s->t);
+        sph_json_num(&j, "last_frame", r->nframes ? r->frame_times[r->nframes - 1] : NAN);
+        sph_json_bool(&j, "checkpoint", r->t_checkpoint > 0);
         sph_json_end_object(&j);
     }
-    *failed = r->unstable[0] || stop_signal
-                  ? 0
-                  : sph_expect_evaluate(r->m, &r->rec, &j, r->opt.quiet, r->errors,
-                                        sizeof r->errors);
+    *failed = strcmp(status, "finished") ? 0
+              : sph_expect_evaluate(r->m, &r->rec, &j, r->opt.quiet, r->errors,
+                                    sizeof r->errors);
     return sph_json_close(&j);
 }
 
@@ -518,7 +541,7 @@ static int time_loop(run_state *r)
 {
     sph_sim *s = &r->sim;
     sph_progress prog;
-    sph_progress_start(&prog, r->t_end, r->opt.quiet);
+    sph_progress_start(&prog, r->t_end, r->opt.quiet, r->opt.progress);
     const double floor_dt = dt_floor(r), eps = 1e-9 * r->t_out;
     while (s->t < r->t_end - eps) {
         /* the steps to the next check or output time, whichever is first */
@@ -549,7 +572,7 @@ static int time_loop(run_state *r)
         } else {
             r->check_seconds += sph_wall_time() - w0;
         }
-        sph_progress_update(&prog, s->t, s->dt, s->step);
+        sph_progress_update(&prog, r->m->name, s->t, s->dt, s->step);
         if (stop_signal) /* (after the step under way when it came, and its output) */
             break;
     }
@@ -557,14 +580,14 @@ static int time_loop(run_state *r)
     return r->unstable[0] ? 1 : stop_signal ? 2 : 0;
 }
 
-static int setup(run_state *r, long *particles, long *pairs)
+static int setup(run_state *r)
 {
     const sph_model *m = r->m;
     if (sph_sim_init(&r->sim, m, !r->opt.quiet))
         return -1;
     for (int i = 0; i < r->sim.nbodies; i++) {
-        *particles += r->sim.bodies[i].n;
-        *pairs += r->sim.bodies[i].npairs;
+        r->particles += r->sim.bodies[i].n;
+        r->pairs += r->sim.bodies[i].npairs;
     }
     if (m->dt_fixed > 0 && m->dt_fixed > min_h_over_c0(r))
         sph_warning("the fixed time step %g s exceeds h/c0 = %g s (CFL 1); the run is likely to "
@@ -616,8 +639,39 @@ static int too_many_outputs(const run_state *r)
     return 1;
 }
 
+/* A run whose outputs could not be written (reported): summary.json says so rather than
+ * "running", if it can be written at all. */
+static int failed_run(run_state *r)
+{
+    int failed = 0;
+    sync_host(r);
+    write_summary(r, "failed", r->wall_before + sph_wall_time() - r->wall0, &failed);
+    return SPH_EXIT_SETUP;
+}
+
+/* A new run's folder must hold no outputs of another run, which the new one would leave
+ * beside its own (an earlier, longer run's later frames; its summary): refused unless
+ * --overwrite, which removes them when the outputs are opened.  Checked before the set-up,
+ * which may be long. */
+static int refuse_used_folder(const run_state *r)
+{
+    char first[256];
+    const long n = sph_run_files(r->opt.out_dir, 0, first, sizeof first);
+    if (n <= 0 || r->opt.overwrite)
+        return 0;
+    char more[64] = "";
+    if (n > 1)
+        snprintf(more, sizeof more, " and %ld more", n - 1);
+    sph_error("%s holds the outputs of an earlier run (%s%s); --overwrite replaces them, "
+              "--out DIR writes elsewhere", r->opt.out_dir, first, more);
+    return 1;
+}
+
 int sph_main(const sph_model *m, int argc, char **argv)
 {
+    /* a log (stdout redirected to a file) gets each line when it is printed, not 4 KiB at a
+     * time or at the end */
+    setvbuf(stdout, NULL, _IOLBF, 0);
     run_state r;
     memset(&r, 0, sizeof r);
     r.m = m;
@@ -636,39 +690,45 @@ int sph_main(const sph_model *m, int argc, char **argv)
     r.t_checkpoint = r.opt.t_checkpoint > 0 ? r.opt.t_checkpoint : m->t_checkpoint;
     if (too_many_outputs(&r))
         return SPH_EXIT_OPTIONS;
+    if (!r.opt.restart && refuse_used_folder(&r))
+        return SPH_EXIT_SETUP;
     if (r.t_checkpoint > 0)
         catch_stop_signals();
     r.wall0 = sph_wall_time();
     r.next_out = r.t_out;
     r.next_checkpoint = r.t_checkpoint;
-    long particles = 0, pairs = 0;
     sph_ckpt ckpt;
     if (r.opt.restart && sph_ckpt_read(&ckpt, r.opt.restart))
         return SPH_EXIT_SETUP;
-    if (setup(&r, &particles, &pairs))
+    if (setup(&r))
         return SPH_EXIT_SETUP;
+    if (r.t_checkpoint <= 0) /* (without checkpoints a signal in the set-up ends it at once) */
+        catch_stop_signals();
     if (r.opt.restart) {
         if (restart(&r, &ckpt))
             return SPH_EXIT_SETUP;
         r.setup_seconds += sph_wall_time() - r.wall0; /* (the run's set-ups, both) */
+        if (write_summary(&r, "running", 0, NULL))
+            return SPH_EXIT_SETUP;
     } else {
         sync_host(&r);
-        if (initial_state_bad(&r) || open_outputs(&r))
+        if (initial_state_bad(&r) || open_outputs(&r) || write_summary(&r, "running", 0, NULL))
             return SPH_EXIT_SETUP;
         r.setup_seconds = sph_wall_time() - r.wall0;
         sph_profile_phase = SPH_PHASE_CHECKS; /* the first output */
         if (write_output(&r))
-            return SPH_EXIT_SETUP;
+            return failed_run(&r);
     }
     int state = time_loop(&r);
     if (state != 1 && r.t_checkpoint > 0 && sph_run_write_checkpoint(&r)) /* to go on from */
         state = -1;
     if (state < 0)
-        return SPH_EXIT_SETUP;
+        return failed_run(&r);
     int failed = 0;
     double wall = r.wall_before + sph_wall_time() - r.wall0;
     sync_host(&r);
-    if (write_summary(&r, wall, particles, pairs, &failed))
+    if (write_summary(&r, state == 1 ? "unstable" : state == 2 ? "stopped" : "finished", wall,
+                      &failed))
         return SPH_EXIT_SETUP;
     sph_csv_close(&r.energies);
     for (int q = 0; q < r.nmeasures; q++)
@@ -681,12 +741,19 @@ int sph_main(const sph_model *m, int argc, char **argv)
                                      r.output_seconds};
         sph_profile_print(stdout, m->name, r.sim.step, &t);
     }
+    const long particles = r.particles;
     double ps = (double)particles * (double)r.sim.step;
-    if (state == 2) {
+    if (state == 2 && r.t_checkpoint > 0) {
         sph_error("stopped by %s at t = %g s (step %ld); the checkpoint %s/checkpoint.bin "
                   "resumes the run (--restart)", stop_name(),
                   r.sim.t, r.sim.step, r.opt.out_dir);
         return SPH_EXIT_STOPPED;
+    }
+    if (state == 2) {
+        sph_error("stopped by %s at t = %g s (step %ld); its outputs up to then are in %s/ "
+                  "(no checkpoint to resume from: see --checkpoint)", stop_name(), r.sim.t,
+                  r.sim.step, r.opt.out_dir);
+        return SPH_EXIT_SIGNALLED;
     }
     if (state == 1) {
         sph_error("the run went unstable at %s", r.unstable);

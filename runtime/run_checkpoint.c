@@ -150,6 +150,25 @@ int sph_run_resume_files(const sph_ckpt *c, const run_state *r)
     return ok ? 0 : -1;
 }
 
+/* The frames of body i that the run wrote after its checkpoint: the resumed run writes them
+ * again, and one that ends sooner (a shorter --end, a stop) must not leave them beside its
+ * own, nor its .pvd list them.  0, or -1 after reporting. */
+static int drop_later_frames(const run_state *r, int i)
+{
+    const char *body = r->sim.bodies[i].desc->name;
+    char file[256], path[4096];
+    for (int k = r->nframes, gone = 1; gone; k++) { /* (and one cut short, PATH.tmp) */
+        frame_file(file, sizeof file, body, k);
+        snprintf(path, sizeof path, "%s/particles/%s.tmp", r->opt.out_dir, file);
+        gone = remove(path) == 0;
+        path[strlen(path) - 4] = '\0';
+        gone = (remove(path) == 0) | gone;
+    }
+    snprintf(path, sizeof path, "%s/particles/%s.pvd", r->opt.out_dir, body);
+    return sph_write_pvd(path, (const char *const *)r->frame_files[i], r->frame_times,
+                         r->nframes);
+}
+
 /* The run's records, after the outputs are open: times, frames, series, timers. */
 int sph_run_resume(const sph_ckpt *c, run_state *r)
 {
@@ -192,6 +211,8 @@ int sph_run_resume(const sph_ckpt *c, run_state *r)
             frame_file(file, sizeof file, r->sim.bodies[i].desc->name, k);
             r->frame_files[i][k] = strdup(file);
         }
+        if (drop_later_frames(r, i))
+            return -1;
     }
     return 0;
 }

@@ -23,6 +23,7 @@ typedef struct {
     double t_resumed;            /* and the time and step it resumed at */
     long step_resumed;
     sph_sim sim;
+    long particles, pairs;       /* of all bodies */
     sph_csv energies;
     sph_csv *measure_csv;
     int nmeasures;

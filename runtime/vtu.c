@@ -3,7 +3,10 @@
  *
  * The .vtu file holds the particles as VTK_VERTEX cells.  All arrays are stored as raw
  * binary in <AppendedData>: each block is a UInt64 byte count followed by the values,
- * and each DataArray's `offset` is the position of its block after the leading '_'. */
+ * and each DataArray's `offset` is the position of its block after the leading '_'.
+ *
+ * Both files are written beside their name and renamed over it once complete
+ * (sph_open_whole): ParaView, or a run killed while writing, never sees a part of one. */
 #include "output.h"
 
 #include <errno.h>
@@ -254,22 +257,13 @@ static void write_blocks(FILE *f, const sph_body *b, void *buf)
     }
 }
 
-/* Closes f; returns 0, or the error of a failed write or close. */
-static int close_checked(FILE *f)
-{
-    int err = ferror(f) ? (errno ? errno : EIO) : 0;
-    if (fclose(f) != 0 && !err)
-        err = errno ? errno : EIO;
-    return err;
-}
-
 int sph_write_vtu(const char *path, const sph_body *b, double t)
 {
     size_t n = b->n > 0 ? (size_t)b->n : 0;
     void *buf = malloc(block_bytes(A_STRESS, n) + 1);
     if (!buf)
         return write_error(path, ENOMEM);
-    FILE *f = fopen(path, "wb");
+    FILE *f = sph_open_whole(path);
     if (!f) {
         int err = errno;
         free(buf);
@@ -279,7 +273,7 @@ int sph_write_vtu(const char *path, const sph_body *b, double t)
     write_header(f, b, t);
     write_blocks(f, b, buf);
     fputs("\n  </AppendedData>\n</VTKFile>\n", f);
-    int err = close_checked(f);
+    int err = sph_close_whole(f, path);
     free(buf);
     return err ? write_error(path, err) : 0;
 }
@@ -313,27 +307,14 @@ static void write_collection(FILE *f, const char *const *files, const double *ti
     fprintf(f, "  </Collection>\n</VTKFile>\n");
 }
 
-/* The collection is rewritten at every output; it is written to PATH.tmp and renamed,
- * so that a reader never sees a partial file. */
+/* The collection is rewritten at every output. */
 int sph_write_pvd(const char *path, const char *const *files, const double *times, int n)
 {
-    size_t len = strlen(path);
-    char *tmp = malloc(len + 5);
-    if (!tmp)
-        return write_error(path, ENOMEM);
-    memcpy(tmp, path, len);
-    memcpy(tmp + len, ".tmp", 5);
-    FILE *f = fopen(tmp, "w");
-    int err = f ? 0 : errno;
-    if (f) {
-        errno = 0;
-        write_collection(f, files, times, n);
-        err = close_checked(f);
-        if (!err && rename(tmp, path) != 0)
-            err = errno;
-        if (err)
-            remove(tmp);
-    }
-    free(tmp);
+    FILE *f = sph_open_whole(path);
+    if (!f)
+        return write_error(path, errno);
+    errno = 0;
+    write_collection(f, files, times, n);
+    const int err = sph_close_whole(f, path);
     return err ? write_error(path, err) : 0;
 }

@@ -1,6 +1,7 @@
 # A run that must end stable: -DPROGRAM= -DOUT= [-DWARNING=OFF]
 # Checked: exit code 0, "verdict": "stable" in summary.json, and every value in every CSV
 # file finite (no nan or inf written); with WARNING=OFF, no fixed-dt warning either.
+file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${PROGRAM} --quiet --out ${OUT} RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "exit code ${rc} (expected 0); stderr:\n${err}")

@@ -110,6 +110,21 @@ static void test_checkpoints(void)
           "defaults: no checkpoints, no restart");
 }
 
+static void test_outputs(void)
+{
+    printf("--overwrite, --progress T (0: none; default 10 s)\n");
+    sph_options o;
+    const char *args[] = {"--overwrite", "--progress", "0.5", NULL};
+    CHECK(parse(&o, args, out, err, sizeof out) == 0, "returns 0 (stderr: %s)", err);
+    CHECK(o.overwrite == 1 && o.progress == 0.5, "overwrite, progress 0.5");
+    const char *none[] = {"--progress=0", NULL};
+    CHECK(parse(&o, none, out, err, sizeof out) == 0 && o.progress == 0 && !o.overwrite,
+          "--progress=0; no --overwrite");
+    const char *defaults[] = {NULL};
+    CHECK(parse(&o, defaults, out, err, sizeof out) == 0 && o.progress == 10,
+          "progress 10 by default");
+}
+
 static void test_equals_spelling(void)
 {
     printf("--opt=value spellings; a later option wins\n");
@@ -151,6 +166,8 @@ static void test_errors(void)
         {"--out="},            {"--quiet=1"},          {"--help=1"},
         {"--outdir", "x"},     {"--end", "1s"},        {"-hx"},
         {"--checkpoint", "0"}, {"--checkpoint"},       {"--restart="},
+        {"--progress", "-1"},  {"--progress"},         {"--overwrite=1"},
+        {"--restart", "a/checkpoint.bin", "--overwrite"},
     };
     int ncases = (int)(sizeof cases / sizeof cases[0]);
     for (int c = 0; c < ncases; c++) {
@@ -171,6 +188,7 @@ int main(void)
     test_defaults();
     test_separate_values();
     test_checkpoints();
+    test_outputs();
     test_equals_spelling();
     test_help();
     test_errors();
