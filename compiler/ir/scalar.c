@@ -140,6 +140,11 @@ static const ArithOp ARITH[] = {
     [SN_NOT] = AR_NOT,
 };
 
+double sg_apply(SnOp op, double x, double y)
+{
+    return op == SN_NEG || op == SN_NOT ? arith_unary(ARITH[op], x) : arith_binary(ARITH[op], x, y);
+}
+
 static int commutative(SnOp op)
 {
     return op == SN_ADD || op == SN_MUL || op == SN_MIN || op == SN_MAX || op == SN_EQ ||

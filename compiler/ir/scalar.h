@@ -61,6 +61,21 @@ int sg_ext(SGraph *g, const char *fn, const int *args, int nargs, int nout);
 int sg_part(SGraph *g, int ext, int k);
 
 int sg_is_const(const SGraph *g, int id, double *v);
+/* The value of arithmetic node op for operand values x (and y): the folding arithmetic. */
+double sg_apply(SnOp op, double x, double y);
+
+/* The values of nodes 0 .. upto (into val[0 .. upto]): an input is input(name, index, ctx),
+ * a law parameter params[index] (NaN without params), a runtime routine's outputs NaN (not
+ * evaluated in the compiler).  A reference interpreter of the graph (scalar_eval.c). */
+typedef double (*SgInput)(const char *name, int index, void *ctx);
+void sg_eval(const SGraph *g, int upto, SgInput input, void *ctx, const double *params,
+             double *val);
+
+/* Reverse-mode derivatives of node y with respect to nodes x[0 .. n-1] (inputs, usually),
+ * built into the graph (so folded and shared as any node) into dydx: the derivative of the
+ * branch taken for select, min, max and abs, 0 for comparisons.  Returns 0, or -1 when y
+ * depends on a node the rules do not cover (a runtime routine, SN_EXT).  derivative.c. */
+int sg_derivatives(SGraph *g, int y, const int *x, int n, int *dydx);
 
 /* The first constant the roots need that is not finite (a division by zero folded, ...),
  * or -1. */

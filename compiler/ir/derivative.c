@@ -1,0 +1,113 @@
+/* derivative.c — symbolic derivatives in the scalar graph, by reverse accumulation.
+ *
+ * The adjoint of node y is 1; going down the nodes (an operand is always older than its
+ * node, so descending ids are a reverse topological order), each node with an adjoint adds
+ * its share to its operands' by the chain rule.  The adjoints are graph nodes, built with
+ * the same folding and hash-consing as the law itself: x * 0 vanishes, a factor shared by
+ * several entries is computed once. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "lang/builtins.h"
+#include "scalar.h"
+
+static int add(SGraph *g, int a, int b) { return sg_binary(g, SN_ADD, a, b); }
+static int mul(SGraph *g, int a, int b) { return sg_binary(g, SN_MUL, a, b); }
+static int divide(SGraph *g, int a, int b) { return sg_binary(g, SN_DIV, a, b); }
+static int num(SGraph *g, double v) { return sg_const(g, v); }
+
+/* adj[k] += term */
+static void accumulate(SGraph *g, int *adj, int k, int term)
+{
+    adj[k] = adj[k] < 0 ? term : add(g, adj[k], term);
+}
+
+/* d f(a) / da of built-in f at a, whose value is node id; -1 for a function without a rule. */
+static int call_rule(SGraph *g, int fn, int a, int id)
+{
+    switch (fn) {
+    case BI_sin: return sg_call(g, BI_cos, a);
+    case BI_cos: return sg_unary(g, SN_NEG, sg_call(g, BI_sin, a));
+    case BI_tan: return add(g, num(g, 1), mul(g, id, id));          /* 1 + tan^2 */
+    case BI_sinh: return sg_call(g, BI_cosh, a);
+    case BI_cosh: return sg_call(g, BI_sinh, a);
+    case BI_tanh: return sg_binary(g, SN_SUB, num(g, 1), mul(g, id, id));
+    case BI_sqrt: return divide(g, num(g, 0.5), id);
+    case BI_log: return divide(g, num(g, 1 / log(10.0)), a);       /* log10 */
+    case BI_ln: return divide(g, num(g, 1), a);
+    case BI_exp: return id;
+    case BI_abs: return sg_select(g, sg_binary(g, SN_LT, a, num(g, 0)), num(g, -1), num(g, 1));
+    default: return -1;
+    }
+}
+
+/* The shares of node s (value: node id) with adjoint d, added to its operands'. */
+static int propagate(SGraph *g, SNode s, int id, int d, int *adj)
+{
+    const int zero = num(g, 0);
+    switch (s.op) {
+    case SN_ADD:
+        accumulate(g, adj, s.a, d), accumulate(g, adj, s.b, d);
+        return 0;
+    case SN_SUB:
+        accumulate(g, adj, s.a, d), accumulate(g, adj, s.b, sg_unary(g, SN_NEG, d));
+        return 0;
+    case SN_MUL:
+        accumulate(g, adj, s.a, mul(g, d, s.b)), accumulate(g, adj, s.b, mul(g, d, s.a));
+        return 0;
+    case SN_DIV: /* d(a/b) = da / b - (a/b) db / b */
+        accumulate(g, adj, s.a, divide(g, d, s.b));
+        accumulate(g, adj, s.b, sg_unary(g, SN_NEG, divide(g, mul(g, d, id), s.b)));
+        return 0;
+    case SN_NEG:
+        accumulate(g, adj, s.a, sg_unary(g, SN_NEG, d));
+        return 0;
+    case SN_POW: { /* d(a^b) = b a^(b-1) da + a^b ln(a) db */
+        double e;
+        const int bm1 = sg_binary(g, SN_SUB, s.b, num(g, 1));
+        accumulate(g, adj, s.a, mul(g, d, mul(g, s.b, sg_binary(g, SN_POW, s.a, bm1))));
+        if (!sg_is_const(g, s.b, &e))
+            accumulate(g, adj, s.b, mul(g, d, mul(g, id, sg_call(g, BI_ln, s.a))));
+        return 0;
+    }
+    case SN_MIN:
+    case SN_MAX: { /* the branch taken: a where a <= b (min), a >= b (max) */
+        const int takes_a = sg_binary(g, s.op == SN_MIN ? SN_LE : SN_GE, s.a, s.b);
+        accumulate(g, adj, s.a, sg_select(g, takes_a, d, zero));
+        accumulate(g, adj, s.b, sg_select(g, takes_a, zero, d));
+        return 0;
+    }
+    case SN_SELECT:
+        accumulate(g, adj, s.b, sg_select(g, s.a, d, zero));
+        accumulate(g, adj, s.c, sg_select(g, s.a, zero, d));
+        return 0;
+    case SN_CALL: {
+        const int r = call_rule(g, s.fn, s.a, id);
+        if (r < 0)
+            return -1;
+        accumulate(g, adj, s.a, mul(g, d, r));
+        return 0;
+    }
+    case SN_EXT:
+    case SN_PART:
+        return -1;
+    default: /* constants, inputs, parameters; comparisons and logic are flat */
+        return 0;
+    }
+}
+
+int sg_derivatives(SGraph *g, int y, const int *x, int n, int *dydx)
+{
+    int *adj = malloc((size_t)(y + 1) * sizeof *adj);
+    for (int k = 0; k <= y; k++)
+        adj[k] = -1;
+    adj[y] = num(g, 1);
+    int bad = 0;
+    for (int id = y; id >= 0 && !bad; id--)
+        if (adj[id] >= 0)
+            bad = propagate(g, g->nodes[id], id, adj[id], adj) != 0; /* a copy: g grows */
+    for (int k = 0; k < n; k++)
+        dydx[k] = x[k] <= y && adj[x[k]] >= 0 ? adj[x[k]] : num(g, 0);
+    free(adj);
+    return bad ? -1 : 0;
+}

@@ -1,0 +1,26 @@
+/* scalar_eval.c — the scalar graph evaluated with numbers: the reference the compiler checks
+ * a derived quantity against (and the tests, a derivative against finite differences). */
+#include <math.h>
+
+#include "lang/builtins.h"
+#include "scalar.h"
+
+void sg_eval(const SGraph *g, int upto, SgInput input, void *ctx, const double *params,
+             double *val)
+{
+    for (int id = 0; id <= upto && id < g->n; id++) {
+        const SNode *s = &g->nodes[id];
+        switch (s->op) {
+        case SN_CONST: val[id] = s->v; break;
+        case SN_INPUT: val[id] = input(s->name, (int)s->v, ctx); break;
+        case SN_PARAM: val[id] = params ? params[(int)s->v] : NAN; break;
+        case SN_NEG:
+        case SN_NOT: val[id] = sg_apply(s->op, val[s->a], 0); break;
+        case SN_CALL: val[id] = builtin_value(s->fn, &val[s->a]); break;
+        case SN_SELECT: val[id] = val[s->a] != 0.0 ? val[s->b] : val[s->c]; break;
+        case SN_EXT:
+        case SN_PART: val[id] = NAN; break;
+        default: val[id] = sg_apply(s->op, val[s->a], val[s->b]); break;
+        }
+    }
+}
