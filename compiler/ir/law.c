@@ -33,6 +33,7 @@ typedef struct {
     Binding *env;
     int nenv, capenv;
     int has_stress, has_energy;
+    int energy_line;   /* the line of the law's (not the tension block's) energy */
     int want_tension;  /* evaluate the tension block (fracture) */
     int in_tension;    /* inside it: stress and energy are S+ and psi+ */
     int in_if;         /* inside an if block: only let and assignments */
@@ -636,6 +637,8 @@ static int statement(Law *L, const MatStmt *s)
         if (!ok(v))
             return -1;
         *(L->in_tension ? &L->out.psip : &L->out.psi) = v.s;
+        if (!L->in_tension)
+            L->energy_line = s->loc.line;
         bind(L, s->name, v);
         return 0;
     case MS_BLOCK:
@@ -657,12 +660,14 @@ static int statement(Law *L, const MatStmt *s)
     return -1;
 }
 
-static void bind_F(Law *L, int dim)
+/* F as the law's input; in 2D its out-of-plane entries are constants (folded away), unless
+ * the law's stress is to be derived, which needs every entry as a variable. */
+static void bind_F(Law *L, int dim, int all_inputs)
 {
     Val F = {1, -1, {0}};
     for (int k = 0; k < 9; k++) {
         int r = k / 3, c = k % 3;
-        int out_of_plane = dim == 2 && (r == 1 || c == 1);
+        int out_of_plane = dim == 2 && !all_inputs && (r == 1 || c == 1);
         F.t[k] = out_of_plane ? sg_const(L->g, r == c ? 1.0 : 0.0)
                               : sg_input(L->g, LAW_INPUT_F, k);
     }
@@ -679,6 +684,59 @@ static void degrade(SGraph *g, LawRoots *r)
                              sg_binary(g, SN_SUB, r->S[k], r->Sp[k]));
     r->psid = sg_binary(g, SN_ADD, sg_binary(g, SN_MUL, s2, r->psip),
                         sg_binary(g, SN_SUB, r->psi, r->psip));
+}
+
+/* Whether the law writes its stress (at its top level: not in an if block, nor in the
+ * tension block). */
+static int writes_stress(const MaterialDef *law)
+{
+    for (int i = 0; i < law->body.n; i++)
+        if (law->body.items[i].kind == MS_STRESS)
+            return 1;
+    return 0;
+}
+
+/* The plane-strain constants of a 2D F put for its out-of-plane inputs, once the derivatives
+ * with respect to them are taken. */
+static int plane_strain_entry(const SNode *s, void *ctx)
+{
+    SGraph *g = ctx;
+    const int k = (int)s->v, r = k / 3, c = k % 3;
+    if (strcmp(s->name, LAW_INPUT_F) || !(r == 1 || c == 1))
+        return -1;
+    return sg_const(g, r == c ? 1.0 : 0.0);
+}
+
+/* S = F^-1 dpsi/dF: the stress of a law that gives only its energy (a hyperelastic law is its
+ * strain energy; P = dpsi/dF, S = F^-1 P).  The derivatives stand under the energy's line. */
+static int derive_stress(Law *L, int dim)
+{
+    if (L->out.nstates) {
+        diag_error(L->law->loc, "material '%s' has state: write its stress (the derivative of "
+                   "its energy would also differentiate the state's update)", L->law->name);
+        return -1;
+    }
+    const Val F = find_binding(L, "F")->v;
+    int P[9];
+    L->g->line = L->energy_line;
+    if (sg_derivatives(L->g, L->out.psi, F.t, 9, P)) {
+        diag_error(L->law->loc, "material '%s': its energy uses pos or neg, whose derivative "
+                   "sphc does not take yet; write its stress", L->law->name);
+        return -1;
+    }
+    Val Pv = {1, -1, {0}};
+    memcpy(Pv.t, P, sizeof P);
+    Val S = t_matmul(L, t_inverse(L, F), Pv);
+    memcpy(L->out.S, S.t, sizeof S.t);
+    if (dim != 2)
+        return 0;
+    int roots[10], folded[10];
+    memcpy(roots, L->out.S, sizeof L->out.S);
+    roots[9] = L->out.psi;
+    sg_substitute(L->g, roots, 10, plane_strain_entry, L->g, folded);
+    memcpy(L->out.S, folded, sizeof L->out.S);
+    L->out.psi = folded[9];
+    return 0;
 }
 
 /* A constant that is not finite in what the law computes (a division by zero, the inverse
@@ -726,16 +784,14 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *p
     L.params = params;
     L.g->line = law->loc.line;
     L.g->file = law->loc.file;
-    bind_F(&L, dim);
+    const int derived = !writes_stress(law);
+    bind_F(&L, dim, derived);
     int bad = 0;
     for (int i = 0; i < law->body.n; i++)
         bad |= statement(&L, &law->body.items[i]) != 0;
-    if (!bad && !(L.has_stress & 1)) {
-        diag_error(law->loc, "material '%s' defines no 'stress'", law->name);
-        bad = 1;
-    }
     if (!bad && !(L.has_energy & 1)) {
-        diag_error(law->loc, "material '%s' defines no 'energy'", law->name);
+        diag_error(law->loc, "material '%s' defines no 'energy'%s", law->name,
+                   derived ? " (nor 'stress')" : "");
         bad = 1;
     }
     for (int v = 0; !bad && v < L.out.nstates; v++) { /* the state's values at the end */
@@ -744,6 +800,8 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *p
         for (int k = 0; k < st->size; k++)
             L.out.next[st->offset + k] = st->size == 1 ? end.s : end.t[k];
     }
+    if (!bad && derived)
+        bad = derive_stress(&L, dim) != 0;
     free(L.env);
     if (!bad && L.out.has_tension) {
         L.g->line = law->loc.line; /* the degradation is the law's as a whole */

@@ -373,6 +373,54 @@ static void mark_live(const SGraph *g, const int *roots, int nroots, char *live)
     }
 }
 
+int sg_substitute(SGraph *g, const int *roots, int nroots, int (*input)(const SNode *, void *),
+                  void *ctx, int *out)
+{
+    const int n = g->n;
+    char *live = calloc((size_t)n + 1, 1);
+    int *map = malloc((size_t)(n + 1) * sizeof *map);
+    mark_live(g, roots, nroots, live);
+    const int line = g->line;
+    const char *file = g->file;
+    for (int id = 0; id < n; id++) {
+        if (!live[id])
+            continue;
+        const SNode s = g->nodes[id]; /* a copy: the graph grows */
+        const int a = s.a >= 0 && s.op != SN_EXT ? map[s.a] : s.a, b = s.b >= 0 && s.op != SN_EXT ? map[s.b] : s.b;
+        g->line = s.line, g->file = s.file; /* the rebuilt node keeps its model line */
+        int r = id;
+        switch (s.op) {
+        case SN_INPUT: {
+            const int k = input(&s, ctx);
+            r = k >= 0 ? k : id;
+            break;
+        }
+        case SN_CONST:
+        case SN_PARAM: break;
+        case SN_NEG:
+        case SN_NOT: r = sg_unary(g, s.op, a); break;
+        case SN_CALL: r = sg_call(g, s.fn, a); break;
+        case SN_SELECT: r = sg_select(g, a, b, map[s.c]); break;
+        case SN_EXT: {
+            int args[SG_MAX_ARGS];
+            for (int k = 0; k < s.nargs; k++)
+                args[k] = map[s.args[k]];
+            r = sg_ext(g, s.name, args, s.nargs, s.b);
+            break;
+        }
+        case SN_PART: r = sg_part(g, a, (int)s.v); break;
+        default: r = sg_binary(g, s.op, a, b); break;
+        }
+        map[id] = r;
+    }
+    for (int k = 0; k < nroots; k++)
+        out[k] = roots[k] >= 0 ? map[roots[k]] : roots[k];
+    g->line = line, g->file = file;
+    free(map);
+    free(live);
+    return 0;
+}
+
 int sg_first_nonfinite(const SGraph *g, const int *roots, int nroots)
 {
     char *live = calloc((size_t)g->n + 1, 1);

@@ -71,6 +71,12 @@ typedef double (*SgInput)(const char *name, int index, void *ctx);
 void sg_eval(const SGraph *g, int upto, SgInput input, void *ctx, const double *params,
              double *val);
 
+/* The roots rebuilt (into out) with some inputs replaced: input(node) gives the node that
+ * replaces an input, or -1 to keep it.  The rebuilt nodes are folded again (a constant
+ * put for an input folds away what it zeroes); the old ones stay, dead. */
+int sg_substitute(SGraph *g, const int *roots, int nroots, int (*input)(const SNode *, void *),
+                  void *ctx, int *out);
+
 /* Reverse-mode derivatives of node y with respect to nodes x[0 .. n-1] (inputs, usually),
  * built into the graph (so folded and shared as any node) into dydx: the derivative of the
  * branch taken for select, min, max and abs, 0 for comparisons.  Returns 0, or -1 when y
