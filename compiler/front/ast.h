@@ -77,7 +77,7 @@ typedef struct {
 typedef enum {
     MS_LET,    /* let name = expr                        */
     MS_STRESS, /* stress name = expr   (2nd Piola-Kirchhoff) */
-    MS_ENERGY, /* energy name = expr   (strain energy density) */
+    MS_ENERGY, /* energy name = expr   (strain energy density); energy name(C) = expr */
     MS_STATE,  /* state name = expr    (per-particle state, its initial value) */
     MS_IF,     /* if cond { body } else { orelse }        */
     MS_BLOCK,  /* named block, e.g. tension { ... }       */
@@ -99,6 +99,7 @@ struct MatStmt {
     MatStmtList body;  /* IF then-part, BLOCK contents */
     MatStmtList orelse;/* IF else-part */
     int depth;         /* levels of blocks from here down: 1 for a statement without */
+    char *of;          /* ENERGY: the variable it is a function of (C or E), or NULL */
 };
 
 typedef struct {
@@ -249,6 +250,9 @@ void ast_push_name(char ***arr, SrcLoc **locs, int *n, const char *name, SrcLoc 
 /* Parse a model file into prog (appending its items).  Returns the number of
  * errors reported (0 on success).  Errors go to stderr as file:line:col. */
 int parse_file(const char *path, Program *prog);
+/* Forget the names parse_file interned (their table, not the names): for a program that
+ * parses many models in one process and frees each tree before the next. */
+void lex_forget_names(void);
 
 /* Print the tree (sphc --dump=ast). */
 void ast_dump(const Program *p, FILE *out);

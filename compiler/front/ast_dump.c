@@ -124,7 +124,8 @@ static void dump_matstmt(const MatStmt *m, FILE *out, int depth)
     case MS_STRESS:
     case MS_ENERGY:
     case MS_STATE:
-        fprintf(out, "(%s %s ", words[m->kind], m->name);
+        fprintf(out, "(%s %s%s%s%s ", words[m->kind], m->name, m->of ? "(" : "",
+                m->of ? m->of : "", m->of ? ")" : "");
         ast_dump_expr(m->value, out);
         fputc(')', out);
         break;

@@ -429,6 +429,9 @@ matstmt
     : LET IDENT '=' expr                { $$ = ast_matstmt(MS_LET, LOC(@2), $2, $4); }
     | STRESS IDENT '=' expr             { $$ = ast_matstmt(MS_STRESS, LOC(@2), $2, $4); }
     | ENERGY IDENT '=' expr             { $$ = ast_matstmt(MS_ENERGY, LOC(@2), $2, $4); }
+    | ENERGY IDENT '(' IDENT ')' '=' expr
+                                        { $$ = ast_matstmt(MS_ENERGY, LOC(@2), $2, $7);
+                                          $$.of = ast_strdup($4); }
     | STATE IDENT '=' expr              { $$ = ast_matstmt(MS_STATE, LOC(@2), $2, $4); }
     | IF expr '{' matstmts '}' else_opt { $$ = ast_matstmt(MS_IF, LOC(@1), NULL, $2);
                                           $$.body = $4; $$.orelse = $6;

@@ -296,7 +296,8 @@ static void print_stmt(const MatStmt *s, int depth, FILE *out)
     fprintf(out, "%*s", 2 * depth, "");
     switch (s->kind) {
     case MS_LET: case MS_STRESS: case MS_ENERGY: case MS_STATE:
-        fprintf(out, "%s %s = ", words[s->kind], s->name);
+        fprintf(out, "%s %s%s%s%s = ", words[s->kind], s->name, s->of ? "(" : "",
+                s->of ? s->of : "", s->of ? ")" : "");
         sph_print_expr(s->value, out);
         fputc('\n', out);
         return;

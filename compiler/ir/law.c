@@ -34,6 +34,8 @@ typedef struct {
     int nenv, capenv;
     int has_stress, has_energy;
     int energy_line;   /* the line of the law's (not the tension block's) energy */
+    const char *of;    /* the energy is a function of C or E (bound instead of F), or NULL */
+    Val var;           /* its variables (symmetric_variable) */
     int want_tension;  /* evaluate the tension block (fracture) */
     int in_tension;    /* inside it: stress and energy are S+ and psi+ */
     int in_if;         /* inside an if block: only let and assignments */
@@ -194,7 +196,10 @@ static Val lookup(Law *L, const Expr *e)
     double v;
     if (eval_expr(L->m, e, NULL, &v) == EVAL_OK)
         return scalar(sg_const(L->g, v));
-    if (builtin_variable(e->name) >= 0)
+    if (L->of && !strcmp(e->name, "F"))
+        diag_error(e->loc, "material '%s' gives its energy as a function of %s: write it with "
+                   "%s, not F (J = sqrt(det(C)))", L->law->name, L->of, L->of);
+    else if (builtin_variable(e->name) >= 0)
         diag_error(e->loc, "'%s' is a particle variable and cannot be used in a material law",
                    e->name);
     else
@@ -662,7 +667,7 @@ static int statement(Law *L, const MatStmt *s)
 
 /* F as the law's input; in 2D its out-of-plane entries are constants (folded away), unless
  * the law's stress is to be derived, which needs every entry as a variable. */
-static void bind_F(Law *L, int dim, int all_inputs)
+static Val F_value(Law *L, int dim, int all_inputs)
 {
     Val F = {1, -1, {0}};
     for (int k = 0; k < 9; k++) {
@@ -671,7 +676,20 @@ static void bind_F(Law *L, int dim, int all_inputs)
         F.t[k] = out_of_plane ? sg_const(L->g, r == c ? 1.0 : 0.0)
                               : sg_input(L->g, LAW_INPUT_F, k);
     }
-    bind(L, "F", F);
+    return F;
+}
+
+/* energy psi(C) or psi(E): the law sees a symmetric C (or E) of six variables instead of F;
+ * its derivatives give S, then C = F^T F (E = (C - I) / 2) is put in (variables_to_F). */
+static Val symmetric_variable(Law *L, const char *name)
+{
+    Val v = {1, -1, {0}};
+    for (int k = 0; k < 9; k++) {
+        const int r = k / 3, c = k % 3;
+        v.t[k] = sg_input(L->g, !strcmp(name, "C") ? LAW_INPUT_C : LAW_INPUT_E,
+                          r <= c ? k : c * 3 + r);
+    }
+    return v;
 }
 
 /* S = s^2 S+ + (S - S+) (eq. 18), psi = s^2 psi+ + (psi - psi+) (eq. 7). */
@@ -716,13 +734,20 @@ static int derive_stress(Law *L, int dim)
                    "its energy would also differentiate the state's update)", L->law->name);
         return -1;
     }
-    const Val F = find_binding(L, "F")->v;
+    const Val F = L->of ? L->var : find_binding(L, "F")->v;
     int P[9];
     L->g->line = L->energy_line;
     if (sg_derivatives(L->g, L->out.psi, F.t, 9, P)) {
         diag_error(L->law->loc, "material '%s': its energy uses pos or neg, whose derivative "
                    "sphc does not take yet; write its stress", L->law->name);
         return -1;
+    }
+    if (L->of) { /* S = 2 dpsi/dC or dpsi/dE; an off-diagonal variable stands for two entries */
+        const double diag = !strcmp(L->of, "C") ? 2.0 : 1.0;
+        for (int k = 0; k < 9; k++)
+            L->out.S[k] = sg_binary(L->g, SN_MUL, sg_const(L->g, k % 4 ? 0.5 * diag : diag),
+                                    P[k / 3 <= k % 3 ? k : (k % 3) * 3 + k / 3]);
+        return 0;
     }
     Val Pv = {1, -1, {0}};
     memcpy(Pv.t, P, sizeof P);
@@ -737,6 +762,55 @@ static int derive_stress(Law *L, int dim)
     memcpy(L->out.S, folded, sizeof L->out.S);
     L->out.psi = folded[9];
     return 0;
+}
+
+/* The variable the law's energy is a function of (energy psi(C) or psi(E)), or NULL; "" after
+ * reporting another. */
+static const char *energy_variable(const MaterialDef *law)
+{
+    for (int i = 0; i < law->body.n; i++) {
+        const MatStmt *s = &law->body.items[i];
+        if (s->kind != MS_ENERGY || !s->of)
+            continue;
+        if (!strcmp(s->of, "C") || !strcmp(s->of, "E"))
+            return s->of;
+        diag_error(s->loc, "energy %s(%s): an energy is a function of C (= F^T F) or E "
+                   "(= (C - I) / 2)", s->name, s->of);
+        return "";
+    }
+    return NULL;
+}
+
+/* C (or E) of F put for the law's symmetric variables, in every result. */
+static int input_of_F(const SNode *s, void *ctx)
+{
+    const Val *v = ctx;
+    return !strcmp(s->name, LAW_INPUT_C) || !strcmp(s->name, LAW_INPUT_E) ? v->t[(int)s->v] : -1;
+}
+
+static void variables_to_F(Law *L, int dim)
+{
+    Val F = F_value(L, dim, 0);
+    L->g->line = L->energy_line;
+    Val v = t_matmul(L, t_transpose(F), F);
+    if (!strcmp(L->of, "E"))
+        v = t_map2(L, SN_MUL, t_map2(L, SN_SUB, v, identity(L)), scalar(sg_const(L->g, 0.5)));
+    LawRoots *r = &L->out;
+    int roots[3 * 9 + 3 + LAW_MAX_SLOTS], n = 0;
+    int *slots[3 * 9 + 3 + LAW_MAX_SLOTS];
+    for (int k = 0; k < 9; k++)
+        slots[n] = &r->S[k], roots[n++] = r->S[k];
+    slots[n] = &r->psi, roots[n++] = r->psi;
+    for (int k = 0; k < r->nslots; k++)
+        slots[n] = &r->next[k], roots[n++] = r->next[k];
+    for (int k = 0; r->has_tension && k < 9; k++)
+        slots[n] = &r->Sp[k], roots[n++] = r->Sp[k];
+    if (r->has_tension)
+        slots[n] = &r->psip, roots[n++] = r->psip;
+    int out[3 * 9 + 3 + LAW_MAX_SLOTS];
+    sg_substitute(L->g, roots, n, input_of_F, &v, out);
+    for (int k = 0; k < n; k++)
+        *slots[k] = out[k];
 }
 
 /* A constant that is not finite in what the law computes (a division by zero, the inverse
@@ -785,7 +859,13 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *p
     L.g->line = law->loc.line;
     L.g->file = law->loc.file;
     const int derived = !writes_stress(law);
-    bind_F(&L, dim, derived);
+    L.of = energy_variable(law);
+    if (L.of && !*L.of)
+        return -1;
+    if (L.of)
+        bind(&L, L.of, L.var = symmetric_variable(&L, L.of));
+    else
+        bind(&L, "F", F_value(&L, dim, derived));
     int bad = 0;
     for (int i = 0; i < law->body.n; i++)
         bad |= statement(&L, &law->body.items[i]) != 0;
@@ -802,6 +882,8 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *p
     }
     if (!bad && derived)
         bad = derive_stress(&L, dim) != 0;
+    if (!bad && L.of)
+        variables_to_F(&L, dim);
     free(L.env);
     if (!bad && L.out.has_tension) {
         L.g->line = law->loc.line; /* the degradation is the law's as a whole */

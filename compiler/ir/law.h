@@ -45,5 +45,8 @@ int law_check(const Model *m, const MaterialDef *law);
 #define LAW_INPUT_F "F"
 #define LAW_INPUT_S "s"
 #define LAW_INPUT_STATE "st"
+/* The variables of an energy given as psi(C) or psi(E), replaced by F's before emission. */
+#define LAW_INPUT_C "C"
+#define LAW_INPUT_E "E"
 
 #endif

@@ -37,5 +37,11 @@ int main(void)
                 worst_difference(svk_hand_material, svk_derived_material), 0, 1e-9);
     check_close("neo-Hookean: derived S, psi vs hand-written (relative)",
                 worst_difference(nh_hand_material, nh_derived_material), 0, 1e-9);
+    check_close("svk as psi(C): S = 2 dpsi/dC vs hand-written (relative)",
+                worst_difference(svk_hand_material, svk_of_c_material), 0, 1e-9);
+    check_close("svk as psi(E): S = dpsi/dE vs hand-written (relative)",
+                worst_difference(svk_hand_material, svk_of_e_material), 0, 1e-9);
+    check_close("neo-Hookean as psi(C): S = 2 dpsi/dC vs hand-written (relative)",
+                worst_difference(nh_hand_material, nh_of_c_material), 0, 1e-9);
     return check_result();
 }
