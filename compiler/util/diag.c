@@ -20,6 +20,7 @@ enum { MAX_ERRORS = 50 };
 
 static int n_errors;
 static int n_warnings;
+static void (*stop_handler)(void);
 
 /* Line `line` (1-based) of `path` in a malloc'ed string without its line terminator, or
  * NULL. */
@@ -89,6 +90,8 @@ void diag_error(SrcLoc loc, const char *fmt, ...)
     if (++n_errors < MAX_ERRORS)
         return;
     fprintf(stderr, "sphc: error: too many errors (%d), stopping\n", n_errors);
+    if (stop_handler)
+        stop_handler();
     exit(1);
 }
 
@@ -130,4 +133,9 @@ void diag_reset(void)
 {
     n_errors = 0;
     n_warnings = 0;
+}
+
+void diag_set_stop(void (*handler)(void))
+{
+    stop_handler = handler;
 }

@@ -19,4 +19,9 @@ void diag_fatal_noloc(const char *fmt, ...) __attribute__((format(printf, 1, 2))
 int diag_error_count(void);
 void diag_reset(void);
 
+/* After too many errors the run stops: exit(1), or the handler set here, which must not
+ * return (a program that runs the stages in-process, like the fuzz targets, longjmps back
+ * to its own loop); NULL restores exit(1). */
+void diag_set_stop(void (*handler)(void));
+
 #endif

@@ -59,6 +59,18 @@ static const SourceFile *source_file(const char *path)
     return f;
 }
 
+void source_forget(void)
+{
+    for (int i = 0; i < nfiles; i++) {
+        free(files[i].path);
+        free(files[i].text);
+        free(files[i].starts);
+    }
+    free(files);
+    files = NULL;
+    nfiles = 0;
+}
+
 const char *source_line(const char *path, int line, size_t *len)
 {
     const SourceFile *f = path ? source_file(path) : NULL;

@@ -14,6 +14,9 @@ typedef struct {
  * terminator; NULL when the file cannot be read or has no such line.  Each file is read
  * once. */
 const char *source_line(const char *path, int line, size_t *len);
+/* Forget the files read so far (a program that checks many models in one process, each
+ * written to the same path, reads each anew). */
+void source_forget(void);
 /* The text of line `line` of `file`, leading and trailing blanks removed, with any
  * comment terminator made harmless; "" when unavailable.  Points to a static buffer. */
 const char *source_line_trimmed(const char *file, int line);
