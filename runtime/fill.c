@@ -24,6 +24,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "internal.h"
+#include "sph_limits.h"
 
 /* The lattice: box minimum, spacing, points and tiles per compact component. */
 typedef struct {
@@ -32,11 +33,11 @@ typedef struct {
     long nk[3], nt[3], ntiles, tile_pts;
 } lattice;
 
-/* The most lattice points a body's bounding box may hold (particle indices are ints). */
-#define MAX_LATTICE_POINTS 2e9
+/* The most lattice points a body's bounding box may hold (particle indices are ints):
+ * SPH_MAX_LATTICE_POINTS, sph_limits.h. */
 
 /* Sets up the lattice of region r; returns 0 when it is empty or invalid, -1 when it holds
- * more than MAX_LATTICE_POINTS points (about *total). */
+ * more than SPH_MAX_LATTICE_POINTS points (about *total). */
 static int lattice_init(lattice *L, const sph_region *r, int dim, double dx, double y_plane,
                         double *total)
 {
@@ -50,7 +51,7 @@ static int lattice_init(lattice *L, const sph_region *r, int dim, double dx, dou
             return 0;
         *total *= fmax(ext, 1.0);
     }
-    if (!(*total < MAX_LATTICE_POINTS))
+    if (!(*total < SPH_MAX_LATTICE_POINTS))
         return -1;
     L->dim = dim;
     L->dx = dx;
@@ -87,7 +88,7 @@ static int lattice_init(lattice *L, const sph_region *r, int dim, double dx, dou
         L->tile_pts *= c < dim ? L->tile : 1;
         *total *= (double)L->nk[c];
     }
-    return *total < MAX_LATTICE_POINTS ? 1 : -1;
+    return *total < SPH_MAX_LATTICE_POINTS ? 1 : -1;
 }
 
 /* Lattice point number l of tile t: sets p (3D coordinates); 0 when outside the lattice. */
@@ -131,7 +132,7 @@ int sph_fill_region(const sph_region *r, int dim, double dx, double y_plane, dou
     if (ok < 0) {
         sph_error("at spacing dx = %g the region's bounding box holds some "
                   "%.3g lattice points, more than %.0e: raise dp or lower refine",
-                  dx, total, MAX_LATTICE_POINTS);
+                  dx, total, SPH_MAX_LATTICE_POINTS);
         return -1;
     }
     if (!ok)

@@ -1,6 +1,7 @@
 /* check_body.c — checking a body: its shape, material, settings, boundary conditions and
  * measurement planes. */
 #define _XOPEN_SOURCE 700 /* realpath */
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -11,6 +12,7 @@
 #include "util/diag.h"
 #include "util/source.h"
 #include "mesh.h"
+#include "sph_limits.h"
 
 /* ------------------------------------------------------------------ shapes */
 
@@ -760,6 +762,17 @@ static int region_fits(const Model *m, const BodyModel *b, SrcLoc loc)
         prim_box(&b->region.prims[k], plo, phi);
         for (int c = 0; c < 3; c++)
             lo[c] = fmin(lo[c], plo[c]), hi[c] = fmax(hi[c], phi[c]);
+    }
+    double cells = 1; /* the lattice points of the box around the body */
+    for (int c = 0; c < 3; c++)
+        if (!(m->dim == 2 && c == 1))
+            cells *= (hi[c] - lo[c]) / dx + 1;
+    if (!(cells <= SPH_MAX_LATTICE_POINTS)) {
+        diag_error(loc, "body '%s' spans %s%.3g lattice points of its spacing %g, more than the "
+                        "%.0e a program fills (make dp larger or refine smaller)",
+                   b->name, isfinite(cells) ? "some " : "more than ",
+                   isfinite(cells) ? cells : DBL_MAX, dx, SPH_MAX_LATTICE_POINTS);
+        return -1;
     }
     for (int c = 0; c < 3; c++) {
         if (m->dim == 2 && c == 1) /* the x-z plane */
