@@ -84,7 +84,9 @@ typedef struct {
     energy_layout layout;
     energy_kind kind;
     int (*applies)(const sph_model *m, int i); /* body i; -1: the scene */
-    double (*value)(const sph_sim *s, int i);  /* NULL: the total */
+    /* NULL: the total; e holds each body's strain and kinetic energy (e[2i], e[2i+1]),
+     * from one pass over its particles */
+    double (*value)(const sph_sim *s, int i, const double *e);
 } energy_column;
 
 static int every(const sph_model *m, int i) { return (void)m, (void)i, 1; }
@@ -93,14 +95,7 @@ static int with_dissipation(const sph_model *m, int i) { return m->bodies[i].dis
 static int with_viscosity(const sph_model *m, int i) { return m->bodies[i].viscous; }
 static int with_contact(const sph_model *m, int i) { return (void)i, m->contact != NULL; }
 
-/* A body's strain (which 0) or kinetic (1) energy; the contacts' stored (0) or dissipated (1). */
-static double body_energy(const sph_sim *s, int i, int which)
-{
-    double e[2];
-    sph_body_energies(&s->bodies[i], &e[0], &e[1]);
-    return e[which];
-}
-
+/* The contacts' stored (which 0) or dissipated (1) energy. */
 static double contact_energy(const sph_sim *s, int which)
 {
     double e[2];
@@ -108,13 +103,28 @@ static double contact_energy(const sph_sim *s, int which)
     return e[which];
 }
 
-static double strain(const sph_sim *s, int i) { return body_energy(s, i, 0); }
-static double kinetic(const sph_sim *s, int i) { return body_energy(s, i, 1); }
-static double fracture(const sph_sim *s, int i) { return sph_fracture_energy(&s->bodies[i]); }
-static double plastic(const sph_sim *s, int i) { return sph_dissipated_energy(&s->bodies[i]); }
-static double viscous(const sph_sim *s, int i) { return s->bodies[i].visc_dissipated; }
-static double contact(const sph_sim *s, int i) { return (void)i, contact_energy(s, 0); }
-static double contact_lost(const sph_sim *s, int i) { return (void)i, contact_energy(s, 1); }
+static double strain(const sph_sim *s, int i, const double *e) { return (void)s, e[2 * i]; }
+static double kinetic(const sph_sim *s, int i, const double *e) { return (void)s, e[2 * i + 1]; }
+static double fracture(const sph_sim *s, int i, const double *e)
+{
+    return (void)e, sph_fracture_energy(&s->bodies[i]);
+}
+static double plastic(const sph_sim *s, int i, const double *e)
+{
+    return (void)e, sph_dissipated_energy(&s->bodies[i]);
+}
+static double viscous(const sph_sim *s, int i, const double *e)
+{
+    return (void)e, s->bodies[i].visc_dissipated;
+}
+static double contact(const sph_sim *s, int i, const double *e)
+{
+    return (void)i, (void)e, contact_energy(s, 0);
+}
+static double contact_lost(const sph_sim *s, int i, const double *e)
+{
+    return (void)i, (void)e, contact_energy(s, 1);
+}
 
 static const energy_column ENERGY_COLUMNS[] = {
     {"strain", BLOCK, HELD, every, strain},
@@ -231,10 +241,14 @@ static int record(run_state *r)
     int ncol;
     energy_slot *slot = energy_slots(r->m, &ncol);
     double *row = calloc((size_t)ncol + 1, sizeof(double)), total[2];
+    double *held = malloc(2 * (size_t)s->nbodies * sizeof *held);
+    for (int i = 0; i < s->nbodies; i++)
+        sph_body_energies(&s->bodies[i], &held[2 * i], &held[2 * i + 1]);
     row[0] = s->t;
     for (int k = 0; k < ncol; k++)
         if (slot[k].col->value)
-            row[1 + k] = slot[k].col->value(s, slot[k].body);
+            row[1 + k] = slot[k].col->value(s, slot[k].body, held);
+    free(held);
     energy_totals(slot, row + 1, ncol, s->nbodies, total);
     for (int k = 0; k < ncol; k++)
         if (slot[k].col->kind == TOTAL)
