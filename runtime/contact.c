@@ -44,6 +44,8 @@ struct sph_contact {
     double *x;         /* n*dim current positions */
     sph_csearch search;
     double stored, dissipated, w2max;
+    double *part;      /* 2 per block of active particles: its stored energy and power */
+    int nblocks;       /* (the blocks' sums added in order: the same bits on any threads) */
 };
 
 static sph_pair_law make_law(const sph_model *m, const sph_body *A, const sph_body *B)
@@ -128,21 +130,36 @@ void sph_contact_forces(sph_sim *s, double dt)
     gather(c, s);
     sph_csearch_update(&c->search, c->x);
     const sph_csearch *q = &c->search;
-    double stored = 0, power = 0, w2 = 0;
-#pragma omp parallel for schedule(dynamic, 32) reduction(+ : stored, power) reduction(max : w2)
-    for (int a = 0; a < q->nactive; a++) {
-        const int gi = q->active[a], bi = c->body[gi];
-        double fi[3] = {0, 0, 0}, f[3];
-        for (int p = q->start[gi]; p < q->start[gi + 1]; p++) {
-            pair_force(c, s, gi, q->nb[p], dt, f, &stored, &power, &w2);
-            for (int k = 0; k < c->dim; k++)
-                fi[k] += f[k];
-        }
-        sph_body *b = &s->bodies[bi];
-        double *acc = b->a + (size_t)(gi - c->base[bi]) * c->dim;
-        for (int k = 0; k < c->dim; k++)
-            acc[k] += fi[k] / b->mass;
+    enum { BLOCK = 32 };
+    const int nblocks = (q->nactive + BLOCK - 1) / BLOCK;
+    if (nblocks > c->nblocks) {
+        free(c->part);
+        c->part = malloc(2 * (size_t)nblocks * sizeof *c->part);
+        c->nblocks = nblocks;
     }
+    double w2 = 0;
+#pragma omp parallel for schedule(dynamic, 1) reduction(max : w2)
+    for (int blk = 0; blk < nblocks; blk++) {
+        const int end = q->nactive - blk * BLOCK < BLOCK ? q->nactive : (blk + 1) * BLOCK;
+        double stored = 0, power = 0;
+        for (int a = blk * BLOCK; a < end; a++) {
+            const int gi = q->active[a], bi = c->body[gi];
+            double fi[3] = {0, 0, 0}, f[3];
+            for (int p = q->start[gi]; p < q->start[gi + 1]; p++) {
+                pair_force(c, s, gi, q->nb[p], dt, f, &stored, &power, &w2);
+                for (int k = 0; k < c->dim; k++)
+                    fi[k] += f[k];
+            }
+            sph_body *b = &s->bodies[bi];
+            double *acc = b->a + (size_t)(gi - c->base[bi]) * c->dim;
+            for (int k = 0; k < c->dim; k++)
+                acc[k] += fi[k] / b->mass;
+        }
+        c->part[2 * blk] = stored, c->part[2 * blk + 1] = power;
+    }
+    double stored = 0, power = 0;
+    for (int blk = 0; blk < nblocks; blk++)
+        stored += c->part[2 * blk], power += c->part[2 * blk + 1];
     c->stored = stored;
     c->dissipated += power * dt;
     c->w2max = w2;
@@ -224,6 +241,7 @@ void sph_contact_free(sph_sim *s)
     free(c->dc);
     free(c->law);
     free(c->x);
+    free(c->part);
     free(c);
     s->contact = NULL;
 }

@@ -380,7 +380,7 @@ static int write_summary(run_state *r, const char *status, double wall, int *fai
     sph_json_str(&j, "source", r->m->source);
     sph_json_str(&j, "status", status);
     sph_json_int(&j, "dimension", r->m->dim);
-    sph_json_int(&j, "threads", omp_get_max_threads());
+    sph_json_int(&j, "threads", r->team.max);
     sph_json_int(&j, "particles", particles);
     sph_json_int(&j, "pairs", pairs);
     sph_json_int(&j, "steps", s->step);
@@ -401,6 +401,15 @@ static int write_summary(run_state *r, const char *status, double wall, int *fai
     sph_json_num(&j, "step_time", r->step_seconds);
     sph_json_num(&j, "check_time", r->check_seconds);
     sph_json_num(&j, "output_time", r->output_seconds);
+    const sph_team *team = &r->team; /* the threads the steps ran on (team.h) */
+    sph_json_key_object(&j, "team");
+    sph_json_bool(&j, "fixed", team->fixed);
+    sph_json_num(&j, "mean_threads",
+                 team->step_seconds > 0 ? team->thread_seconds / team->step_seconds : team->now);
+    sph_json_int(&j, "last_threads", team->now);
+    sph_json_int(&j, "trials", team->trials);
+    sph_json_int(&j, "changes", team->changes);
+    sph_json_end_object(&j);
     double ps = (double)particles * (double)s->step;
     sph_json_num(&j, "ns_per_particle_step", ps > 0 ? 1e9 * r->step_seconds / ps : NAN);
     sph_json_num(&j, "pair_interactions_per_second",
@@ -562,11 +571,23 @@ static int time_loop(run_state *r)
         sph_advance a = {.steps = CHECK_EVERY - (int)(s->step % CHECK_EVERY),
                          .t_stop = fmin(r->next_out, r->t_end),
                          .eps = eps, .floor_dt = floor_dt, .stop = &stop_signal};
+        const long batch = sph_team_batch(&r->team); /* (short while a count is tried) */
+        if (a.steps > batch)
+            a.steps = (int)batch;
+        const int threads = sph_team_threads(&r->team);
+        if (threads != omp_get_max_threads())
+            omp_set_num_threads(threads);
         double w0 = sph_wall_time();
+        const int watch = !r->team.fixed && r->team.max > 1; /* (team.h) */
+        const double cpu0 = sph_cpu_time(), idle0 = watch ? sph_idle_time() : -1;
         sph_profile_phase = SPH_PHASE_STEPS; /* (--profile) the passes from here on */
-        sph_sim_advance(s, &a);
+        const int steps = sph_sim_advance(s, &a);
         sph_profile_phase = SPH_PHASE_CHECKS;
-        r->step_seconds += sph_wall_time() - w0;
+        const double wall = sph_wall_time() - w0;
+        r->step_seconds += wall;
+        const double idle1 = idle0 < 0 ? -1 : sph_idle_time();
+        sph_team_after(&r->team, steps, wall, sph_cpu_time() - cpu0,
+                       idle1 < 0 ? -1 : idle1 - idle0, w0 + wall);
         if (a.collapsed) {
             sync_host(r);
             dt_collapse_report(r, a.dt_bad, a.floor_bad);
@@ -696,6 +717,9 @@ int sph_main(const sph_model *m, int argc, char **argv)
         return rc < 0 ? SPH_EXIT_OPTIONS : 0;
     if (r.opt.threads > 0)
         omp_set_num_threads(r.opt.threads);
+    /* fewer threads while the machine is busy, unless told how many (a device target's
+     * host threads only copy and check) */
+    sph_team_init(&r.team, omp_get_max_threads(), r.opt.threads > 0 || m->advance);
     sph_profile_on = r.opt.profile;
     sph_profile_phase = SPH_PHASE_SETUP;
     r.t_end = r.opt.t_end > 0 ? r.opt.t_end : m->t_end;

@@ -10,6 +10,7 @@
 #include "checkpoint.h"
 #include "compat.h"
 #include "internal.h"
+#include "team.h"
 
 typedef struct {
     const sph_model *m;
@@ -34,6 +35,7 @@ typedef struct {
     int nframes;
     double wall0;         /* the wall clock when this process started the run */
     double step_seconds;
+    sph_team team;        /* the threads of the steps (team.h) */
     double setup_seconds; /* particles, neighbours, tables, (device upload) */
     double check_seconds; /* the monitor's periodic checks (those before outputs count as */
     double output_seconds;/* output time, with the outputs and a device's copy for them) */

@@ -347,6 +347,7 @@ static void half_lists(sph_body *b)
         ns = 1;
     b->nstripes = ns;
     b->stripe = zalloc((size_t)ns + 1, sizeof(int));
+    b->stripe_sum = zalloc((size_t)ns, sizeof(double));
     for (int s = 0; s <= ns; s++)
         b->stripe[s] = (int)((long)b->n * s / ns);
 }
@@ -562,7 +563,7 @@ void sph_body_free(sph_body *b)
     free(b->X), free(b->u), free(b->v), free(b->a), free(b->work), free(b->F), free(b->L);
     free(b->Q), free(b->Cv), free(b->lam2), free(b->psi), free(b->sigma), free(b->fix);
     free(b->nb_start), free(b->nb), free(b->nb_k), free(b->wtab), free(b->gtab), free(b->htab);
-    free(b->hb_start), free(b->hb), free(b->hb_k), free(b->stripe), free(b->A);
+    free(b->hb_start), free(b->hb), free(b->hb_k), free(b->stripe), free(b->stripe_sum), free(b->A);
     free(b->s), free(b->sd), free(b->sdd), free(b->H), free(b->lap), free(b->sd_n);
     free(b->ltab), free(b->state);
 }
@@ -571,14 +572,26 @@ void sph_body_free(sph_body *b)
 
 void sph_body_energies(const sph_body *b, double *strain, double *kinetic)
 {
-    double es = 0, ek = 0;
-    const int D = b->dim;
-#pragma omp parallel for reduction(+ : es, ek)
-    for (int i = 0; i < b->n; i++) {
-        es += b->psi[i];
-        for (int k = 0; k < D; k++)
-            ek += b->v[(size_t)i * D + k] * b->v[(size_t)i * D + k];
+    /* Summed in blocks of a fixed size, the blocks' sums in order: the same bits on any
+     * number of threads (a run's team changes with the machine's load, runtime/team.h). */
+    enum { BLOCK = 4096 };
+    const int D = b->dim, nblocks = (b->n + BLOCK - 1) / BLOCK;
+    double *part = zalloc(2 * (size_t)nblocks + 1, sizeof(double));
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < nblocks; k++) {
+        const int end = b->n - k * BLOCK < BLOCK ? b->n : (k + 1) * BLOCK;
+        double es = 0, ek = 0;
+        for (int i = k * BLOCK; i < end; i++) {
+            es += b->psi[i];
+            for (int c = 0; c < D; c++)
+                ek += b->v[(size_t)i * D + c] * b->v[(size_t)i * D + c];
+        }
+        part[2 * k] = es, part[2 * k + 1] = ek;
     }
+    double es = 0, ek = 0;
+    for (int k = 0; k < nblocks; k++)
+        es += part[2 * k], ek += part[2 * k + 1];
+    free(part);
     *strain = es * b->vol;
     *kinetic = 0.5 * b->mass * ek;
 }

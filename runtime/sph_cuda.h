@@ -642,6 +642,7 @@ static sph_body *sph_cuda_body(const sph_body *h)
     }
     /* host-only or not yet on the device: never read there */
     b->hb_start = b->hb = b->hb_k = b->stripe = NULL;
+    b->stripe_sum = NULL;
     b->A = NULL; /* the device sums A per particle, in registers */
     b->nb_start = b->nb = b->nb_k = NULL;
     b->sigma = NULL, b->ms_list = NULL, b->ms_count = NULL;

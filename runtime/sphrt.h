@@ -425,6 +425,9 @@ struct sph_body {
     int *hb_start, *hb, *hb_k;
     int *stripe;          /* nstripes + 1 particle indices */
     int nstripes;
+    double *stripe_sum;   /* nstripes: a sum over each stripe's pairs (the viscous power),
+                           * added up in stripe order after the pass: the same bits on any
+                           * number of threads */
     sph_real *A;          /* n*SPH_TENSOR_SIZE(dim): sum_j (u_j - u_i) (x) w_ij, the pair part of
                            * eq. 53, row by row, rows padded like wtab (CPU only) */
     /* Full lists (both directions) for device targets, whose threads each sum their own
@@ -533,6 +536,8 @@ int sph_profile_slot(const char *pass);
 double sph_profile_start(int *slot, const char *pass); /* the wall clock, and *slot found */
 void sph_profile_add(int slot, double seconds);
 double sph_wall_time(void); /* the wall clock in seconds, monotonic (progress.c) */
+double sph_cpu_time(void);  /* the CPU time of the process's threads, seconds (progress.c) */
+double sph_idle_time(void); /* the machine's idle seconds summed over its cores, or -1 */
 #define SPH_TIMED(name, statement)                                                             \
     do {                                                                                       \
         if (sph_profile_on) {                                                                  \

@@ -104,16 +104,12 @@ static void @B@_momentum_pass(sph_body *b)
 //@else
             acc[i * D + r] = 0;
 //@endif
-//@if VISCOSITY
-    double visc_power = 0; /* sum over pairs of f_visc . (v_i - v_j): the viscous work rate */
-//@endif
     for (int colour = 0; colour < 2; colour++) {
-//@if VISCOSITY
-#pragma omp parallel for schedule(static) reduction(+ : visc_power)
-//@else
 #pragma omp parallel for schedule(static)
+        for (int s = colour; s < b->nstripes; s += 2) {
+//@if VISCOSITY
+            double stripe_power = 0; /* f_visc . (v_i - v_j) over the stripe's pairs */
 //@endif
-        for (int s = colour; s < b->nstripes; s += 2)
             for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
                 const vec *Qi = Q + (size_t)i * D;
 //@if VISCOSITY
@@ -171,11 +167,18 @@ static void @B@_momentum_pass(sph_body *b)
                 for (int r = 0; r < D; r++)
                     acc[i * D + r] += fi[r];
 //@if VISCOSITY
-                visc_power += pv;
+                stripe_power += pv;
 //@endif
             }
+//@if VISCOSITY
+            b->stripe_sum[s] = stripe_power;
+//@endif
+        }
     }
 //@if VISCOSITY
+    double visc_power = 0; /* the viscous work rate, in stripe order (any number of threads) */
+    for (int s = 0; s < b->nstripes; s++)
+        visc_power += b->stripe_sum[s];
     b->visc_rate = -b->mass * visc_power; /* energy per second the viscosity dissipates */
 //@endif
 }
