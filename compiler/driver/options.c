@@ -1,7 +1,7 @@
 /* options.c — sphc's command line:
  *
  *   sphc [-o NAME] [--target cpu|cuda] [--emit-c DIR] [--dump=ast|model|plan] [--check]
- *        [--to-sph] [--xml-elastic2d=3d|sdsph] [--xml-fill=volume|gencase] FILE
+ *        [--strict] [--to-sph] [--xml-elastic2d=3d|sdsph] [--xml-fill=volume|gencase] FILE
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,7 +14,7 @@ static void usage(FILE *f)
 {
     fputs("usage: sphc [-o NAME] [--target cpu|cuda] [--cuda-arch A] [--emit-c DIR]\n"
           "            [--dump=ast|model|plan]\n"
-          "            [--check] [--to-sph] [--xml-elastic2d=3d|sdsph]\n"
+          "            [--check] [--strict] [--to-sph] [--xml-elastic2d=3d|sdsph]\n"
           "            [--xml-fill=volume|gencase] FILE\n"
           "Compiles a model (FILE.sph, or a SoliDualSPHysics case FILE.xml) into an\n"
           "executable (named after FILE unless -o is given).\n"
@@ -26,6 +26,8 @@ static void usage(FILE *f)
           "  --dump=STAGE     print the syntax tree, checked model or kernel plan and stop\n"
           "  --emit-only      with --emit-c: write the C source without compiling it\n"
           "  --check          check the model only\n"
+          "  --strict         make warnings errors (a law's stress that is not its energy's\n"
+          "                   derivative, a cfl above 1, ...): the exit status is non-zero\n"
           "  --to-sph         check the model and print it as an .sph model (to convert an\n"
           "                   XML case once: sphc --to-sph Case_Def.xml > case.sph)\n"
           "  --xml-elastic2d=3d|sdsph\n"
@@ -117,6 +119,8 @@ int parse_options(int argc, char **argv, Options *o)
             o->emit_only = 1;
         } else if (!strcmp(a, "--check")) {
             o->check_only = 1;
+        } else if (!strcmp(a, "--strict")) {
+            diag_set_strict(1); /* from the first stage on: every warning is an error */
         } else if (!strcmp(a, "--to-sph")) {
             o->to_sph = 1;
         } else if (!strncmp(a, "--xml-", 6)) {

@@ -96,18 +96,29 @@ static int propagate(SGraph *g, SNode s, int id, int d, int *adj)
     }
 }
 
-int sg_derivatives(SGraph *g, int y, const int *x, int n, int *dydx)
+int sg_derivatives_held(SGraph *g, int y, const int *x, int n, const int *held, int nheld,
+                        int *dydx)
 {
     int *adj = malloc((size_t)(y + 1) * sizeof *adj);
+    char *stop = calloc((size_t)y + 1, 1);
     for (int k = 0; k <= y; k++)
         adj[k] = -1;
+    for (int k = 0; k < nheld; k++)
+        if (held[k] >= 0 && held[k] <= y)
+            stop[held[k]] = 1;
     adj[y] = num(g, 1);
     int bad = 0;
-    for (int id = y; id >= 0 && !bad; id--)
-        if (adj[id] >= 0)
+    for (int id = y; id >= 0 && !bad; id--) /* a held node keeps its adjoint to itself */
+        if (adj[id] >= 0 && !stop[id])
             bad = propagate(g, g->nodes[id], id, adj[id], adj) != 0; /* a copy: g grows */
     for (int k = 0; k < n; k++)
         dydx[k] = x[k] <= y && adj[x[k]] >= 0 ? adj[x[k]] : num(g, 0);
+    free(stop);
     free(adj);
     return bad ? -1 : 0;
+}
+
+int sg_derivatives(SGraph *g, int y, const int *x, int n, int *dydx)
+{
+    return sg_derivatives_held(g, y, x, n, NULL, 0, dydx);
 }

@@ -725,19 +725,39 @@ static int plane_strain_entry(const SNode *s, void *ctx)
     return sg_const(g, r == c ? 1.0 : 0.0);
 }
 
+/* The 2D plane-strain constants put for F's out-of-plane inputs in every result, once the
+ * derivatives with respect to them are taken. */
+static void fold_plane_strain(Law *L)
+{
+    LawRoots *r = &L->out;
+    int roots[2 * 9 + 2 + LAW_MAX_SLOTS], n = 0;
+    int *slots[2 * 9 + 2 + LAW_MAX_SLOTS];
+    for (int k = 0; k < 9; k++)
+        slots[n] = &r->S[k], roots[n++] = r->S[k];
+    slots[n] = &r->psi, roots[n++] = r->psi;
+    for (int k = 0; k < r->nslots; k++)
+        slots[n] = &r->next[k], roots[n++] = r->next[k];
+    for (int k = 0; r->has_tension && k < 9; k++)
+        slots[n] = &r->Sp[k], roots[n++] = r->Sp[k];
+    if (r->has_tension)
+        slots[n] = &r->psip, roots[n++] = r->psip;
+    int out[2 * 9 + 2 + LAW_MAX_SLOTS];
+    sg_substitute(L->g, roots, n, plane_strain_entry, L->g, out);
+    for (int k = 0; k < n; k++)
+        *slots[k] = out[k];
+}
+
 /* S = F^-1 dpsi/dF: the stress of a law that gives only its energy (a hyperelastic law is its
- * strain energy; P = dpsi/dF, S = F^-1 P).  The derivatives stand under the energy's line. */
+ * strain energy; P = dpsi/dF, S = F^-1 P).  A law with state is differentiated at its
+ * returned state: the state's values at the end of the step are held fixed (for J2,
+ * 2 dpsi/dC at the returned C_p, eq. 37-38).  The derivatives stand under the energy's
+ * line. */
 static int derive_stress(Law *L, int dim)
 {
-    if (L->out.nstates) {
-        diag_error(L->law->loc, "material '%s' has state: write its stress (the derivative of "
-                   "its energy would also differentiate the state's update)", L->law->name);
-        return -1;
-    }
     const Val F = L->of ? L->var : find_binding(L, "F")->v;
     int P[9];
     L->g->line = L->energy_line;
-    if (sg_derivatives(L->g, L->out.psi, F.t, 9, P)) {
+    if (sg_derivatives_held(L->g, L->out.psi, F.t, 9, L->out.next, L->out.nslots, P)) {
         diag_error(L->law->loc, "material '%s': its energy uses pos or neg, whose derivative "
                    "sphc does not take yet; write its stress", L->law->name);
         return -1;
@@ -753,14 +773,8 @@ static int derive_stress(Law *L, int dim)
     memcpy(Pv.t, P, sizeof P);
     Val S = t_matmul(L, t_inverse(L, F), Pv);
     memcpy(L->out.S, S.t, sizeof S.t);
-    if (dim != 2)
-        return 0;
-    int roots[10], folded[10];
-    memcpy(roots, L->out.S, sizeof L->out.S);
-    roots[9] = L->out.psi;
-    sg_substitute(L->g, roots, 10, plane_strain_entry, L->g, folded);
-    memcpy(L->out.S, folded, sizeof L->out.S);
-    L->out.psi = folded[9];
+    if (dim == 2)
+        fold_plane_strain(L);
     return 0;
 }
 

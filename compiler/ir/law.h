@@ -36,6 +36,13 @@ typedef struct {
 int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *params, int dim,
               int tension, LawRoots *out);
 
+/* A law that writes its stress (or its tension block's S+) and its energy: both evaluated
+ * in 3D with parameter values params at a few sample deformations, and a warning at the
+ * `stress` statement where S differs from F^-1 dpsi/dF (S+ from psi+'s) by more than
+ * round-off; a law with state is differentiated at its returned state.  Returns the number
+ * of warnings (law_verify.c). */
+int law_verify(const Model *m, const MaterialDef *law, const double *params);
+
 /* Check a law's statements symbolically (its parameters unknown, in 3D, with its tension
  * block): the checker's test of every material law.  Returns 0, or -1 after reporting. */
 int law_check(const Model *m, const MaterialDef *law);

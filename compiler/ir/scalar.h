@@ -82,6 +82,12 @@ int sg_substitute(SGraph *g, const int *roots, int nroots, int (*input)(const SN
  * branch taken for select, min, max and abs, 0 for comparisons.  Returns 0, or -1 when y
  * depends on a node the rules do not cover (a runtime routine, SN_EXT).  derivative.c. */
 int sg_derivatives(SGraph *g, int y, const int *x, int n, int *dydx);
+/* The same with nodes held[0 .. nheld-1] held fixed: taken as independent of x (a path from
+ * y to x through a held node adds nothing), as if each were a fresh input put back after
+ * the derivative.  A law's energy differentiated at its returned state: the state's end
+ * values held. */
+int sg_derivatives_held(SGraph *g, int y, const int *x, int n, const int *held, int nheld,
+                        int *dydx);
 
 /* The first constant the roots need that is not finite (a division by zero folded, ...),
  * or -1. */

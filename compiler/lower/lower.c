@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "plan.h"
+#include "util/diag.h"
 
 /* The body's BCs of that kind that set something (in 2D, not only out-of-plane components). */
 static int bcs_applied(const BodyModel *b, BcKind kind)
@@ -42,9 +43,20 @@ static void numbers(const Model *m, const BodyModel *b, BodyPlan *p)
 #undef PLAN_VALUE
 }
 
+/* Whether body i is the first to use its law: a law's stress is checked against its energy
+ * once, with that body's parameter values. */
+static int first_use(const Model *m, int i)
+{
+    for (int j = 0; j < i; j++)
+        if (m->bodies[j].law == m->bodies[i].law)
+            return 0;
+    return 1;
+}
+
 int lower_model(const Model *m, Plan *plan)
 {
     int bad = 0;
+    const int errors = diag_error_count(); /* with --strict, warnings count too */
     plan->model = m;
     plan->nbodies = m->nbodies;
     plan->bodies = calloc((size_t)m->nbodies, sizeof *plan->bodies);
@@ -55,12 +67,17 @@ int lower_model(const Model *m, Plan *plan)
         BodyPlan *p = &plan->bodies[i];
         memset(p, 0, sizeof *p);
         sg_init(&p->law);
-        bad |= law_build(&p->law, m, b->law, b->law_args, m->dim, b->fracture.on, &p->roots) != 0;
+        const int built =
+            law_build(&p->law, m, b->law, b->law_args, m->dim, b->fracture.on, &p->roots) == 0;
+        if (built && first_use(m, i))
+            law_verify(m, b->law, b->law_args);
+        bad |= !built;
         p->nstate = p->roots.nslots;
         features(m, b, &p->roots, p);
         numbers(m, b, p);
         plan->fracture |= p->fracture;
     }
+    bad |= diag_error_count() > errors;
     if (bad)
         plan_free(plan);
     return bad ? -1 : 0;

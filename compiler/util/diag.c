@@ -20,6 +20,7 @@ enum { MAX_ERRORS = 50 };
 
 static int n_errors;
 static int n_warnings;
+static int strict;
 static void (*stop_handler)(void);
 
 /* Line `line` (1-based) of `path` in a malloc'ed string without its line terminator, or
@@ -65,7 +66,7 @@ static void show_source(SrcLoc loc)
     free(text);
 }
 
-static void report(SrcLoc loc, const char *kind, const char *fmt, va_list ap)
+static void report(SrcLoc loc, const char *kind, const char *suffix, const char *fmt, va_list ap)
 {
     fflush(stdout);
     if (loc.file && loc.line > 0 && loc.col > 0)
@@ -77,16 +78,13 @@ static void report(SrcLoc loc, const char *kind, const char *fmt, va_list ap)
     else
         fprintf(stderr, "sphc: %s: ", kind);
     vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
+    fprintf(stderr, "%s\n", suffix);
     show_source(loc);
 }
 
-void diag_error(SrcLoc loc, const char *fmt, ...)
+/* One more error: the run stops after MAX_ERRORS. */
+static void count_error(void)
 {
-    va_list ap;
-    va_start(ap, fmt);
-    report(loc, "error", fmt, ap);
-    va_end(ap);
     if (++n_errors < MAX_ERRORS)
         return;
     fprintf(stderr, "sphc: error: too many errors (%d), stopping\n", n_errors);
@@ -95,20 +93,31 @@ void diag_error(SrcLoc loc, const char *fmt, ...)
     exit(1);
 }
 
+void diag_error(SrcLoc loc, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    report(loc, "error", "", fmt, ap);
+    va_end(ap);
+    count_error();
+}
+
 void diag_warning(SrcLoc loc, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    report(loc, "warning", fmt, ap);
+    report(loc, strict ? "error" : "warning", strict ? " [--strict]" : "", fmt, ap);
     va_end(ap);
     n_warnings++;
+    if (strict)
+        count_error();
 }
 
 void diag_note(SrcLoc loc, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    report(loc, "note", fmt, ap);
+    report(loc, "note", "", fmt, ap);
     va_end(ap);
 }
 
@@ -133,6 +142,11 @@ void diag_reset(void)
 {
     n_errors = 0;
     n_warnings = 0;
+}
+
+void diag_set_strict(int on)
+{
+    strict = on;
 }
 
 void diag_set_stop(void (*handler)(void))

@@ -16,6 +16,10 @@ void diag_note(SrcLoc loc, const char *fmt, ...) __attribute__((format(printf, 2
 /* An error with no source position (e.g. a missing file): "sphc: error: ..." */
 void diag_fatal_noloc(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
+/* --strict: a warning is reported as an error, "...: error: ... [--strict]", and counted as
+ * one (every stage then fails as for an error). */
+void diag_set_strict(int on);
+
 int diag_error_count(void);
 void diag_reset(void);
 

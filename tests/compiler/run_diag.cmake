@@ -7,6 +7,8 @@
 # non-empty line of the .err file to appear verbatim in stderr (trailing blanks
 # aside), so a golden states just the lines that matter: the
 # "name.sph:L:C: error: message" line and, if wanted, the source and caret lines.
+# A model whose first line is "# options: OPTION..." is checked with those options too
+# (--strict: a golden of a warning, which --strict makes an error).
 
 foreach(var SPHC MODEL EXPECTED)
   if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
@@ -20,8 +22,14 @@ endif()
 get_filename_component(model_dir "${MODEL}" DIRECTORY)
 get_filename_component(model_name "${MODEL}" NAME)
 
+file(STRINGS "${MODEL}" first_line LIMIT_COUNT 1)
+set(options "")
+if(first_line MATCHES "^# options: (.*)$")
+  separate_arguments(options UNIX_COMMAND "${CMAKE_MATCH_1}")
+endif()
+
 execute_process(
-  COMMAND "${SPHC}" --check "${model_name}"
+  COMMAND "${SPHC}" --check ${options} "${model_name}"
   WORKING_DIRECTORY "${model_dir}"
   RESULT_VARIABLE status
   OUTPUT_VARIABLE out

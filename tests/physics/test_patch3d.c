@@ -84,7 +84,8 @@ static void linear_user_law(void)
     diag_stretch(A, 1 + e, 1, 1);
     impose(b, A, cube_lin_stress_pass);
     cube_lin_material(b->F, S, &psi);
-    check_close("user law (linear): S11 = (lambda + 2 mu) e [Pa]", S[0], (lam + 2 * mu) * e, 1e-6);
+    check_close("user law (linear): S11 = (lambda + 2 mu) e / (1 + e) [Pa]", S[0],
+                (lam + 2 * mu) * e / (1 + e), 1e-6);
     check_close("user law (linear): S22 = lambda e [Pa]", S[4], lam * e, 1e-6);
     check_close("user law (linear): psi = (lambda/2 + mu) e^2 [J/m^3]", psi, (lam / 2 + mu) * e * e, 1e-9);
 }

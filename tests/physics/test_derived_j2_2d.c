@@ -1,0 +1,9 @@
+/* Laws with state given as their energy only (derived_j2_2d.sph, plane strain): the derived
+ * stress at the returned state against stdlib/j2.sph's and a closed form
+ * (derived_j2_check.h). */
+#define main generated_main
+#include "derived_j2_2d.c"
+#undef main
+
+#define DIM 2
+#include "derived_j2_check.h"
