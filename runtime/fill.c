@@ -24,6 +24,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "internal.h"
+#include "partition.h"
 #include "sph_limits.h"
 
 /* The lattice: box minimum, spacing, points and tiles per compact component. */
@@ -89,6 +90,26 @@ static int lattice_init(lattice *L, const sph_region *r, int dim, double dx, dou
         *total *= (double)L->nk[c];
     }
     return *total < SPH_MAX_LATTICE_POINTS ? 1 : -1;
+}
+
+/* The lattice sph_fill_region uses (partition.h): the same lattice_init, its numbers copied
+ * out.  1 for a lattice (which may still hold none of the region's points), 0 when the
+ * region has no bounding box or dx is invalid, -1 when the lattice is too large. */
+int sph_fill_lattice(const sph_region *r, int dim, double dx, double y_plane, sph_lattice *out)
+{
+    lattice L;
+    double total;
+    const int ok = lattice_init(&L, r, dim, dx, y_plane, &total);
+    if (ok <= 0)
+        return ok;
+    out->dim = dim;
+    out->dx = dx;
+    out->y_plane = y_plane;
+    for (int c = 0; c < 3; c++) {
+        out->lo[c] = L.lo[c];
+        out->nk[c] = L.nk[c];
+    }
+    return 1;
 }
 
 /* Lattice point number l of tile t: sets p (3D coordinates); 0 when outside the lattice. */
