@@ -29,7 +29,7 @@
 #include "regular_file.h"
 
 static const char MAGIC[8] = {'S', 'P', 'H', 'C', 'K', 'P', 'T', '\n'};
-enum { VERSION = 1 };
+enum { VERSION = 2 }; /* 2: the contact's sums hold the closest pair's closeness */
 
 /* FNV-1a, 64 bits, of n more bytes after h (FNV_START at first). */
 #define FNV_START 1469598103934665603ull
@@ -292,7 +292,7 @@ void sph_sim_checkpoint(sph_ckpt_writer *w, const sph_sim *s)
             sph_ckpt_put(w, name, arr[k].data, arr[k].bytes);
         }
     }
-    double sums[3];
+    double sums[4];
     const double *x0;
     size_t nx0;
     if (sph_contact_checkpoint(s, sums, &x0, &nx0)) {
@@ -373,7 +373,7 @@ int sph_sim_restore(const sph_ckpt *c, sph_sim *s)
             return -1;
     if (!s->m->contact)
         return 0;
-    double sums[3];
+    double sums[4];
     const double *x0 = sph_ckpt_find(c, "contact.x0", &bytes);
     if (sph_ckpt_take(c, "contact.sums", sums, sizeof sums))
         return -1;

@@ -44,6 +44,7 @@ struct sph_contact {
     double *x;         /* n*dim current positions */
     sph_csearch search;
     double stored, dissipated, w2max;
+    double level, close; /* sph_contact_closeness's level, and the closest pair's (contact_law.h) */
     double *part;      /* 2 per block of active particles: its stored energy and power */
     int nblocks;       /* (the blocks' sums added in order: the same bits on any threads) */
 };
@@ -93,8 +94,11 @@ void sph_contact_init(sph_sim *s)
         }
     }
     c->x = malloc(((size_t)c->n * c->dim + 1) * sizeof *c->x);
+    const double skin = 0.5 * dxmax; /* (as the device's, sph_cuda_contact.h) */
     c->search = (sph_csearch){.n = c->n, .dim = c->dim, .nbodies = nb, .body = c->body,
-                              .dc = c->dc, .skin = 0.5 * dxmax};
+                              .dc = c->dc, .skin = skin};
+    c->level = 0.5 * skin;
+    c->close = c->level; /* before the first step's pairs: as if touching */
 }
 
 /* Current positions of every particle into c->x. */
@@ -108,6 +112,18 @@ static void gather(sph_contact *c, const sph_sim *s)
         for (size_t p = 0; p < nd; p++)
             x[p] = b->X[p] + b->u[p];
     }
+}
+
+/* The closeness of particles gi and gj (sph_contact_closeness), from their positions in c->x
+ * as the device computes it from its own. */
+static double pair_closeness(const sph_contact *c, int gi, int gj)
+{
+    const double *xi = c->x + (size_t)gi * c->dim, *xj = c->x + (size_t)gj * c->dim;
+    double r2 = 0;
+    for (int k = 0; k < c->dim; k++)
+        r2 += (xi[k] - xj[k]) * (xi[k] - xj[k]);
+    return sph_contact_closeness(sqrt(r2), c->dc[c->body[gi] * c->nbodies + c->body[gj]],
+                                 c->level);
 }
 
 /* Contact force on particle i (global gi) from j (global gj), contact_law.h. */
@@ -137,8 +153,8 @@ void sph_contact_forces(sph_sim *s, double dt)
         c->part = malloc(2 * (size_t)nblocks * sizeof *c->part);
         c->nblocks = nblocks;
     }
-    double w2 = 0;
-#pragma omp parallel for schedule(dynamic, 1) reduction(max : w2)
+    double w2 = 0, close = 0;
+#pragma omp parallel for schedule(dynamic, 1) reduction(max : w2, close)
     for (int blk = 0; blk < nblocks; blk++) {
         const int end = q->nactive - blk * BLOCK < BLOCK ? q->nactive : (blk + 1) * BLOCK;
         double stored = 0, power = 0;
@@ -147,6 +163,7 @@ void sph_contact_forces(sph_sim *s, double dt)
             double fi[3] = {0, 0, 0}, f[3];
             for (int p = q->start[gi]; p < q->start[gi + 1]; p++) {
                 pair_force(c, s, gi, q->nb[p], dt, f, &stored, &power, &w2);
+                close = fmax(close, pair_closeness(c, gi, q->nb[p]));
                 for (int k = 0; k < c->dim; k++)
                     fi[k] += f[k];
             }
@@ -163,6 +180,7 @@ void sph_contact_forces(sph_sim *s, double dt)
     c->stored = stored;
     c->dissipated += power * dt;
     c->w2max = w2;
+    c->close = close;
 }
 
 const sph_pair_law *sph_contact_laws(sph_sim *s)
@@ -171,29 +189,41 @@ const sph_pair_law *sph_contact_laws(sph_sim *s)
     return s->contact->law;
 }
 
-void sph_contact_set(sph_sim *s, double stored, double dissipated, double w2max)
+void sph_contact_set(sph_sim *s, double stored, double dissipated, double w2max, double close)
 {
     sph_contact_init(s);
     s->contact->stored = stored;
     s->contact->dissipated = dissipated;
     s->contact->w2max = w2max;
+    s->contact->close = close;
 }
 
-int sph_contact_checkpoint(const sph_sim *s, double sums[3], const double **x0, size_t *nx0)
+double sph_contact_level(const sph_sim *s)
+{
+    return s->contact ? s->contact->level : 0;
+}
+
+double sph_contact_close(const sph_sim *s)
+{
+    return s->contact ? s->contact->close : 0;
+}
+
+int sph_contact_checkpoint(const sph_sim *s, double sums[4], const double **x0, size_t *nx0)
 {
     const sph_contact *c = s->contact;
     if (!s->m->contact)
         return 0;
     sums[0] = c ? c->stored : 0, sums[1] = c ? c->dissipated : 0, sums[2] = c ? c->w2max : 0;
+    sums[3] = c ? c->close : 0;
     const int built = c && c->search.built; /* (a device target builds no lists) */
     *x0 = built ? c->search.x0 : NULL;
     *nx0 = built ? (size_t)c->n * (size_t)c->dim : 0;
     return 1;
 }
 
-int sph_contact_restore(sph_sim *s, const double sums[3], const double *x0, size_t nx0)
+int sph_contact_restore(sph_sim *s, const double sums[4], const double *x0, size_t nx0)
 {
-    sph_contact_set(s, sums[0], sums[1], sums[2]);
+    sph_contact_set(s, sums[0], sums[1], sums[2], sums[3]);
     sph_contact *c = s->contact;
     if (!nx0)
         return 0;
@@ -206,17 +236,20 @@ int sph_contact_restore(sph_sim *s, const double sums[3], const double *x0, size
     return 0;
 }
 
-double sph_contact_dt(const sph_sim *s)
+double sph_contact_dt(const sph_sim *s, double step)
 {
     const sph_contact *c = s->contact;
     if (!c)
         return INFINITY;
-    double w2 = c->w2max;
+    double w2ref = 0, vmax2 = 0, amax2 = 0;
     for (int i = 0; i < c->nbodies; i++)
         for (int j = 0; j < c->nbodies; j++)
             if (i != j)
-                w2 = fmax(w2, c->law[i * c->nbodies + j].w2ref);
-    return 1.0 / sqrt(w2);
+                w2ref = fmax(w2ref, c->law[i * c->nbodies + j].w2ref);
+    for (int i = 0; i < s->nbodies; i++)
+        vmax2 = fmax(vmax2, s->bodies[i].vmax2), amax2 = fmax(amax2, s->bodies[i].amax2);
+    const int near = sph_contact_near(c->close, c->level, vmax2, amax2, s->dt, step);
+    return sph_contact_bound(c->w2max, w2ref, near);
 }
 
 void sph_contact_energies(const sph_sim *s, double *stored, double *dissipated)

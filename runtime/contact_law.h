@@ -72,6 +72,44 @@ SPH_HD static inline void sph_contact_pair(const sph_pair_law *L, int D, const d
     *w2 = fmax(*w2, kt / L->mstar);
 }
 
+/* The contact's sums of a step, in this order on the device (runtime/sph_cuda_contact.h; the
+ * first four are zeroed before each step's pairs): the stored energy, the largest omega^2 of
+ * a pair in contact, the closeness of the closest pair (below), the dissipated power; then
+ * the dissipated energy so far and the closeness's level (constants of the scene). */
+enum {
+    SPH_CSUM_STORED, SPH_CSUM_W2, SPH_CSUM_CLOSE, SPH_CSUM_POWER, SPH_CSUM_DISSIPATED,
+    SPH_CSUM_LEVEL, SPH_NCSUM
+};
+
+/* How close two particles of different bodies at distance r are: level less their gap
+ * r - dc, 0 when the gap is level or more.  level is half the search's skin, within which
+ * both targets see every pair (the CPU's candidates: contact_search.h; the device's cells). */
+SPH_HD static inline double sph_contact_closeness(double r, double dc, double level)
+{
+    return fmax(0.0, level - (r - dc));
+}
+
+/* Whether a pair is in contact (close >= level: a gap of 0 or less) or may touch before the
+ * next step ends, counted from where the last step's pairs were measured: within the last
+ * step dt_last and the next one, `step`, two particles close at most by twice the largest
+ * speed and acceleration, times a margin of 2.  A reach beyond the level: near. */
+SPH_HD static inline int sph_contact_near(double close, double level, double vmax2,
+                                          double amax2, double dt_last, double step)
+{
+    const double t = dt_last + step;
+    const double reach = 4 * (sqrt(vmax2) * t + sqrt(amax2) * t * t);
+    return !(reach < level) || close >= level || level - close < reach;
+}
+
+/* The contact's bound on the step, 1/omega (before eq. 64's C_CFL): omega^2 of the pairs in
+ * contact, and near contact at least the laws' reference w2ref (an overlap of 0.1 dc: a Hertz
+ * contact that has just begun is soft, and stiffens within the step). */
+SPH_HD static inline double sph_contact_bound(double w2, double w2ref, int near)
+{
+    const double w = near ? fmax(w2, w2ref) : w2;
+    return w > 0 ? 1.0 / sqrt(w) : INFINITY;
+}
+
 /* For device targets, which compute contact themselves (runtime/sph_cuda_contact.h): the
  * pair laws of scene s, nbodies x nbodies (made on the first call), and the state the device
  * computed, handed back for sph_contact_dt and sph_contact_energies. */
@@ -79,7 +117,11 @@ SPH_HD static inline void sph_contact_pair(const sph_pair_law *L, int D, const d
 extern "C" {
 #endif
 const sph_pair_law *sph_contact_laws(sph_sim *s);
-void sph_contact_set(sph_sim *s, double stored, double dissipated, double w2max);
+void sph_contact_set(sph_sim *s, double stored, double dissipated, double w2max, double close);
+/* The level of the contact's closeness (sph_contact_closeness): half the search's skin. */
+double sph_contact_level(const sph_sim *s);
+/* The closeness of the closest pair at the last step (the level before the first). */
+double sph_contact_close(const sph_sim *s);
 #ifdef __cplusplus
 }
 #endif

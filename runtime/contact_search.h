@@ -3,7 +3,9 @@
  * The particles of every body get one global index (body by body).  Candidates are the
  * pairs of particles of different bodies closer than their contact distance plus a skin;
  * they are found with a hashed cell list and kept until some particle has moved more than
- * half the skin since, so between two rebuilds no pair can come into contact unseen. */
+ * a quarter of the skin since, so between two rebuilds every pair within half a skin of
+ * contact is a candidate (no pair comes into contact unseen, and the closest pair's
+ * closeness, contact_law.h, is exact). */
 #ifndef SPHRT_CONTACT_SEARCH_H
 #define SPHRT_CONTACT_SEARCH_H
 
@@ -21,7 +23,7 @@ typedef struct {
 } sph_csearch;
 
 /* Brings the candidates up to date with positions x (n*dim): rebuilds when a particle has
- * moved more than skin/2 since the last rebuild.  Returns 1 when it rebuilt. */
+ * moved more than skin/4 since the last rebuild.  Returns 1 when it rebuilt. */
 int sph_csearch_update(sph_csearch *c, const double *x);
 /* The candidates built at positions x0, as the last rebuild at x0 made them (a resumed run's,
  * from its checkpoint). */

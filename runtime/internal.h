@@ -24,12 +24,12 @@ void sph_body_free(sph_body *b);
 void sph_contact_init(sph_sim *s);
 
 /* contact.c, for checkpoints: 1 with the contact's sums (stored, dissipated, the largest
- * omega^2) and the positions its candidates were last built at (*nx0 values, 0 before the
- * first build); 0 in a scene without contact. */
-int sph_contact_checkpoint(const sph_sim *s, double sums[3], const double **x0, size_t *nx0);
+ * omega^2, the closest pair's closeness) and the positions its candidates were last built
+ * at (*nx0 values, 0 before the first build); 0 in a scene without contact. */
+int sph_contact_checkpoint(const sph_sim *s, double sums[4], const double **x0, size_t *nx0);
 /* The contact as a checkpoint left it: its sums, and its candidates built again at x0 (nx0
  * values; 0: not built yet).  -1 after reporting when nx0 is not the scene's size. */
-int sph_contact_restore(sph_sim *s, const double sums[3], const double *x0, size_t nx0);
+int sph_contact_restore(sph_sim *s, const double sums[4], const double *x0, size_t nx0);
 
 /* A growable time series of one measured quantity set. */
 typedef struct {

@@ -531,7 +531,7 @@ static void dt_collapse_report(run_state *r, double dt, double floor_dt)
                 lowest = own, body = ib, particle = i, by_speed = dtv < dta, value = what;
         }
     }
-    const double contact = sph_contact_dt(s);
+    const double contact = sph_contact_dt(s, dt);
     if (contact < lowest) { /* the stiffest contact between bodies set it */
         snprintf(r->unstable, sizeof r->unstable,
                  "step %ld, t = %.6g s: time step collapsed to %g s, below dtmin = %g s (the "

@@ -78,7 +78,8 @@ double sph_sim_stable_dt(sph_sim *s)
         s->dt_factor = fmin(s->dt_factor, f);
         dt = fmin(dt, sph_body_dt(f, b->h, b->c0, b->vmax2, b->amax2));
     }
-    dt = fmin(dt, sph_contact_dt(s)); /* the stiffest contact */
+    /* the stiffest contact, where a pair is in contact or near it */
+    dt = fmin(dt, sph_contact_dt(s, sph_chosen_dt(m->dt_fixed, m->cfl, dt)));
     return sph_chosen_dt(m->dt_fixed, m->cfl, dt);
 }
 

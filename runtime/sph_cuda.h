@@ -77,6 +77,7 @@ static inline void atomicAdd(double *a, double v) { *a += v; }
 #define SPH_TENSOR(i, r, c, D, n) ((size_t)((r) * (D) + (c)) * (size_t)(n) + (size_t)(i))
 #define SPH_TIME_DEFINED /* sph_time: below, a value or the device clock's */
 #include "sphrt.h"
+#include "contact_law.h"
 
 #define SPH_CUDA_CHECK(call)                                                                   \
     do {                                                                                       \
@@ -118,8 +119,8 @@ struct sph_cuda_clock {
     double cfl, dt_fixed, lambda_on; /* the scene's (sph_model) */
     int nbodies;
     sph_body *const *bodies;   /* the device views (managed) */
-    const double *contact_w2;  /* the contact's largest omega^2 this step (device), and */
-    double contact_w2ref;      /* the laws' reference one: the contact's bound (contact.c) */
+    const double *contact_sums; /* the contact's sums of the step (device, contact_law.h), */
+    double contact_w2ref;      /* the laws' reference omega^2: the contact's bound (contact.c) */
 };
 
 __device__ static sph_cuda_clock sph_clock;
@@ -691,7 +692,7 @@ __device__ static inline void sph_clock_choose_on(sph_cuda_clock *c)
         c->skip = 1;
         return;
     }
-    double dt = INFINITY;
+    double dt = INFINITY, vmax2 = 0, amax2 = 0;
     c->dt_factor = 1.0;
     for (int i = 0; i < c->nbodies; i++) {
         const sph_body *b = c->bodies[i];
@@ -699,9 +700,14 @@ __device__ static inline void sph_clock_choose_on(sph_cuda_clock *c)
         const double f = sph_stretch_factor(c->lambda_on, b->lam2 != NULL, sph_red_lam2min(red));
         c->dt_factor = fmin(c->dt_factor, f);
         dt = fmin(dt, sph_body_dt(f, b->h, b->c0, red[SPH_RED_VMAX2], red[SPH_RED_AMAX2]));
+        vmax2 = fmax(vmax2, red[SPH_RED_VMAX2]), amax2 = fmax(amax2, red[SPH_RED_AMAX2]);
     }
-    if (c->contact_w2) /* the stiffest contact */
-        dt = fmin(dt, 1.0 / sqrt(fmax(*c->contact_w2, c->contact_w2ref)));
+    if (c->contact_sums) { /* the stiffest contact, where a pair is in contact or near it */
+        const double *cs = c->contact_sums;
+        const int near = sph_contact_near(cs[SPH_CSUM_CLOSE], cs[SPH_CSUM_LEVEL], vmax2, amax2,
+                                          c->dt, sph_chosen_dt(c->dt_fixed, c->cfl, dt));
+        dt = fmin(dt, sph_contact_bound(cs[SPH_CSUM_W2], c->contact_w2ref, near));
+    }
     dt = sph_chosen_dt(c->dt_fixed, c->cfl, dt);
     const double floor_now = sph_dt_floor_now(c->floor_dt, c->dt_factor);
     if (!(dt >= floor_now)) {
@@ -740,7 +746,7 @@ static void sph_cuda_clock_resume()
  * step the host's sums (sph_sim_init's initial speeds) go to the device, where the first time
  * step is chosen from them. */
 static void sph_cuda_clock_start(const sph_sim *s, const sph_advance *a, sph_body *const *dev,
-                                 const double *contact_w2, double contact_w2ref)
+                                 const double *contact_sums, double contact_w2ref)
 {
     if (s->step == 0)
         for (int i = 0; i < s->nbodies; i++)
@@ -758,7 +764,7 @@ static void sph_cuda_clock_start(const sph_sim *s, const sph_advance *a, sph_bod
     c.t_stop = a->t_stop, c.eps = a->eps, c.floor_dt = a->floor_dt;
     c.cfl = m->cfl, c.dt_fixed = m->dt_fixed, c.lambda_on = m->dt_lambda_on;
     c.nbodies = s->nbodies, c.bodies = views;
-    c.contact_w2 = contact_w2, c.contact_w2ref = contact_w2ref;
+    c.contact_sums = contact_sums, c.contact_w2ref = contact_w2ref;
     SPH_CUDA_CHECK(cudaMemcpyToSymbol(sph_clock, &c, sizeof c));
 }
 
@@ -793,12 +799,12 @@ static int sph_cuda_clock_stopped()
  * `step` queues (reading t and dt from the clock) between the clock's choice and tick.  The
  * host queues them SPH_CLOCK_CHUNK at a time and, where steps are left after a chunk, looks
  * whether the clock has stopped, so that a batch asked for many steps (up to its stop time)
- * queues only a chunk more than it takes.  contact_w2, contact_w2ref: the contact's bound
+ * queues only a chunk more than it takes.  contact_sums, contact_w2ref: the contact's bound
  * (NULL, 0 without contact). */
 static void sph_cuda_advance(sph_sim *s, sph_advance *a, sph_body *const *dev,
-                             const double *contact_w2, double contact_w2ref, void (*step)())
+                             const double *contact_sums, double contact_w2ref, void (*step)())
 {
-    sph_cuda_clock_start(s, a, dev, contact_w2, contact_w2ref);
+    sph_cuda_clock_start(s, a, dev, contact_sums, contact_w2ref);
     for (int done = 0; done < a->steps;) {
         const int chunk = a->steps - done < SPH_CLOCK_CHUNK ? a->steps - done : SPH_CLOCK_CHUNK;
         for (int k = 0; k < chunk; k++) {

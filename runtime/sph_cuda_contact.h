@@ -27,9 +27,6 @@
 #include <algorithm>
 #endif
 
-/* The device's contact sums, c->sum[SPH_CSUM_*]. */
-enum { SPH_CSUM_STORED, SPH_CSUM_W2, SPH_CSUM_POWER, SPH_CSUM_DISSIPATED, SPH_NCSUM };
-
 typedef struct {
     int n, dim, nbodies;
     int *base;            /* host, nbodies + 1: first global index of each body */
@@ -37,7 +34,8 @@ typedef struct {
     double *mass;         /* nbodies: particle mass of each body */
     sph_pair_law *law;    /* nbodies^2 */
     double *x, *v, *acc;  /* n*dim: positions, velocities, contact accelerations */
-    double cell;          /* cell side: the largest contact distance */
+    double cell;          /* cell side: the largest contact distance plus the skin */
+    double level;         /* the closeness's level, half the skin (contact_law.h) */
     unsigned mask;        /* buckets - 1 (a power of two) */
     int bits;             /* log2 buckets: the sort's key bits */
     unsigned *key, *skey; /* n: bucket of each particle; sorted */
@@ -45,7 +43,7 @@ typedef struct {
     int *bstart, *bend;   /* buckets: range of each bucket in order */
     void *tmp;            /* the sort's scratch */
     size_t tmp_bytes;
-    double *sum;          /* SPH_NCSUM */
+    double *sum;          /* SPH_NCSUM (contact_law.h) */
     double w2ref;         /* the largest reference omega^2 of two bodies' law (contact.c) */
 } sph_cuda_contact;
 
@@ -82,12 +80,21 @@ static void sph_cuda_contact_init(sph_cuda_contact *c, sph_sim *s)
             body[p] = i;
     }
     const sph_pair_law *law = sph_contact_laws(s);
-    c->cell = 0, c->w2ref = 0;
+    double dcmax = 0, dxmax = 0;
+    c->w2ref = 0;
     for (int k = 0; k < nb * nb; k++) {
-        c->cell = fmax(c->cell, law[k].dc);
+        dcmax = fmax(dcmax, law[k].dc);
         if (k / nb != k % nb) /* as sph_contact_dt */
             c->w2ref = fmax(c->w2ref, law[k].w2ref);
     }
+    for (int i = 0; i < nb; i++)
+        dxmax = fmax(dxmax, s->bodies[i].dx);
+    /* Cells a skin wider than the largest contact distance, as the CPU's search's: every
+     * pair within half a skin of contact is seen, so the closest pair's closeness is the
+     * CPU's (contact.c) */
+    const double skin = 0.5 * dxmax;
+    c->cell = dcmax + skin;
+    c->level = 0.5 * skin;
     c->body = (int *)sph_dev_copy(body.data(), (size_t)n * sizeof(int));
     c->mass = (double *)sph_dev_copy(mass.data(), (size_t)nb * sizeof(double));
     c->law = (sph_pair_law *)sph_dev_copy(law, (size_t)nb * nb * sizeof *law);
@@ -114,7 +121,9 @@ static void sph_cuda_contact_init(sph_cuda_contact *c, sph_sim *s)
                                                    c->order, n, 0, c->bits));
     c->tmp = sph_dev_alloc(c->tmp_bytes);
 #endif
-    double sum[SPH_NCSUM] = {0, 0, 0, 0};
+    double sum[SPH_NCSUM] = {0};
+    sum[SPH_CSUM_CLOSE] = c->level; /* before the first step's pairs: as if touching */
+    sum[SPH_CSUM_LEVEL] = c->level;
     c->sum = (double *)sph_dev_copy(sum, sizeof sum);
 }
 
@@ -159,18 +168,18 @@ static void sph_cuda_contact_sort(sph_cuda_contact *c)
 static void sph_cuda_contact_pairs(sph_cuda_contact *c, sph_time dt)
 {
     const int D = c->dim, nb = c->nbodies;
-    const double *x = c->x, *v = c->v, *mass = c->mass, cell = c->cell;
+    const double *x = c->x, *v = c->v, *mass = c->mass, cell = c->cell, level = c->level;
     const int *body = c->body, *order = c->order, *bstart = c->bstart, *bend = c->bend;
     const sph_pair_law *law = c->law;
     const unsigned mask = c->mask;
     double *acc = c->acc, *sum = c->sum;
-    sph_cuda_zero(sum, SPH_CSUM_POWER + 1); /* stored, w2, power */
+    sph_cuda_zero(sum, SPH_CSUM_POWER + 1); /* stored, w2, close, power */
     SPH_FOR(g, c->n, {
         const int bg = body[g];
         const double *xg = x + (size_t)g * D;
         long long cg[3];
         sph_contact_cell(xg, D, cell, cg);
-        double fi[3] = {0, 0, 0}, stored = 0, power = 0, w2 = 0;
+        double fi[3] = {0, 0, 0}, stored = 0, power = 0, w2 = 0, close = 0;
         const int span = D > 2; /* 2D: the third cell coordinate is always 0 */
         for (int o0 = -1; o0 <= 1; o0++)
             for (int o1 = -1; o1 <= 1; o1++)
@@ -185,6 +194,12 @@ static void sph_cuda_contact_pairs(sph_cuda_contact *c, sph_time dt)
                         sph_contact_cell(x + (size_t)j * D, D, cell, ck);
                         if (ck[0] != cj[0] || ck[1] != cj[1] || ck[2] != cj[2])
                             continue; /* another cell in the same bucket */
+                        const double *xj = x + (size_t)j * D;
+                        double r2 = 0;
+                        for (int k = 0; k < D; k++)
+                            r2 += (xg[k] - xj[k]) * (xg[k] - xj[k]);
+                        close = fmax(close, sph_contact_closeness(
+                                                sqrt(r2), law[bg * nb + body[j]].dc, level));
                         double f[3];
                         sph_contact_pair(&law[bg * nb + body[j]], D, xg, x + (size_t)j * D,
                                          v + (size_t)g * D, v + (size_t)j * D, dt, f, &stored,
@@ -200,6 +215,8 @@ static void sph_cuda_contact_pairs(sph_cuda_contact *c, sph_time dt)
             atomicAdd(&sum[SPH_CSUM_POWER], power);
             sph_atomic_max_pos(&sum[SPH_CSUM_W2], w2);
         }
+        if (close > 0) /* near contact: the closest pair */
+            sph_atomic_max_pos(&sum[SPH_CSUM_CLOSE], close);
     });
     SPH_ONCE({ sum[SPH_CSUM_DISSIPATED] += sum[SPH_CSUM_POWER] * dt; });
 }
@@ -231,10 +248,11 @@ static void sph_cuda_contact_forces(sph_cuda_contact *c, sph_body *const *dev, s
     }
 }
 
-/* Where the device's clock finds the contact's largest omega^2 of the step. */
-static const double *sph_cuda_contact_w2(const sph_cuda_contact *c)
+/* Where the device's clock finds the contact's sums of the step (SPH_CSUM_*: the largest
+ * omega^2, the closest pair's closeness and its level). */
+static const double *sph_cuda_contact_sums(const sph_cuda_contact *c)
 {
-    return c->sum + SPH_CSUM_W2;
+    return c->sum;
 }
 
 /* The host runtime's contact sums onto the device (a run resumed from a checkpoint). */
@@ -243,6 +261,8 @@ static void sph_cuda_contact_from_host(sph_cuda_contact *c, const sph_sim *s)
     double sum[SPH_NCSUM] = {0};
     sph_contact_energies(s, &sum[SPH_CSUM_STORED], &sum[SPH_CSUM_DISSIPATED]);
     sum[SPH_CSUM_W2] = sph_contact_w2max(s);
+    sum[SPH_CSUM_CLOSE] = sph_contact_close(s);
+    sum[SPH_CSUM_LEVEL] = c->level;
     SPH_CUDA_CHECK(cudaMemcpy(c->sum, sum, sizeof sum, cudaMemcpyHostToDevice));
 }
 
@@ -252,7 +272,8 @@ static void sph_cuda_contact_to_host(const sph_cuda_contact *c, sph_sim *s)
     double sum[SPH_NCSUM];
     SPH_CUDA_CHECK(cudaMemcpy(sum, c->sum, sizeof sum, cudaMemcpyDeviceToHost));
     sph_cuda_profile_collect(); /* (the host has waited) */
-    sph_contact_set(s, sum[SPH_CSUM_STORED], sum[SPH_CSUM_DISSIPATED], sum[SPH_CSUM_W2]);
+    sph_contact_set(s, sum[SPH_CSUM_STORED], sum[SPH_CSUM_DISSIPATED], sum[SPH_CSUM_W2],
+                    sum[SPH_CSUM_CLOSE]);
 }
 
 #endif

@@ -584,8 +584,10 @@ double sph_dissipated_energy(const sph_body *b);
  * length (friction stops a pair's sliding at most within one step). */
 void sph_contact_forces(sph_sim *s, double dt);
 /* The contact's bound on the time step, sqrt(m_pair / k) of the stiffest contact (before eq. 64's
- * C_CFL); INFINITY without contact. */
-double sph_contact_dt(const sph_sim *s);
+ * C_CFL), for a step of `step` (the bodies' own): the pairs in contact, and the laws'
+ * reference stiffness while a pair is in contact or may touch before the step ends
+ * (contact_law.h, sph_contact_near); INFINITY without contact or far from it. */
+double sph_contact_dt(const sph_sim *s, double step);
 /* The energy stored in the contacts now and the energy the contacts' damping and friction
  * have dissipated so far (both 0 without contact). */
 void sph_contact_energies(const sph_sim *s, double *stored, double *dissipated);

@@ -60,7 +60,7 @@ static void scene_step_cuda(Emitter *E)
                  "static void model_advance(sph_sim *s, sph_advance *a)\n{\n"
                  "    sph_cuda_advance(s, a, DEV, %s, model_clock_step);\n"
                  "    model_sums_to_host(s);\n}\n\n",
-            contact ? "sph_cuda_contact_w2(&CONTACT_DEV), CONTACT_DEV.w2ref" : "NULL, 0.0");
+            contact ? "sph_cuda_contact_sums(&CONTACT_DEV), CONTACT_DEV.w2ref" : "NULL, 0.0");
     fputs("/* The device state into the host bodies, for the runtime to read. */\n"
           "static void model_sync_host(sph_sim *s)\n{\n", out);
     for (int i = 0; i < m->nbodies; i++)
