@@ -8,7 +8,10 @@
  *    and the top plate stays above the bottom one;
  *  - energy balance: kinetic + strain + plastic work + viscous dissipation + contact
  *    (stored and dissipated) stays within 2 % of the initial kinetic energy;
- *  - the impact made plastic strain, and the contact dissipated energy (e < 1). */
+ *  - the impact made plastic strain, and the contact dissipated energy (e < 1);
+ *  - the time step: while the plates fly at each other the contact does not bound it (the
+ *    plates' own step, as without contact), from a step or two before they touch it does,
+ *    and the step in which they first touch was bounded by it. */
 #define main generated_main
 #include "flyer2d.c"
 #undef main
@@ -45,8 +48,16 @@ int main(void)
     for (int i = 0; i < bot->n; i++)
         unmatched += map[i] < 0;
     double pmax = 0, closest = INFINITY, order = INFINITY, drift = 0, asym = 0;
+    long free_steps = 0, approach_steps = 0, touch_step = -1;
+    int touch_bounded = 0;
     while (sim.t < MODEL.t_end - 1e-15) {
-        sph_sim_step(&sim, fmin(sph_sim_stable_dt(&sim), MODEL.t_end - sim.t));
+        const double dt = sph_sim_stable_dt(&sim);
+        const int bounded = isfinite(sph_contact_dt(&sim, dt)); /* in or near contact */
+        sph_sim_step(&sim, fmin(dt, MODEL.t_end - sim.t));
+        if (touch_step < 0 && sph_contact_w2max(&sim) > 0) /* the first step in contact */
+            touch_step = sim.step, touch_bounded = bounded;
+        if (touch_step < 0)
+            free_steps += !bounded, approach_steps += bounded;
         double ztop = INFINITY, zbot = -INFINITY;
         pmax = fmax(pmax, total_momentum(&sim) / p_plate);
         for (int i = 0; i < top->n; i++)
@@ -75,6 +86,15 @@ int main(void)
            "plastic work %.4g J, contact dissipated %.4g J, top kinetic %.4g J of %.4g J\n",
            sim.step, pmax, asym, closest, order / dx, 100 * drift, ep_max,
            sph_dissipated_energy(top) + sph_dissipated_energy(bot), dissipated, ek_top, e0 / 2);
+    printf("before the plates touched (step %ld): %ld steps at their own time step, %ld "
+           "bounded by the contact\n", touch_step, free_steps, approach_steps);
+    check_close("the plates touched", touch_step > 0, 1, 0);
+    check_close("the first step in contact was bounded by the contact", touch_bounded, 1, 0);
+    /* the first step (before any contact pass it counts as touching) and the approach */
+    check_close("steps before touching bounded by the contact (a few)", (double)approach_steps,
+                0, 5);
+    check_close("steps before touching at the plates' own step (> 10 x the bounded)",
+                free_steps > 10 * approach_steps, 1, 0);
     check_close("mirror partners found for every particle", unmatched, 0, 0);
     check_close("|total momentum| / plate momentum", pmax, 0, 1e-12);
     check_close("mirror asymmetry (dx)", asym, 0, 1e-6);
