@@ -1,4 +1,5 @@
-/* sph_tensor.h — positive and negative parts of symmetric tensors (header only).
+/* sph_tensor.h — positive and negative parts of symmetric tensors, and their derivatives
+ * (header only).
  *
  * Used by the generated code for phase-field fracture: the tension/compression split of
  * the Green–Lagrange strain (paper eq. 13–16), E = Q Λ Qᵀ, E⁺ = Q Λ⁺ Qᵀ with Λ⁺ the
@@ -184,6 +185,108 @@ SPH_HD static inline void sph_sym_pos2(double axx, double axz, double azz, doubl
      * weight l1 / (l1 − l2) lies in (0, 1). */
     double wt = l1 / (l1 - l2);
     out[0] = wt * (axx - l2), out[1] = wt * axz, out[2] = wt * (azz - l2);
+}
+
+/* ------------------------------------------------------------------ derivatives
+ *
+ * The adjoints (reverse-mode derivatives) of the positive parts, for laws whose stress is
+ * derived from an energy that uses pos or neg (neg(A) = A − pos(A) needs no routine of its
+ * own).  pos is the spectral function F(A) = Σ f(λ_k) q_k q_kᵀ with f(λ) = max(λ, 0).  Its
+ * derivative (Daleckii–Krein): for a symmetric perturbation dA,
+ *     dF = Q (Γ ∘ (Qᵀ dA Q)) Qᵀ,  Γ_ij = (f(λ_i) − f(λ_j)) / (λ_i − λ_j), Γ_ii = f'(λ_i),
+ * so the adjoint G = ∂<B, F(A)>/∂A of an adjoint B of the output is Q (Γ ∘ (Qᵀ sym(B) Q)) Qᵀ.
+ * For f = max(·, 0): Γ_ij = 1 where λ_i, λ_j > 0, 0 where neither is positive, and
+ * λ_+ / (λ_+ − λ_−) across zero (a positive denominator: no cancellation, equal eigenvalues
+ * need no special case).  At a zero eigenvalue f'(0) is taken as 0 (the derivative from the
+ * compressive side).  Special cases: G = sym(B) exactly where every eigenvalue is positive,
+ * G = 0 where none is.  Consequence: d tr(pos(A)²)/dA = 2 pos(A), d tr(neg(A)²)/dA = 2 neg(A). */
+
+/* Γ_ij for f(λ) = max(λ, 0). */
+SPH_HD static inline double sph_pos_divided_difference(double li, double lj)
+{
+    if (li > 0.0 && lj > 0.0)
+        return 1.0;
+    if (li <= 0.0 && lj <= 0.0)
+        return 0.0;
+    return li > 0.0 ? li / (li - lj) : lj / (lj - li);
+}
+
+/* The adjoint of sph_sym_pos3: in = {A[9], B[9]}, B the adjoint of its output Ap (row-major);
+ * G[k] = ∂(Σ_m B[m] Ap[m]) / ∂A[k], symmetric (A is symmetrised as sph_sym_pos3 does). */
+SPH_HD static inline void sph_sym_pos3_adjoint(const double in[18], double G[9])
+{
+    const double *A = in, *B = in + 9;
+    double lam[3], Q[9], Bs[9];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            Bs[3 * i + j] = sph_sym_avg(B[3 * i + j], B[3 * j + i]);
+    sph_sym_eig3_unsorted(A, lam, Q);
+    double lo = sph_min(lam[0], sph_min(lam[1], lam[2]));
+    double hi = sph_max(lam[0], sph_max(lam[1], lam[2]));
+    if (lo > 0.0 || hi <= 0.0) { /* F(A) = A near A: G = sym(B); F(A) = 0: G = 0 */
+        for (int k = 0; k < 9; k++)
+            G[k] = lo > 0.0 ? Bs[k] : 0.0;
+        return;
+    }
+    double T[9], M[9]; /* T = Bs Q, M = Γ ∘ (Qᵀ Bs Q) */
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            double v = 0.0;
+            for (int k = 0; k < 3; k++)
+                v += Bs[3 * i + k] * Q[3 * k + j];
+            T[3 * i + j] = v;
+        }
+    for (int i = 0; i < 3; i++)
+        for (int j = i; j < 3; j++) {
+            double v = 0.0;
+            for (int k = 0; k < 3; k++)
+                v += Q[3 * k + i] * T[3 * k + j];
+            M[3 * i + j] = M[3 * j + i] = sph_pos_divided_difference(lam[i], lam[j]) * v;
+        }
+    for (int i = 0; i < 3; i++) /* G = Q M Qᵀ, its upper triangle mirrored */
+        for (int j = i; j < 3; j++) {
+            double v = 0.0;
+            for (int k = 0; k < 3; k++)
+                for (int l = 0; l < 3; l++)
+                    v += Q[3 * i + k] * M[3 * k + l] * Q[3 * j + l];
+            G[3 * i + j] = G[3 * j + i] = v;
+        }
+}
+
+/* The adjoint of sph_sym_pos2: in = {axx, axz, azz, bxx, bxz, bzz}, b the adjoints of its
+ * outputs {pxx, pxz, pzz}; out = the adjoints of its inputs {axx, axz, azz} (axz stands for
+ * both off-diagonal entries: out[1] = 2 G_xz).  Across zero (l1 > 0 >= l2), with the
+ * projectors P1 = (A − l2 I)/(l1 − l2), P2 = (l1 I − A)/(l1 − l2) and w = l1/(l1 − l2):
+ * G = P1 Bs P1 + w (P1 Bs P2 + P2 Bs P1), Bs = {{bxx, bxz/2}, {bxz/2, bzz}}. */
+SPH_HD static inline void sph_sym_pos2_adjoint(const double in[6], double out[3])
+{
+    double axx = in[0], axz = in[1], azz = in[2];
+    double m = 0.5 * axx + 0.5 * azz, dh = 0.5 * axx - 0.5 * azz, r2 = dh * dh + axz * axz;
+    double r = r2 < 0x1p1000 && r2 > 0x1p-1000 ? sqrt(r2) : hypot(dh, axz);
+    double l1 = m + r, l2 = m - r;
+    if (l2 > 0.0 || l1 <= 0.0) {
+        double keep = l2 > 0.0 ? 1.0 : 0.0;
+        out[0] = keep * in[3], out[1] = keep * in[4], out[2] = keep * in[5];
+        return;
+    }
+    double den = l1 - l2, w = l1 / den;
+    double P1[4] = {(axx - l2) / den, axz / den, axz / den, (azz - l2) / den};
+    double P2[4] = {(l1 - axx) / den, -axz / den, -axz / den, (l1 - azz) / den};
+    double Bs[4] = {in[3], 0.5 * in[4], 0.5 * in[4], in[5]};
+    double X[4], Y[4], G[4]; /* X = Bs P1, Y = Bs P2 */
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++) {
+            X[2 * i + j] = Bs[2 * i] * P1[j] + Bs[2 * i + 1] * P1[2 + j];
+            Y[2 * i + j] = Bs[2 * i] * P2[j] + Bs[2 * i + 1] * P2[2 + j];
+        }
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++) {
+            double p1x = P1[2 * i] * X[j] + P1[2 * i + 1] * X[2 + j];
+            double p1y = P1[2 * i] * Y[j] + P1[2 * i + 1] * Y[2 + j];
+            double p2x = P2[2 * i] * X[j] + P2[2 * i + 1] * X[2 + j];
+            G[2 * i + j] = p1x + w * (p1y + p2x);
+        }
+    out[0] = G[0], out[1] = G[1] + G[2], out[2] = G[3];
 }
 
 #endif /* SPH_TENSOR_H */

@@ -19,8 +19,16 @@ static const char *integrator_name(const Model *m)
     return m->integrator == INTEGRATOR_VERLET ? "Verlet" : "symplectic";
 }
 
-static const char *const TENSOR_INCLUDE =
-    "#include \"sph_tensor.h\" /* tension/compression split (fracture) */\n";
+/* The tensor routines: pos, neg and their derivatives (fracture's tension/compression
+ * split, a law that uses them), included only where called. */
+static const char *tensor_include(const Plan *p)
+{
+    int used = p->fracture;
+    for (int b = 0; b < p->nbodies && !used; b++)
+        for (int id = 0; id < p->bodies[b].law.n && !used; id++)
+            used = p->bodies[b].law.nodes[id].op == SN_EXT;
+    return used ? "#include \"sph_tensor.h\" /* pos, neg: tension/compression split */\n" : "";
+}
 
 /* ------------------------------------------------------------------ CPU (OpenMP) */
 
@@ -35,7 +43,7 @@ static void header_cpu(Emitter *E)
             kernel_name(m), integrator_name(m), m->nbodies, m->nbodies == 1 ? "y" : "ies",
             m->single ? "\n/* precision single: the pair passes' arrays are float (sph_real); link "
                         "libsphrt_single */\n#define SPH_SINGLE 1\n" : "",
-            E->plan->fracture ? TENSOR_INCLUDE : "");
+            tensor_include(E->plan));
 }
 
 static void loop_open_cpu(FILE *out, const char *indent, const char *i, const char *n)
@@ -93,7 +101,7 @@ static void header_cuda(Emitter *E)
             "#include \"sph_cuda.h\"\n%s\n",
             m->name, source_basename(m->source), m->dim, kernel_name(m), integrator_name(m),
             m->nbodies, m->nbodies == 1 ? "y" : "ies", m->single ? "#define SPH_SINGLE 1\n" : "",
-            E->plan->fracture ? TENSOR_INCLUDE : "");
+            tensor_include(E->plan));
     if (E->plan->contact)
         fputs("#include \"sph_cuda_contact.h\" /* contact between the bodies */\n\n", E->out);
 }

@@ -4,12 +4,15 @@
  * node, so descending ids are a reverse topological order), each node with an adjoint adds
  * its share to its operands' by the chain rule.  The adjoints are graph nodes, built with
  * the same folding and hash-consing as the law itself: x * 0 vanishes, a factor shared by
- * several entries is computed once. */
+ * several entries is computed once.  A runtime routine (SN_EXT, pos of eq. 13-16) has
+ * several outputs, its parts (SN_PART, newer than it): their adjoints are gathered when the
+ * descent reaches the routine, and its rule (spectral.c) gives its arguments' at once. */
 #include <math.h>
 #include <stdlib.h>
 
 #include "lang/builtins.h"
 #include "scalar.h"
+#include "spectral.h"
 
 static int add(SGraph *g, int a, int b) { return sg_binary(g, SN_ADD, a, b); }
 static int mul(SGraph *g, int a, int b) { return sg_binary(g, SN_MUL, a, b); }
@@ -88,12 +91,35 @@ static int propagate(SGraph *g, SNode s, int id, int d, int *adj)
         accumulate(g, adj, s.a, mul(g, d, r));
         return 0;
     }
-    case SN_EXT:
-    case SN_PART:
-        return -1;
+    case SN_PART: /* gathered by its routine (routine_adjoint) */
+        return 0;
     default: /* constants, inputs, parameters; comparisons and logic are flat */
         return 0;
     }
+}
+
+/* The adjoint of runtime routine ext (its parts' adjoints, adj[] of the SN_PART nodes of ext
+ * between ext and y that are not held) passed to its arguments.  Returns 0, or -1 for a
+ * routine without a rule. */
+static int routine_adjoint(SGraph *g, int ext, int y, const char *stop, int *adj)
+{
+    int bar[SG_MAX_ARGS], arg_bar[SG_MAX_ARGS], any = 0;
+    const int nout = g->nodes[ext].b;
+    for (int k = 0; k < nout && k < SG_MAX_ARGS; k++)
+        bar[k] = -1;
+    for (int id = ext + 1; id <= y; id++) {
+        const SNode *p = &g->nodes[id];
+        if (p->op == SN_PART && p->a == ext && adj[id] >= 0 && !stop[id])
+            bar[(int)p->v] = adj[id], any = 1;
+    }
+    if (!any)
+        return 0;
+    if (spectral_adjoint(g, ext, bar, arg_bar))
+        return -1;
+    const SNode s = g->nodes[ext]; /* a copy: g grew */
+    for (int k = 0; k < s.nargs; k++)
+        accumulate(g, adj, s.args[k], arg_bar[k]);
+    return 0;
 }
 
 int sg_derivatives_held(SGraph *g, int y, const int *x, int n, const int *held, int nheld,
@@ -108,9 +134,14 @@ int sg_derivatives_held(SGraph *g, int y, const int *x, int n, const int *held, 
             stop[held[k]] = 1;
     adj[y] = num(g, 1);
     int bad = 0;
-    for (int id = y; id >= 0 && !bad; id--) /* a held node keeps its adjoint to itself */
-        if (adj[id] >= 0 && !stop[id])
+    for (int id = y; id >= 0 && !bad; id--) { /* a held node keeps its adjoint to itself */
+        if (stop[id])
+            continue;
+        if (g->nodes[id].op == SN_EXT)
+            bad = routine_adjoint(g, id, y, stop, adj) != 0;
+        else if (adj[id] >= 0)
             bad = propagate(g, g->nodes[id], id, adj[id], adj) != 0; /* a copy: g grows */
+    }
     for (int k = 0; k < n; k++)
         dydx[k] = x[k] <= y && adj[x[k]] >= 0 ? adj[x[k]] : num(g, 0);
     free(stop);

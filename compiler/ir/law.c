@@ -12,6 +12,7 @@
 #include "model/eval.h"
 #include "law.h"
 #include "lang/builtins.h"
+#include "spectral.h"
 
 typedef struct {
     int tensor;  /* 0 scalar, 1 tensor */
@@ -34,6 +35,7 @@ typedef struct {
     int nenv, capenv;
     int has_stress, has_energy;
     int energy_line;   /* the line of the law's (not the tension block's) energy */
+    int tension_energy_line; /* the line of the tension block's energy (psi+) */
     const char *of;    /* the energy is a function of C or E (bound instead of F), or NULL */
     Val var;           /* its variables (symmetric_variable) */
     int want_tension;  /* evaluate the tension block (fracture) */
@@ -161,7 +163,7 @@ static Val t_pos(Law *L, Val a)
         plane &= (k == 2 || k == 6) || a.t[k] == zero;
     if (plane) {
         int args[3] = {a.t[0], a.t[2], a.t[8]};
-        int ext = sg_ext(L->g, "sph_sym_pos2", args, 3, 3);
+        int ext = sg_ext(L->g, SPECTRAL_POS2, args, 3, 3);
         for (int k = 0; k < 9; k++)
             r.t[k] = zero;
         r.t[0] = sg_part(L->g, ext, 0);
@@ -173,7 +175,7 @@ static Val t_pos(Law *L, Val a)
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             args[3 * i + j] = a.t[i <= j ? 3 * i + j : 3 * j + i];
-    int ext = sg_ext(L->g, "sph_sym_pos3", args, 9, 9);
+    int ext = sg_ext(L->g, SPECTRAL_POS3, args, 9, 9);
     for (int k = 0; k < 9; k++)
         r.t[k] = sg_part(L->g, ext, k);
     return r;
@@ -573,7 +575,8 @@ static int if_stmt(Law *L, const MatStmt *s)
 }
 
 /* tension { let ...; energy psi = ...; stress S = ... }: the tensile parts psi+ and S+
- * (eq. 11, 17, 20, 31), both required; the compressive parts are the rest (psi- = psi -
+ * (eq. 11, 17, 20, 31); the energy is required, the stress derived from it where the block
+ * does not write it (derive_stresses); the compressive parts are the rest (psi- = psi -
  * psi+, S- = S - S+).  Its names are local to it.  Evaluated only for fracture bodies. */
 static int tension_block(Law *L, const MatStmt *blk)
 {
@@ -592,9 +595,9 @@ static int tension_block(Law *L, const MatStmt *blk)
         bad |= statement(L, &blk->body.items[i]) != 0;
     L->in_tension = 0;
     L->nenv = mark;
-    if (!bad && (!(L->has_stress & 2) || !(L->has_energy & 2))) {
-        diag_error(blk->loc, "the tension block of material '%s' needs both 'energy' (psi+) "
-                             "and 'stress' (S+)",
+    if (!bad && !(L->has_energy & 2)) {
+        diag_error(blk->loc, "the tension block of material '%s' needs 'energy' (psi+; its "
+                             "'stress' S+ is derived from it when not written)",
                    L->law->name);
         bad = 1;
     }
@@ -642,8 +645,7 @@ static int statement(Law *L, const MatStmt *s)
         if (!ok(v))
             return -1;
         *(L->in_tension ? &L->out.psip : &L->out.psi) = v.s;
-        if (!L->in_tension)
-            L->energy_line = s->loc.line;
+        *(L->in_tension ? &L->tension_energy_line : &L->energy_line) = s->loc.line;
         bind(L, s->name, v);
         return 0;
     case MS_BLOCK:
@@ -704,13 +706,24 @@ static void degrade(SGraph *g, LawRoots *r)
                         sg_binary(g, SN_SUB, r->psi, r->psip));
 }
 
-/* Whether the law writes its stress (at its top level: not in an if block, nor in the
- * tension block). */
-static int writes_stress(const MaterialDef *law)
+/* Whether a list of statements writes a stress (at its top level: not in an if block, nor
+ * in a block). */
+static int writes_stress(const MatStmtList *body)
 {
-    for (int i = 0; i < law->body.n; i++)
-        if (law->body.items[i].kind == MS_STRESS)
+    for (int i = 0; i < body->n; i++)
+        if (body->items[i].kind == MS_STRESS)
             return 1;
+    return 0;
+}
+
+/* Whether the law has a tension block that gives psi+ only (its S+ to be derived). */
+static int derives_tension(const MaterialDef *law)
+{
+    for (int i = 0; i < law->body.n; i++) {
+        const MatStmt *s = &law->body.items[i];
+        if (s->kind == MS_BLOCK && !strcmp(s->name, "tension") && !writes_stress(&s->body))
+            return 1;
+    }
     return 0;
 }
 
@@ -747,33 +760,47 @@ static void fold_plane_strain(Law *L)
         *slots[k] = out[k];
 }
 
-/* S = F^-1 dpsi/dF: the stress of a law that gives only its energy (a hyperelastic law is its
- * strain energy; P = dpsi/dF, S = F^-1 P).  A law with state is differentiated at its
- * returned state: the state's values at the end of the step are held fixed (for J2,
- * 2 dpsi/dC at the returned C_p, eq. 37-38).  The derivatives stand under the energy's
- * line. */
-static int derive_stress(Law *L, int dim)
+/* S = F^-1 dpsi/dF (eq. 10, 17: S = 2 dpsi/dC) of energy psi, under the energy's line:
+ * the stress of a law that gives only its energy (a hyperelastic law is its strain energy;
+ * P = dpsi/dF, S = F^-1 P), and S+ of a tension block that gives only psi+ (eq. 11, 17).
+ * A law with state is differentiated at its returned state: the state's values at the end
+ * of the step are held fixed (for J2, 2 dpsi/dC at the returned C_p, eq. 37-38).  pos and
+ * neg differentiate by their adjoint routine (spectral.c).  Returns 0, or -1 after
+ * reporting. */
+static int derive(Law *L, int psi, int line, int S[9])
 {
     const Val F = L->of ? L->var : find_binding(L, "F")->v;
     int P[9];
-    L->g->line = L->energy_line;
-    if (sg_derivatives_held(L->g, L->out.psi, F.t, 9, L->out.next, L->out.nslots, P)) {
-        diag_error(L->law->loc, "material '%s': its energy uses pos or neg, whose derivative "
-                   "sphc does not take yet; write its stress", L->law->name);
+    L->g->line = line;
+    if (sg_derivatives_held(L->g, psi, F.t, 9, L->out.next, L->out.nslots, P)) {
+        diag_error(L->law->loc, "material '%s': its energy uses a runtime routine that sphc "
+                   "cannot differentiate; write its stress", L->law->name);
         return -1;
     }
     if (L->of) { /* S = 2 dpsi/dC or dpsi/dE; an off-diagonal variable stands for two entries */
         const double diag = !strcmp(L->of, "C") ? 2.0 : 1.0;
         for (int k = 0; k < 9; k++)
-            L->out.S[k] = sg_binary(L->g, SN_MUL, sg_const(L->g, k % 4 ? 0.5 * diag : diag),
-                                    P[k / 3 <= k % 3 ? k : (k % 3) * 3 + k / 3]);
+            S[k] = sg_binary(L->g, SN_MUL, sg_const(L->g, k % 4 ? 0.5 * diag : diag),
+                             P[k / 3 <= k % 3 ? k : (k % 3) * 3 + k / 3]);
         return 0;
     }
     Val Pv = {1, -1, {0}};
     memcpy(Pv.t, P, sizeof P);
-    Val S = t_matmul(L, t_inverse(L, F), Pv);
-    memcpy(L->out.S, S.t, sizeof S.t);
-    if (dim == 2)
+    Val Sv = t_matmul(L, t_inverse(L, F), Pv);
+    memcpy(S, Sv.t, sizeof Sv.t);
+    return 0;
+}
+
+/* The stresses the law does not write, derived from its energies: S from psi, S+ from psi+
+ * (the tension block's); in 2D the plane-strain constants are then put for F's
+ * out-of-plane entries (unless the energy is a function of C or E: variables_to_F). */
+static int derive_stresses(Law *L, int dim, int stress, int tension)
+{
+    if (stress && derive(L, L->out.psi, L->energy_line, L->out.S))
+        return -1;
+    if (tension && derive(L, L->out.psip, L->tension_energy_line, L->out.Sp))
+        return -1;
+    if (dim == 2 && !L->of)
         fold_plane_strain(L);
     return 0;
 }
@@ -872,14 +899,15 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *p
     L.params = params;
     L.g->line = law->loc.line;
     L.g->file = law->loc.file;
-    const int derived = !writes_stress(law);
+    const int derived = !writes_stress(&law->body);
+    const int derived_p = tension && derives_tension(law);
     L.of = energy_variable(law);
     if (L.of && !*L.of)
         return -1;
     if (L.of)
         bind(&L, L.of, L.var = symmetric_variable(&L, L.of));
     else
-        bind(&L, "F", F_value(&L, dim, derived));
+        bind(&L, "F", F_value(&L, dim, derived || derived_p));
     int bad = 0;
     for (int i = 0; i < law->body.n; i++)
         bad |= statement(&L, &law->body.items[i]) != 0;
@@ -894,8 +922,8 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *p
         for (int k = 0; k < st->size; k++)
             L.out.next[st->offset + k] = st->size == 1 ? end.s : end.t[k];
     }
-    if (!bad && derived)
-        bad = derive_stress(&L, dim) != 0;
+    if (!bad && (derived || (derived_p && L.out.has_tension)))
+        bad = derive_stresses(&L, dim, derived, derived_p && L.out.has_tension) != 0;
     if (!bad && L.of)
         variables_to_F(&L, dim);
     free(L.env);

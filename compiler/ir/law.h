@@ -18,7 +18,8 @@ typedef struct {
     int S[9];   /* second Piola–Kirchhoff stress, row-major 3×3 */
     int psi;    /* strain energy density */
     int has_tension;
-    int Sp[9];  /* its tensile part S+ (eq. 17, 31), from the law's `tension` block */
+    int Sp[9];  /* its tensile part S+ (eq. 17, 31), from the law's `tension` block (written,
+                 * or derived from psi+) */
     int psip;   /* the tensile energy psi+ (eq. 11, 20) */
     int Sd[9];  /* degraded by the phase field s: S = s^2 S+ + S- (eq. 18) */
     int psid;   /* psi = s^2 psi+ + psi- (eq. 7) */

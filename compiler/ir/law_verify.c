@@ -6,8 +6,10 @@
  * round-off the stress is not the energy's (a typo, a factor of 2, eq. 52 as printed), and
  * the compiler warns at the `stress` statement.  A law with state is differentiated at its
  * returned state (the state's end values held fixed, as the derived stress is); the
- * `tension` block's S+ is checked against psi+ alike, unless psi+ uses pos or neg, whose
- * derivative is not taken. */
+ * `tension` block's S+ is checked against psi+ alike, pos and neg differentiated by their
+ * adjoint routine (spectral.c): stdlib svk's S+ = lambda max(tr E, 0) I + 2 mu pos(E)
+ * (eq. 17) agrees with its psi+ (eq. 11) to 1e-15, compression and mixed-sign principal
+ * strains among the samples. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -102,7 +104,7 @@ static void solve(const double F[9], const double P[9], double S[9])
 
 /* The largest max |S - S_d| / max(|S|, |S_d|), S_d = F^-1 dpsi/dF with the state's end
  * values held, over the samples (*at: where).  Returns 0, or -1 when psi's derivative is not
- * available (pos, neg). */
+ * available (a runtime routine without a rule). */
 static int worst_difference(SGraph *g, const LawRoots *r, const int *S, int psi,
                             double *worst, int *at)
 {

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "scalar.h"
+#include "spectral.h"
 #include "lang/arith.h"
 #include "lang/builtins.h"
 #include "util/source.h"
@@ -254,6 +255,9 @@ int sg_ext(SGraph *g, const char *fn, const int *args, int nargs, int nout)
 
 int sg_part(SGraph *g, int ext, int k)
 {
+    const int folded = spectral_fold_part(g, ext, k); /* pos of a plane-strain tensor */
+    if (folded >= 0)
+        return folded;
     SNode s = node(SN_PART, ext, -1, -1);
     s.v = k;
     return intern(g, s);

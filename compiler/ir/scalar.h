@@ -21,7 +21,8 @@ typedef enum {
     SN_PART    /* output (int)v of the SN_EXT node a */
 } SnOp;
 
-#define SG_MAX_ARGS 9
+/* The most operands of a runtime routine: a tensor and an adjoint (spectral.h). */
+#define SG_MAX_ARGS 18
 
 typedef struct {
     SnOp op;
@@ -56,7 +57,8 @@ int sg_call(SGraph *g, int fn, int a);           /* fn: a BF_CALL built-in, BI_s
 int sg_select(SGraph *g, int c, int a, int b);
 /* A call of a runtime routine with nargs scalar inputs and nout outputs; its outputs are
  * sg_part(g, ext, k).  Emitted as `double tN[nout]; fn(a0, ..., tN);` (inputs passed as
- * one array when there are more than four). */
+ * one array when there are more than four).  sg_part folds a spectral routine of a
+ * plane-strain tensor to its 2D closed form (spectral.h). */
 int sg_ext(SGraph *g, const char *fn, const int *args, int nargs, int nout);
 int sg_part(SGraph *g, int ext, int k);
 
@@ -65,8 +67,9 @@ int sg_is_const(const SGraph *g, int id, double *v);
 double sg_apply(SnOp op, double x, double y);
 
 /* The values of nodes 0 .. upto (into val[0 .. upto]): an input is input(name, index, ctx),
- * a law parameter params[index] (NaN without params), a runtime routine's outputs NaN (not
- * evaluated in the compiler).  A reference interpreter of the graph (scalar_eval.c). */
+ * a law parameter params[index] (NaN without params), a runtime routine's outputs by the
+ * routine itself (spectral.h; NaN for one the compiler does not know).  A reference
+ * interpreter of the graph (scalar_eval.c). */
 typedef double (*SgInput)(const char *name, int index, void *ctx);
 void sg_eval(const SGraph *g, int upto, SgInput input, void *ctx, const double *params,
              double *val);
@@ -79,8 +82,10 @@ int sg_substitute(SGraph *g, const int *roots, int nroots, int (*input)(const SN
 
 /* Reverse-mode derivatives of node y with respect to nodes x[0 .. n-1] (inputs, usually),
  * built into the graph (so folded and shared as any node) into dydx: the derivative of the
- * branch taken for select, min, max and abs, 0 for comparisons.  Returns 0, or -1 when y
- * depends on a node the rules do not cover (a runtime routine, SN_EXT).  derivative.c. */
+ * branch taken for select, min, max and abs, 0 for comparisons; through a spectral routine
+ * (pos, SN_EXT) by its adjoint routine (spectral.h).  Returns 0, or -1 when y depends on a
+ * node the rules do not cover (another runtime routine, an adjoint routine itself).
+ * derivative.c. */
 int sg_derivatives(SGraph *g, int y, const int *x, int n, int *dydx);
 /* The same with nodes held[0 .. nheld-1] held fixed: taken as independent of x (a path from
  * y to x through a held node adds nothing), as if each were a fresh input put back after

@@ -1,14 +1,92 @@
-/* plan_dump.c — the plan as text (sphc --dump=plan): per body its features and the
- * material law's graph as the generated code will compute it. */
+/* plan_dump.c — the plan as text (sphc --dump=plan): per body its features, how its material
+ * law gets its stress (written, or derived from its energy) with the size of what the
+ * generated function computes, and the law's graph as the generated code will compute it. */
+#include <stdlib.h>
+#include <string.h>
 
 #include "plan.h"
 
-static int count_ops(const SGraph *g)
+/* The operations that computing roots[0 .. n-1] takes: the nodes they reach, less constants,
+ * inputs, parameters and a runtime routine's outputs (the routine's call counts once). */
+static int reach(const SGraph *g, const int *roots, int n)
 {
-    int n = 0;
-    for (int id = 0; id < g->n; id++)
-        n += g->nodes[id].op > SN_PARAM;
-    return n;
+    char *seen = calloc((size_t)g->n + 1, 1);
+    int *stack = malloc(((size_t)g->n + 1) * sizeof *stack), top = 0, ops = 0;
+    for (int k = 0; k < n; k++)
+        if (roots[k] >= 0 && !seen[roots[k]])
+            seen[roots[k]] = 1, stack[top++] = roots[k];
+    while (top > 0) {
+        const SNode *s = &g->nodes[stack[--top]];
+        ops += s->op > SN_PARAM && s->op != SN_PART;
+        int next[3 + SG_MAX_ARGS], nn = 0;
+        next[nn++] = s->a, next[nn++] = s->b, next[nn++] = s->c;
+        for (int k = 0; s->op == SN_EXT && k < s->nargs; k++)
+            next[nn++] = s->args[k];
+        for (int k = 0; k < nn; k++)
+            if (next[k] >= 0 && !seen[next[k]])
+                seen[next[k]] = 1, stack[top++] = next[k];
+    }
+    free(stack);
+    free(seen);
+    return ops;
+}
+
+/* The law's top-level energy statement, or its tension block. */
+static const MatStmt *law_statement(const MatStmtList *l, MatStmtKind kind, const char *name)
+{
+    for (int i = 0; i < l->n; i++)
+        if (l->items[i].kind == kind && (!name || !strcmp(l->items[i].name, name)))
+            return &l->items[i];
+    return NULL;
+}
+
+/* How the law gets its stress: written, or derived from the energy (and how). */
+static void stress_source(const MaterialDef *law, FILE *out)
+{
+    if (law_statement(&law->body, MS_STRESS, NULL)) {
+        fputs("stress written", out);
+        return;
+    }
+    const MatStmt *e = law_statement(&law->body, MS_ENERGY, NULL);
+    const char *of = e ? e->of : NULL;
+    fprintf(out, "stress derived from energy psi(%s), S = %s", of ? of : "F",
+            !of ? "F^-1 dpsi/dF" : !strcmp(of, "C") ? "2 dpsi/dC" : "dpsi/dE");
+    if (law_statement(&law->body, MS_STATE, NULL))
+        fputs(" at the returned state", out);
+}
+
+/* "material law: stress ...; N operations (S a, psi b, state c)" and, with fracture, the
+ * tension block's line: what the body's material function computes. */
+static void law_summary(const BodyPlan *p, const MaterialDef *law, FILE *out)
+{
+    const LawRoots *r = &p->roots;
+    const SGraph *g = &p->law;
+    int all[9 + 1 + LAW_MAX_SLOTS], n = 0;
+    for (int k = 0; k < 9; k++)
+        all[n++] = r->S[k];
+    all[n++] = r->psi;
+    for (int k = 0; k < p->nstate; k++)
+        all[n++] = r->next[k];
+    fputs("  material law: ", out);
+    stress_source(law, out);
+    if (r->has_tension) { /* the function computes the degraded law only */
+        fprintf(out, "; S %d, psi %d operations\n", reach(g, r->S, 9), reach(g, &r->psi, 1));
+        const MatStmt *t = law_statement(&law->body, MS_BLOCK, "tension");
+        const int written = t && law_statement(&t->body, MS_STRESS, NULL);
+        int deg[9 + 2];
+        memcpy(deg, r->Sd, sizeof r->Sd);
+        deg[9] = r->psid, deg[10] = r->psip;
+        fprintf(out, "  tension block: S+ %s; S+ %d, psi+ %d operations; degraded S, psi, psi+ "
+                     "(eq. 7, 18): %d operations\n",
+                written ? "written" : "derived from psi+", reach(g, r->Sp, 9),
+                reach(g, &r->psip, 1), reach(g, deg, 11));
+        return;
+    }
+    fprintf(out, "; %d operations (S %d, psi %d", reach(g, all, n), reach(g, r->S, 9),
+            reach(g, &r->psi, 1));
+    if (p->nstate > 0)
+        fprintf(out, ", state %d", reach(g, r->next, p->nstate));
+    fputs(")\n", out);
 }
 
 void plan_dump(const Plan *plan, FILE *out)
@@ -26,7 +104,7 @@ void plan_dump(const Plan *plan, FILE *out)
         PLAN_FEATURES(PLAN_DUMP)
 #undef PLAN_DUMP
         fputs("\n", out);
-        fprintf(out, "  material law: %d graph nodes\n", count_ops(&p->law));
+        law_summary(p, b->law, out);
         plan_law_print(p, 0, 0, out);
         if (p->roots.has_tension) {
             fputs("  degraded by the phase field (eq. 7, 18):\n", out);

@@ -1,5 +1,6 @@
 /* derived_check.h — the body of test_derived2d.c and test_derived3d.c: each law's derived S
- * and psi against the hand-written ones at 200 random deformation gradients (stretches of
+ * and psi, the standard library's svk and neohookean among them, against the hand-written
+ * ones of handwritten.sph at 200 random deformation gradients (stretches of
  * up to 30 %, shears, rotations; in 2D the out-of-plane row and column of F are those of
  * plane strain).  S agrees to round-off: relative 1e-9 of the largest entry. */
 #include "check.h"
@@ -43,5 +44,9 @@ int main(void)
                 worst_difference(svk_hand_material, svk_of_e_material), 0, 1e-9);
     check_close("neo-Hookean as psi(C): S = 2 dpsi/dC vs hand-written (relative)",
                 worst_difference(nh_hand_material, nh_of_c_material), 0, 1e-9);
+    check_close("stdlib svk: S, psi vs hand-written (relative)",
+                worst_difference(svk_hand_material, svk_lib_material), 0, 1e-9);
+    check_close("stdlib neohookean: S, psi vs hand-written (relative)",
+                worst_difference(nh_hand_material, nh_lib_material), 0, 1e-9);
     return check_result();
 }

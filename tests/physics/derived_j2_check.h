@@ -1,6 +1,7 @@
 /* derived_j2_check.h — the body of test_derived_j2.c and test_derived_j2_2d.c: laws with
  * state written as their energy only (derived_j2.sph, derived_j2_2d.sph) against the
- * hand-written law at 400 random deformations, each from a random state.
+ * hand-written law (handwritten.sph's j2_written), and the standard library's j2 with it, at
+ * 400 random deformations, each from a random state.
  *
  * A trial stretches a point from the initial state to a random F1 with the hand-written law
  * (its state then holds the plastic metric, ep and wp of one return), then moves it to F2 =
@@ -106,16 +107,20 @@ static double damage_difference(StateLaw law, int *grows, int *keeps)
 
 int main(void)
 {
-    double state_diff, state_diff_c;
-    int plastic, elastic, plastic_c, elastic_c, grows, keeps;
+    double state_diff, state_diff_c, state_diff_l;
+    int plastic, elastic, plastic_c, elastic_c, plastic_l, elastic_l, grows, keeps;
     const double s = j2_difference(j2_hand_material, j2_derived_material, &state_diff, &plastic,
                                    &elastic);
     const double sc = j2_difference(j2_hand_material, j2_of_c_material, &state_diff_c,
                                     &plastic_c, &elastic_c);
-    check_close("J2 energy only: S, psi vs stdlib j2 (relative)", s, 0, 1e-9);
+    const double sl = j2_difference(j2_hand_material, j2_lib_material, &state_diff_l,
+                                    &plastic_l, &elastic_l);
+    check_close("J2 energy only: S, psi vs hand-written (relative)", s, 0, 1e-9);
     check_close("J2 energy only: Cp, ep, wp at the end (relative)", state_diff, 0, 1e-12);
-    check_close("J2 as psi(C): S, psi vs stdlib j2 (relative)", sc, 0, 1e-9);
+    check_close("J2 as psi(C): S, psi vs hand-written (relative)", sc, 0, 1e-9);
     check_close("J2 as psi(C): Cp, ep, wp at the end (relative)", state_diff_c, 0, 1e-12);
+    check_close("stdlib j2: S, psi vs hand-written (relative)", sl, 0, 1e-9);
+    check_close("stdlib j2: Cp, ep, wp at the end (relative)", state_diff_l, 0, 1e-12);
     check_close("trials whose second step flows (at least 50)", plastic >= 50, 1, 0);
     check_close("trials whose second step is elastic (at least 50)", elastic >= 50, 1, 0);
     printf("  flowing %d, elastic %d of %d trials\n", plastic, elastic, TRIALS);
