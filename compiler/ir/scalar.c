@@ -152,6 +152,35 @@ static int commutative(SnOp op)
            op == SN_NE || op == SN_AND || op == SN_OR;
 }
 
+/* Whether v is a power of two, 2^e with a normal result: multiplying by it is exact (the
+ * exponent moves, the significand stays), unless the product leaves the normal range. */
+static int power_of_two(double v)
+{
+    int e;
+    return isnormal(v) && fabs(frexp(v, &e)) == 0.5;
+}
+
+/* k * (c * z) as (k c) * z where that is the same number to the last bit: one of k, c a
+ * power of two and k c a normal number (the derivative's chains of factors, 0.5 * (2 * x),
+ * fold away).  Returns a node id or -1. */
+static int fold_factors(SGraph *g, double k, int m)
+{
+    const SNode *n = &g->nodes[m];
+    double c;
+    if (n->op != SN_MUL)
+        return -1;
+    int z = n->b;
+    if (!sg_is_const(g, n->a, &c)) {
+        if (!sg_is_const(g, n->b, &c))
+            return -1;
+        z = n->a;
+    }
+    const double kc = k * c;
+    if (!(power_of_two(k) || power_of_two(c)) || !(isnormal(kc) || kc == 0.0))
+        return -1;
+    return sg_binary(g, SN_MUL, sg_const(g, kc), z);
+}
+
 /* Algebraic identities with one constant operand; returns a node id or -1. */
 static int fold_identity(SGraph *g, SnOp op, int a, int b)
 {
@@ -161,6 +190,7 @@ static int fold_identity(SGraph *g, SnOp op, int a, int b)
     case SN_ADD:
         if (ca && x == 0.0) return b;
         if (cb && y == 0.0) return a;
+        if (a == b) return sg_binary(g, SN_MUL, sg_const(g, 2.0), a); /* (exact) */
         break;
     case SN_SUB:
         if (cb && y == 0.0) return a;
@@ -173,6 +203,8 @@ static int fold_identity(SGraph *g, SnOp op, int a, int b)
         if (cb && y == 1.0) return a;
         if (ca && x == -1.0) return sg_unary(g, SN_NEG, b);
         if (cb && y == -1.0) return sg_unary(g, SN_NEG, a);
+        if (ca) return fold_factors(g, x, b);
+        if (cb) return fold_factors(g, y, a);
         break;
     case SN_DIV:
         if (cb && y == 1.0) return a;

@@ -348,8 +348,37 @@ static int b_sel(SGraph *g, int a, int b)
     return sg_select(g, sg_binary(g, SN_LT, a, b), sg_binary(g, SN_MUL, a, a), sg_binary(g, SN_MUL, a, b));
 }
 
+/* The folding of factors as the graph is built: x + x is 2 x, and k (c x) is (k c) x where k
+ * or c is a power of two; each gives the unfolded arithmetic's number to the last bit, here
+ * at random x and factors c (the unfolded value computed in C, operation by operation). */
+static void factor_checks(void)
+{
+    int folded = 1, wrong = 0;
+    for (int trial = 0; trial < 1000; trial++) {
+        SGraph g;
+        sg_init(&g);
+        const int x = sg_input(&g, "x", 0);
+        const double c = 1e-3 + 1e4 * urand(), xv = 2 * urand() - 1;
+        const int cx = sg_binary(&g, SN_MUL, sg_const(&g, c), x);
+        const int twice = sg_binary(&g, SN_ADD, cx, cx);           /* 2 (c x) */
+        const int y = sg_binary(&g, SN_MUL, sg_const(&g, 0.5), twice); /* 0.5 (2 (c x)) */
+        const int z = sg_binary(&g, SN_MUL, sg_const(&g, 0.25), sg_binary(&g, SN_MUL,
+                                sg_const(&g, c), sg_binary(&g, SN_ADD, x, x)));
+        folded &= y == cx && g.nodes[twice].op == SN_MUL;
+        const double cxv = c * xv;
+        wrong += value_at(&g, twice, &xv, 1) != cxv + cxv;
+        wrong += value_at(&g, y, &xv, 1) != 0.5 * (cxv + cxv);
+        wrong += value_at(&g, z, &xv, 1) != 0.25 * (c * (xv + xv));
+        sg_free(&g);
+    }
+    check(folded, "0.5 (c x + c x) folds to the node c x; x + x to a product", 0, 0);
+    check(wrong == 0, "folded factors give the unfolded numbers to the last bit (1000 x)",
+          wrong, 0);
+}
+
 int main(void)
 {
+    factor_checks();
     static const struct { const char *name; Build build; } ops[] = {
         {"a + b", b_add}, {"a - b", b_sub}, {"a b", b_mul}, {"a / b", b_div},
         {"(-a) b", b_neg}, {"a ^ b", b_pow}, {"a ^ (-2/3) b", b_powc}, {"min(a, b)", b_min},
