@@ -68,4 +68,8 @@ typedef struct {
 int sph_expect_evaluate(const sph_model *m, const sph_record *r, sph_json *j, int quiet,
                         char *errors, size_t len);
 
+/* partition_report.c: --partition N, each body's decomposition for N processes printed
+ * (particles and halo per part); 0, or -1 after a message. */
+int sph_partition_report(const sph_model *m, int nparts);
+
 #endif

@@ -1,7 +1,7 @@
 /* options.c — the command line of a generated program.
  *
  *   --out DIR  --threads N  --end T  --every T  --frames T  --checkpoint T  --restart FILE
- *   --overwrite  --quiet  --progress T  --profile  --help | -h
+ *   --overwrite  --quiet  --progress T  --profile  --partition N  --help | -h
  *
  * Options with a value also accept the spelling --opt=value. */
 #include "output.h"
@@ -14,7 +14,7 @@
 
 typedef enum {
     OPT_OUT, OPT_THREADS, OPT_END, OPT_EVERY, OPT_FRAMES, OPT_CHECKPOINT, OPT_RESTART,
-    OPT_OVERWRITE, OPT_QUIET, OPT_PROGRESS, OPT_PROFILE, OPT_HELP
+    OPT_OVERWRITE, OPT_QUIET, OPT_PROGRESS, OPT_PROFILE, OPT_PARTITION, OPT_HELP
 } opt_id;
 
 typedef struct {
@@ -28,7 +28,8 @@ static const opt_info OPTIONS[] = {
     {"--every", OPT_EVERY, 1}, {"--frames", OPT_FRAMES, 1},   {"--checkpoint", OPT_CHECKPOINT, 1},
     {"--restart", OPT_RESTART, 1}, {"--overwrite", OPT_OVERWRITE, 0},
     {"--quiet", OPT_QUIET, 0},     {"--progress", OPT_PROGRESS, 1},
-    {"--profile", OPT_PROFILE, 0}, {"--help", OPT_HELP, 0},       {"-h", OPT_HELP, 0},
+    {"--profile", OPT_PROFILE, 0}, {"--partition", OPT_PARTITION, 1},
+    {"--help", OPT_HELP, 0},       {"-h", OPT_HELP, 0},
 };
 #define NOPTIONS (int)(sizeof OPTIONS / sizeof OPTIONS[0])
 
@@ -65,6 +66,8 @@ static void usage(FILE *f, const char *prog, const char *model)
             "                terminal (a log; default 10, 0: none)\n"
             "  --profile     the time each pass of the step takes, printed at the end and\n"
             "                written to summary.json\n"
+            "  --partition N  report how each body would be decomposed for N processes\n"
+            "                (particles and halo per part) and exit, without running\n"
             "  -h, --help    show this help and exit\n",
             prog, model, model);
 }
@@ -135,6 +138,7 @@ static int set_value(sph_options *o, opt_id id, const char *name, const char *va
         o->out_dir = value;
         break;
     case OPT_THREADS: bad = parse_positive_int(value, &o->threads); break;
+    case OPT_PARTITION: bad = parse_positive_int(value, &o->partition); break;
     case OPT_END:     bad = parse_positive_double(value, &o->t_end); break;
     case OPT_EVERY:   bad = parse_positive_double(value, &o->t_out); break;
     case OPT_FRAMES:  bad = parse_positive_double(value, &o->t_frames); break;

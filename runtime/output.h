@@ -101,6 +101,7 @@ void sph_profile_print(FILE *f, const char *model, long steps, const sph_profile
 typedef struct {
     const char *out_dir;  /* --out DIR (default "<model>_out") */
     int threads;          /* --threads N (0 = OpenMP default) */
+    int partition;        /* --partition N: report the decomposition and exit (0: run) */
     double t_end;         /* --end T   (< 0: model's) */
     double t_out;         /* --every T (< 0: model's) */
     double t_frames;      /* --frames T: particle files every T (< 0: every output) */

@@ -717,6 +717,8 @@ int sph_main(const sph_model *m, int argc, char **argv)
         return rc < 0 ? SPH_EXIT_OPTIONS : 0;
     if (r.opt.threads > 0)
         omp_set_num_threads(r.opt.threads);
+    if (r.opt.partition > 0) /* a report, no run (docs/mpi.md) */
+        return sph_partition_report(m, r.opt.partition) ? SPH_EXIT_SETUP : 0;
     /* fewer threads while the machine is busy, unless told how many (a device target's
      * host threads only copy and check) */
     sph_team_init(&r.team, omp_get_max_threads(), r.opt.threads > 0 || m->advance);
