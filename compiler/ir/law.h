@@ -43,6 +43,9 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *p
  * round-off; a law with state is differentiated at its returned state.  Returns the number
  * of warnings (law_verify.c). */
 int law_verify(const Model *m, const MaterialDef *law, const double *params);
+/* A warning, at the body, when its law's small-strain shear or bulk modulus is not the
+ * body's (the sound speed of eq. 59 follows the body's); returns the number of warnings. */
+int law_verify_moduli(const Model *m, const BodyModel *b);
 
 /* Check a law's statements symbolically (its parameters unknown, in 3D, with its tension
  * block): the checker's test of every material law.  Returns 0, or -1 after reporting. */

@@ -187,3 +187,44 @@ int law_verify(const Model *m, const MaterialDef *law, const double *params)
     sg_free(&g);
     return warnings;
 }
+
+/* The law's small-strain moduli against the body's elastic constants, from which the sound
+ * speed (eq. 59), hence the time step (eq. 64) and the artificial viscosity (eq. 58), come:
+ * a law with parameters of its own (Mooney-Rivlin's c10, c01) may mean a shear modulus the
+ * body does not give.  S at a simple shear gamma is mu gamma, at a dilatation (1 + eps) I it is
+ * 3 K (eps + eps^2 / 2): both to a relative 1e-6 at 1e-6; LAW_MODULI_TOLERANCE is far above. */
+#define LAW_MODULI_TOLERANCE 1e-3
+
+int law_verify_moduli(const Model *m, const BodyModel *b)
+{
+    if (b->c0_set > 0) /* the body gives its sound speed */
+        return 0;
+    SGraph g;
+    sg_init(&g);
+    LawRoots r;
+    int warnings = 0;
+    if (law_build(&g, m, b->law, b->law_args, 3, 0, &r) == 0) {
+        const double t = 1e-6;
+        double shear[9] = {1, t, 0, 0, 1, 0, 0, 0, 1}, dilate[9] = {1 + t, 0, 0, 0, 1 + t, 0, 0,
+                                                                      0, 1 + t};
+        double *val = malloc((size_t)g.n * sizeof *val);
+        Point p = {shear, &r};
+        sg_eval(&g, g.n - 1, input_at, &p, NULL, val);
+        const double mu = val[r.S[1]] / t;
+        p.F = dilate;
+        sg_eval(&g, g.n - 1, input_at, &p, NULL, val);
+        const double K = val[r.S[0]] / (3 * (t + 0.5 * t * t));
+        free(val);
+        const double dmu = fabs(mu - b->mu) / b->mu, dK = fabs(K - b->K) / b->K;
+        if (isfinite(mu) && isfinite(K) && (dmu > LAW_MODULI_TOLERANCE || dK > LAW_MODULI_TOLERANCE)) {
+            diag_warning(b->loc, "body '%s': its material '%s' has a small-strain shear modulus "
+                         "%.6g Pa and bulk modulus %.6g Pa, the body's elastic constants %.6g and "
+                         "%.6g; the sound speed (eq. 59), the time step and the viscosity follow "
+                         "the body's (give them as shear and bulk, or the body's soundspeed)",
+                         b->name, b->law->name, mu, K, b->mu, b->K);
+            warnings++;
+        }
+    }
+    sg_free(&g);
+    return warnings;
+}

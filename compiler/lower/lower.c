@@ -71,6 +71,8 @@ int lower_model(const Model *m, Plan *plan)
             law_build(&p->law, m, b->law, b->law_args, m->dim, b->fracture.on, &p->roots) == 0;
         if (built && first_use(m, i))
             law_verify(m, b->law, b->law_args);
+        if (built)
+            law_verify_moduli(m, b);
         bad |= !built;
         p->nstate = p->roots.nslots;
         features(m, b, &p->roots, p);
