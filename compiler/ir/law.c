@@ -738,26 +738,46 @@ static int plane_strain_entry(const SNode *s, void *ctx)
     return sg_const(g, r == c ? 1.0 : 0.0);
 }
 
+/* The results of a law: S, psi, the state's end values and, with a tension block, S+ and
+ * psi+ (and once degraded, the degraded S and psi): their slots in *r, into slots[];
+ * returns how many. */
+enum { LAW_MAX_RESULTS = 4 * 9 + 4 + LAW_MAX_SLOTS };
+static int result_slots(LawRoots *r, int degraded, int *slots[LAW_MAX_RESULTS])
+{
+    int n = 0;
+    for (int k = 0; k < 9; k++)
+        slots[n++] = &r->S[k];
+    slots[n++] = &r->psi;
+    for (int k = 0; k < r->nslots; k++)
+        slots[n++] = &r->next[k];
+    for (int k = 0; r->has_tension && k < 9; k++)
+        slots[n++] = &r->Sp[k];
+    if (r->has_tension)
+        slots[n++] = &r->psip;
+    for (int k = 0; r->has_tension && degraded && k < 9; k++)
+        slots[n++] = &r->Sd[k];
+    if (r->has_tension && degraded)
+        slots[n++] = &r->psid;
+    return n;
+}
+
+/* Every result of the law rebuilt with some inputs replaced (sg_substitute's `input`). */
+static void substitute_results(Law *L, int (*input)(const SNode *, void *), void *ctx)
+{
+    int *slots[LAW_MAX_RESULTS], roots[LAW_MAX_RESULTS], out[LAW_MAX_RESULTS];
+    const int n = result_slots(&L->out, 0, slots);
+    for (int k = 0; k < n; k++)
+        roots[k] = *slots[k];
+    sg_substitute(L->g, roots, n, input, ctx, out);
+    for (int k = 0; k < n; k++)
+        *slots[k] = out[k];
+}
+
 /* The 2D plane-strain constants put for F's out-of-plane inputs in every result, once the
  * derivatives with respect to them are taken. */
 static void fold_plane_strain(Law *L)
 {
-    LawRoots *r = &L->out;
-    int roots[2 * 9 + 2 + LAW_MAX_SLOTS], n = 0;
-    int *slots[2 * 9 + 2 + LAW_MAX_SLOTS];
-    for (int k = 0; k < 9; k++)
-        slots[n] = &r->S[k], roots[n++] = r->S[k];
-    slots[n] = &r->psi, roots[n++] = r->psi;
-    for (int k = 0; k < r->nslots; k++)
-        slots[n] = &r->next[k], roots[n++] = r->next[k];
-    for (int k = 0; r->has_tension && k < 9; k++)
-        slots[n] = &r->Sp[k], roots[n++] = r->Sp[k];
-    if (r->has_tension)
-        slots[n] = &r->psip, roots[n++] = r->psip;
-    int out[2 * 9 + 2 + LAW_MAX_SLOTS];
-    sg_substitute(L->g, roots, n, plane_strain_entry, L->g, out);
-    for (int k = 0; k < n; k++)
-        *slots[k] = out[k];
+    substitute_results(L, plane_strain_entry, L->g);
 }
 
 /* S = F^-1 dpsi/dF (eq. 10, 17: S = 2 dpsi/dC) of energy psi, under the energy's line:
@@ -836,44 +856,19 @@ static void variables_to_F(Law *L, int dim)
     Val v = t_matmul(L, t_transpose(F), F);
     if (!strcmp(L->of, "E"))
         v = t_map2(L, SN_MUL, t_map2(L, SN_SUB, v, identity(L)), scalar(sg_const(L->g, 0.5)));
-    LawRoots *r = &L->out;
-    int roots[3 * 9 + 3 + LAW_MAX_SLOTS], n = 0;
-    int *slots[3 * 9 + 3 + LAW_MAX_SLOTS];
-    for (int k = 0; k < 9; k++)
-        slots[n] = &r->S[k], roots[n++] = r->S[k];
-    slots[n] = &r->psi, roots[n++] = r->psi;
-    for (int k = 0; k < r->nslots; k++)
-        slots[n] = &r->next[k], roots[n++] = r->next[k];
-    for (int k = 0; r->has_tension && k < 9; k++)
-        slots[n] = &r->Sp[k], roots[n++] = r->Sp[k];
-    if (r->has_tension)
-        slots[n] = &r->psip, roots[n++] = r->psip;
-    int out[3 * 9 + 3 + LAW_MAX_SLOTS];
-    sg_substitute(L->g, roots, n, input_of_F, &v, out);
-    for (int k = 0; k < n; k++)
-        *slots[k] = out[k];
+    substitute_results(L, input_of_F, &v);
 }
 
 /* A constant that is not finite in what the law computes (a division by zero, the inverse
  * of a singular constant tensor) is the model's error, at the line that computes it, not
  * the C compiler's on the generated code.  Returns 0, or -1 after reporting. */
 static int finite_results(const SGraph *g, const MaterialDef *law, const double *params,
-                          const LawRoots *r)
+                          LawRoots *r)
 {
-    int roots[3 * 9 + 3 + LAW_MAX_SLOTS], n = 0;
-    for (int k = 0; k < 9; k++)
-        roots[n++] = r->S[k];
-    roots[n++] = r->psi;
-    for (int k = 0; k < r->nslots; k++)
-        roots[n++] = r->next[k];
-    for (int k = 0; r->has_tension && k < 9; k++) {
-        roots[n++] = r->Sp[k];
-        roots[n++] = r->Sd[k];
-    }
-    if (r->has_tension) {
-        roots[n++] = r->psip;
-        roots[n++] = r->psid;
-    }
+    int *slots[LAW_MAX_RESULTS], roots[LAW_MAX_RESULTS];
+    const int n = result_slots(r, 1, slots);
+    for (int k = 0; k < n; k++)
+        roots[k] = *slots[k];
     const int id = sg_first_nonfinite(g, roots, n);
     if (id < 0)
         return 0;
