@@ -45,6 +45,7 @@ struct sph_contact {
     sph_csearch search;
     double stored, dissipated, w2max;
     double level, close; /* sph_contact_closeness's level, and the closest pair's (contact_law.h) */
+    double w2ref;      /* the largest reference omega^2 of two bodies' law */
     double *part;      /* 2 per block of active particles: its stored energy and power */
     int nblocks;       /* (the blocks' sums added in order: the same bits on any threads) */
 };
@@ -91,6 +92,8 @@ void sph_contact_init(sph_sim *s)
         for (int j = 0; j < nb; j++) {
             c->law[i * nb + j] = make_law(s->m, &s->bodies[i], &s->bodies[j]);
             c->dc[i * nb + j] = c->law[i * nb + j].dc;
+            if (i != j)
+                c->w2ref = fmax(c->w2ref, c->law[i * nb + j].w2ref);
         }
     }
     c->x = malloc(((size_t)c->n * c->dim + 1) * sizeof *c->x);
@@ -114,27 +117,16 @@ static void gather(sph_contact *c, const sph_sim *s)
     }
 }
 
-/* The closeness of particles gi and gj (sph_contact_closeness), from their positions in c->x
- * as the device computes it from its own. */
-static double pair_closeness(const sph_contact *c, int gi, int gj)
-{
-    const double *xi = c->x + (size_t)gi * c->dim, *xj = c->x + (size_t)gj * c->dim;
-    double r2 = 0;
-    for (int k = 0; k < c->dim; k++)
-        r2 += (xi[k] - xj[k]) * (xi[k] - xj[k]);
-    return sph_contact_closeness(sqrt(r2), c->dc[c->body[gi] * c->nbodies + c->body[gj]],
-                                 c->level);
-}
-
 /* Contact force on particle i (global gi) from j (global gj), contact_law.h. */
 static void pair_force(const sph_contact *c, const sph_sim *s, int gi, int gj, double dt,
-                       double f[3], double *stored, double *power, double *w2)
+                       double f[3], double *stored, double *power, double *w2, double *close)
 {
     const int D = c->dim, bi = c->body[gi], bj = c->body[gj];
     const double *vi = s->bodies[bi].v + (size_t)(gi - c->base[bi]) * D;
     const double *vj = s->bodies[bj].v + (size_t)(gj - c->base[bj]) * D;
     sph_contact_pair(&c->law[bi * c->nbodies + bj], D, c->x + (size_t)gi * D,
-                     c->x + (size_t)gj * D, vi, vj, dt, f, stored, power, w2);
+                     c->x + (size_t)gj * D, vi, vj, dt, c->level, f, stored, power, w2,
+                     close);
 }
 
 void sph_contact_forces(sph_sim *s, double dt)
@@ -162,8 +154,7 @@ void sph_contact_forces(sph_sim *s, double dt)
             const int gi = q->active[a], bi = c->body[gi];
             double fi[3] = {0, 0, 0}, f[3];
             for (int p = q->start[gi]; p < q->start[gi + 1]; p++) {
-                pair_force(c, s, gi, q->nb[p], dt, f, &stored, &power, &w2);
-                close = fmax(close, pair_closeness(c, gi, q->nb[p]));
+                pair_force(c, s, gi, q->nb[p], dt, f, &stored, &power, &w2, &close);
                 for (int k = 0; k < c->dim; k++)
                     fi[k] += f[k];
             }
@@ -241,15 +232,11 @@ double sph_contact_dt(const sph_sim *s, double step)
     const sph_contact *c = s->contact;
     if (!c)
         return INFINITY;
-    double w2ref = 0, vmax2 = 0, amax2 = 0;
-    for (int i = 0; i < c->nbodies; i++)
-        for (int j = 0; j < c->nbodies; j++)
-            if (i != j)
-                w2ref = fmax(w2ref, c->law[i * c->nbodies + j].w2ref);
+    double vmax2 = 0, amax2 = 0;
     for (int i = 0; i < s->nbodies; i++)
         vmax2 = fmax(vmax2, s->bodies[i].vmax2), amax2 = fmax(amax2, s->bodies[i].amax2);
     const int near = sph_contact_near(c->close, c->level, vmax2, amax2, s->dt, step);
-    return sph_contact_bound(c->w2max, w2ref, near);
+    return sph_contact_bound(c->w2max, c->w2ref, near);
 }
 
 void sph_contact_energies(const sph_sim *s, double *stored, double *dissipated)

@@ -31,14 +31,23 @@ SPH_HD static inline long long sph_contact_cell_of(double x, double cell)
 /* F_e ~ delta^hertz: 3/2 in 3D (Hertz), 1 in 2D (linear). */
 SPH_HD static inline double sph_contact_hertz(int dim) { return dim == 3 ? 1.5 : 1.0; }
 
+/* How close two particles of different bodies at distance r are: level less their gap
+ * r - dc, 0 when the gap is level or more.  level is half the search's skin, within which
+ * both targets see every pair (the CPU's candidates: contact_search.h; the device's cells). */
+SPH_HD static inline double sph_contact_closeness(double r, double dc, double level)
+{
+    return fmax(0.0, level - (r - dc));
+}
+
 /* The force f on particle i (position xi, velocity vi) from particle j of another body, in
  * D dimensions; adds half the pair's stored energy to *stored and half its dissipated power
- * to *power (each pair is seen from both sides), and raises *w2 to the pair's omega^2.  The
- * same arithmetic from both sides makes the two forces exactly opposite. */
+ * to *power (each pair is seen from both sides), raises *w2 to the pair's omega^2 and *close
+ * to its closeness (for `level`).  The same arithmetic from both sides makes the two forces
+ * exactly opposite. */
 SPH_HD static inline void sph_contact_pair(const sph_pair_law *L, int D, const double *xi,
                                            const double *xj, const double *vi, const double *vj,
-                                           double dt, double f[3], double *stored, double *power,
-                                           double *w2)
+                                           double dt, double level, double f[3], double *stored,
+                                           double *power, double *w2, double *close)
 {
     double n[3] = {0, 0, 0}, dv[3] = {0, 0, 0}, r2 = 0;
     f[0] = f[1] = f[2] = 0;
@@ -47,9 +56,11 @@ SPH_HD static inline void sph_contact_pair(const sph_pair_law *L, int D, const d
         dv[k] = vi[k] - vj[k];
         r2 += n[k] * n[k];
     }
+    const double r = sqrt(r2);
+    *close = fmax(*close, sph_contact_closeness(r, L->dc, level));
     if (!(r2 < L->dc * L->dc) || r2 == 0)
         return;
-    const double r = sqrt(r2), delta = L->dc - r;
+    const double delta = L->dc - r;
     double vn = 0;
     for (int k = 0; k < D; k++) {
         n[k] /= r;
@@ -80,14 +91,6 @@ enum {
     SPH_CSUM_STORED, SPH_CSUM_W2, SPH_CSUM_CLOSE, SPH_CSUM_POWER, SPH_CSUM_DISSIPATED,
     SPH_CSUM_LEVEL, SPH_NCSUM
 };
-
-/* How close two particles of different bodies at distance r are: level less their gap
- * r - dc, 0 when the gap is level or more.  level is half the search's skin, within which
- * both targets see every pair (the CPU's candidates: contact_search.h; the device's cells). */
-SPH_HD static inline double sph_contact_closeness(double r, double dc, double level)
-{
-    return fmax(0.0, level - (r - dc));
-}
 
 /* Whether a pair is in contact (close >= level: a gap of 0 or less) or may touch before the
  * next step ends, counted from where the last step's pairs were measured: within the last

@@ -194,16 +194,10 @@ static void sph_cuda_contact_pairs(sph_cuda_contact *c, sph_time dt)
                         sph_contact_cell(x + (size_t)j * D, D, cell, ck);
                         if (ck[0] != cj[0] || ck[1] != cj[1] || ck[2] != cj[2])
                             continue; /* another cell in the same bucket */
-                        const double *xj = x + (size_t)j * D;
-                        double r2 = 0;
-                        for (int k = 0; k < D; k++)
-                            r2 += (xg[k] - xj[k]) * (xg[k] - xj[k]);
-                        close = fmax(close, sph_contact_closeness(
-                                                sqrt(r2), law[bg * nb + body[j]].dc, level));
                         double f[3];
                         sph_contact_pair(&law[bg * nb + body[j]], D, xg, x + (size_t)j * D,
-                                         v + (size_t)g * D, v + (size_t)j * D, dt, f, &stored,
-                                         &power, &w2);
+                                         v + (size_t)g * D, v + (size_t)j * D, dt, level, f,
+                                         &stored, &power, &w2, &close);
                         for (int k = 0; k < D; k++)
                             fi[k] += f[k];
                     }
