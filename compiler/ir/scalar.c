@@ -409,6 +409,17 @@ static void mark_live(const SGraph *g, const int *roots, int nroots, char *live)
     }
 }
 
+int sg_operations(const SGraph *g, const int *roots, int nroots)
+{
+    char *live = calloc((size_t)g->n + 1, 1);
+    mark_live(g, roots, nroots, live);
+    int ops = 0;
+    for (int id = 0; id < g->n; id++)
+        ops += live[id] && g->nodes[id].op > SN_PARAM && g->nodes[id].op != SN_PART;
+    free(live);
+    return ops;
+}
+
 int sg_substitute(SGraph *g, const int *roots, int nroots, int (*input)(const SNode *, void *),
                   void *ctx, int *out)
 {

@@ -74,6 +74,9 @@ typedef double (*SgInput)(const char *name, int index, void *ctx);
 void sg_eval(const SGraph *g, int upto, SgInput input, void *ctx, const double *params,
              double *val);
 
+/* The operations computing roots[0 .. nroots-1] takes: the nodes they reach, less constants,
+ * inputs, parameters and a runtime routine's outputs (its call counts once). */
+int sg_operations(const SGraph *g, const int *roots, int nroots);
 /* The roots rebuilt (into out) with some inputs replaced: input(node) gives the node that
  * replaces an input, or -1 to keep it.  The rebuilt nodes are folded again (a constant
  * put for an input folds away what it zeroes); the old ones stay, dead. */

@@ -1,35 +1,9 @@
 /* plan_dump.c — the plan as text (sphc --dump=plan): per body its features, how its material
  * law gets its stress (written, or derived from its energy) with the size of what the
  * generated function computes, and the law's graph as the generated code will compute it. */
-#include <stdlib.h>
 #include <string.h>
 
 #include "plan.h"
-
-/* The operations that computing roots[0 .. n-1] takes: the nodes they reach, less constants,
- * inputs, parameters and a runtime routine's outputs (the routine's call counts once). */
-static int reach(const SGraph *g, const int *roots, int n)
-{
-    char *seen = calloc((size_t)g->n + 1, 1);
-    int *stack = malloc(((size_t)g->n + 1) * sizeof *stack), top = 0, ops = 0;
-    for (int k = 0; k < n; k++)
-        if (roots[k] >= 0 && !seen[roots[k]])
-            seen[roots[k]] = 1, stack[top++] = roots[k];
-    while (top > 0) {
-        const SNode *s = &g->nodes[stack[--top]];
-        ops += s->op > SN_PARAM && s->op != SN_PART;
-        int next[3 + SG_MAX_ARGS], nn = 0;
-        next[nn++] = s->a, next[nn++] = s->b, next[nn++] = s->c;
-        for (int k = 0; s->op == SN_EXT && k < s->nargs; k++)
-            next[nn++] = s->args[k];
-        for (int k = 0; k < nn; k++)
-            if (next[k] >= 0 && !seen[next[k]])
-                seen[next[k]] = 1, stack[top++] = next[k];
-    }
-    free(stack);
-    free(seen);
-    return ops;
-}
 
 /* The law's top-level energy statement, or its tension block. */
 static const MatStmt *law_statement(const MatStmtList *l, MatStmtKind kind, const char *name)
@@ -70,7 +44,8 @@ static void law_summary(const BodyPlan *p, const MaterialDef *law, FILE *out)
     fputs("  material law: ", out);
     stress_source(law, out);
     if (r->has_tension) { /* the function computes the degraded law only */
-        fprintf(out, "; S %d, psi %d operations\n", reach(g, r->S, 9), reach(g, &r->psi, 1));
+        fprintf(out, "; S %d, psi %d operations\n", sg_operations(g, r->S, 9),
+                sg_operations(g, &r->psi, 1));
         const MatStmt *t = law_statement(&law->body, MS_BLOCK, "tension");
         const int written = t && law_statement(&t->body, MS_STRESS, NULL);
         int deg[9 + 2];
@@ -78,14 +53,14 @@ static void law_summary(const BodyPlan *p, const MaterialDef *law, FILE *out)
         deg[9] = r->psid, deg[10] = r->psip;
         fprintf(out, "  tension block: S+ %s; S+ %d, psi+ %d operations; degraded S, psi, psi+ "
                      "(eq. 7, 18): %d operations\n",
-                written ? "written" : "derived from psi+", reach(g, r->Sp, 9),
-                reach(g, &r->psip, 1), reach(g, deg, 11));
+                written ? "written" : "derived from psi+", sg_operations(g, r->Sp, 9),
+                sg_operations(g, &r->psip, 1), sg_operations(g, deg, 11));
         return;
     }
-    fprintf(out, "; %d operations (S %d, psi %d", reach(g, all, n), reach(g, r->S, 9),
-            reach(g, &r->psi, 1));
+    fprintf(out, "; %d operations (S %d, psi %d", sg_operations(g, all, n),
+            sg_operations(g, r->S, 9), sg_operations(g, &r->psi, 1));
     if (p->nstate > 0)
-        fprintf(out, ", state %d", reach(g, r->next, p->nstate));
+        fprintf(out, ", state %d", sg_operations(g, r->next, p->nstate));
     fputs(")\n", out);
 }
 
