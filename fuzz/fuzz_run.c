@@ -126,8 +126,9 @@ static void check_and_lower(const Program *prog)
     if (lower_model(&m, &plan))
         return;
     plan_dump(&plan, devnull);
-    emit_program(&plan, TARGET_CPU, paths.templates, devnull);
-    emit_program(&plan, TARGET_CUDA, paths.templates, devnull);
+    emit_program(&plan, TARGET_CPU, 0, paths.templates, devnull);
+    emit_program(&plan, TARGET_CPU, 1, paths.templates, devnull); /* sphc --mpi */
+    emit_program(&plan, TARGET_CUDA, 0, paths.templates, devnull);
     plan_free(&plan);
 }
 

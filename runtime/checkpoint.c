@@ -26,10 +26,11 @@
 #include <string.h>
 
 #include "checkpoint.h"
+#include "partition.h"
 #include "regular_file.h"
 
 static const char MAGIC[8] = {'S', 'P', 'H', 'C', 'K', 'P', 'T', '\n'};
-enum { VERSION = 2 }; /* 2: the contact's sums hold the closest pair's closeness */
+enum { VERSION = 3 }; /* 3: bodies in pieces by global id; 2: the contact's closeness */
 
 /* FNV-1a, 64 bits, of n more bytes after h (FNV_START at first). */
 #define FNV_START 1469598103934665603ull
@@ -248,19 +249,55 @@ void sph_ckpt_free(sph_ckpt *c)
 
 /* ------------------------------------------------------------------ the simulation */
 
-/* The hash of the reference positions: the same particles in the same order. */
-static uint64_t positions_hash(const sph_body *b)
+/* ------------------------------------------------------------------ bodies by global id
+ * A body's particles are stored in pieces, one per process of the run that wrote it (one
+ * piece on one process): the global ids of the piece's particles (partition.h: from their
+ * lattice coordinates, the same on any number of processes) and their state arrays in the
+ * same order.  A run resumed on any number of processes takes each of its own particles'
+ * state from whichever piece holds its id. */
+
+/* The global ids of body b's own particles (malloc'd): its own on many processes, from the
+ * body's lattice on one.  NULL when memory runs out or the body has no lattice. */
+static int64_t *own_ids(const sph_body *b)
 {
-    return fnv(FNV_START, b->X, (size_t)b->n * (size_t)b->dim * sizeof(double));
+    int64_t *id = malloc(((size_t)b->nown + 1) * sizeof *id);
+    if (!id || b->gid) {
+        if (id)
+            memcpy(id, b->gid, (size_t)b->nown * sizeof *id);
+        return id;
+    }
+    sph_lattice L;
+    if (sph_fill_lattice(&b->desc->region, b->dim, b->dx, b->desc->y_plane, &L) != 1) {
+        free(id);
+        return NULL;
+    }
+    for (int i = 0; i < b->nown; i++)
+        id[i] = sph_lattice_id(&L, b->X + (size_t)i * b->dim);
+    return id;
 }
 
-/* What identifies body b's particles: count, dimension, state values, and the hash. */
+/* What identifies body b's particles on all processes: count, dimension, state values, and
+ * a hash of the reference positions that does not depend on their order (the XOR of each
+ * particle's).  Collective. */
 static void body_shape(const sph_body *b, uint64_t shape[4])
 {
-    shape[0] = (uint64_t)b->n;
+    uint64_t h = 0;
+    for (int i = 0; i < b->nown; i++)
+        h ^= fnv(FNV_START, b->X + (size_t)i * b->dim, (size_t)b->dim * sizeof(double));
+    const sph_par *par = b->par;
+    uint64_t *all = malloc(((size_t)par->size + 1) * sizeof *all);
+    if (all) {
+        par->allgather(&h, all, sizeof h);
+        for (int q = 0; q < par->size; q++)
+            h = q ? h ^ all[q] : all[q];
+    }
+    free(all);
+    double n = b->nown;
+    par->sum(&n, 1);
+    shape[0] = (uint64_t)n;
     shape[1] = (uint64_t)b->dim;
     shape[2] = (uint64_t)b->desc->nstate;
-    shape[3] = positions_hash(b);
+    shape[3] = h;
 }
 
 static void key(char *out, size_t len, int body, const char *what)
@@ -268,34 +305,100 @@ static void key(char *out, size_t len, int body, const char *what)
     snprintf(out, len, "body.%d.%s", body, what);
 }
 
-void sph_sim_checkpoint(sph_ckpt_writer *w, const sph_sim *s)
+static void piece_key(char *out, size_t len, int body, int piece, const char *what)
+{
+    snprintf(out, len, "body.%d.piece.%d.%s", body, piece, what);
+}
+
+/* Where process 0 writes the pieces it gathers. */
+typedef struct {
+    sph_ckpt_writer *w;
+    int body, na;
+    const sph_state_array *arr;
+    size_t per[SPH_STATE_ARRAYS]; /* bytes per particle of each array */
+} piece_writer;
+
+/* A piece as gathered: u64 count, the ids, each array's bytes. */
+static void write_piece(void *ctx, int from, const void *data, size_t bytes)
+{
+    const piece_writer *pw = ctx;
+    char name[96];
+    uint64_t n;
+    memcpy(&n, data, sizeof n);
+    const unsigned char *at = (const unsigned char *)data + sizeof n;
+    piece_key(name, sizeof name, pw->body, from, "gid");
+    sph_ckpt_put(pw->w, name, at, n * sizeof(int64_t));
+    at += n * sizeof(int64_t);
+    for (int k = 0; k < pw->na; k++) {
+        piece_key(name, sizeof name, pw->body, from, pw->arr[k].name);
+        sph_ckpt_put(pw->w, name, at, n * pw->per[k]);
+        at += n * pw->per[k];
+    }
+    if ((size_t)(at - (const unsigned char *)data) != bytes && !pw->w->bad)
+        pw->w->bad = EIO;
+}
+
+/* Body i's records: shape, sums, and its pieces (collective; w only on process 0). */
+static void checkpoint_body(sph_ckpt_writer *w, sph_body *b, int i)
 {
     char name[96];
-    sph_ckpt_put(w, "model", s->m->name, strlen(s->m->name));
-    const double clock[3] = {s->t, s->dt, s->dt_factor};
-    sph_ckpt_put(w, "sim.clock", clock, sizeof clock);
-    sph_ckpt_put(w, "sim.step", &s->step, sizeof s->step);
-    for (int i = 0; i < s->nbodies; i++) {
-        sph_body *b = &s->bodies[i];
-        uint64_t shape[4];
-        body_shape(b, shape);
+    const sph_par *par = b->par;
+    uint64_t shape[4];
+    body_shape(b, shape);
+    double most[3] = {b->vmax2, b->amax2, -b->lam2min}, sum[2] = {b->visc_rate,
+                                                                 b->visc_dissipated};
+    par->max(most, 3);
+    par->sum(sum, 2);
+    const double sums[5] = {most[0], most[1], -most[2], sum[0], sum[1]};
+    piece_writer pw = {w, i, 0, NULL, {0}};
+    sph_state_array arr[SPH_STATE_ARRAYS];
+    pw.na = sph_body_state_arrays(b, b->desc->nstate, arr);
+    pw.arr = arr;
+    size_t bytes = sizeof(uint64_t) + (size_t)b->nown * sizeof(int64_t);
+    for (int k = 0; k < pw.na; k++) {
+        pw.per[k] = b->n ? arr[k].bytes / (size_t)b->n : 0;
+        bytes += (size_t)b->nown * pw.per[k];
+    }
+    int64_t *id = own_ids(b);
+    unsigned char *block = id ? malloc(bytes) : NULL;
+    uint64_t n = block ? (uint64_t)b->nown : 0; /* (out of memory: an empty piece, refused) */
+    if (block) {
+        unsigned char *at = block;
+        memcpy(at, &n, sizeof n), at += sizeof n;
+        memcpy(at, id, (size_t)n * sizeof *id), at += (size_t)n * sizeof *id;
+        for (int k = 0; k < pw.na; k++) /* (own particles first in every array) */
+            memcpy(at, arr[k].data, (size_t)n * pw.per[k]), at += (size_t)n * pw.per[k];
+    }
+    if (w) {
         key(name, sizeof name, i, "shape");
         sph_ckpt_put(w, name, shape, sizeof shape);
-        const double sums[5] = {b->vmax2, b->amax2, b->lam2min, b->visc_rate,
-                                b->visc_dissipated};
         key(name, sizeof name, i, "sums");
         sph_ckpt_put(w, name, sums, sizeof sums);
-        sph_state_array arr[SPH_STATE_ARRAYS];
-        const int na = sph_body_state_arrays(b, b->desc->nstate, arr);
-        for (int k = 0; k < na; k++) {
-            key(name, sizeof name, i, arr[k].name);
-            sph_ckpt_put(w, name, arr[k].data, arr[k].bytes);
-        }
+        const uint64_t pieces = (uint64_t)par->size;
+        key(name, sizeof name, i, "pieces");
+        sph_ckpt_put(w, name, &pieces, sizeof pieces);
     }
+    par->gather0(block ? (const void *)block : (const void *)&n, block ? bytes : sizeof n,
+                 write_piece, &pw);
+    if (w && (!block || !id) && !w->bad)
+        w->bad = ENOMEM;
+    free(block), free(id);
+}
+
+void sph_sim_checkpoint(sph_ckpt_writer *w, const sph_sim *s)
+{
+    if (w) {
+        sph_ckpt_put(w, "model", s->m->name, strlen(s->m->name));
+        const double clock[3] = {s->t, s->dt, s->dt_factor};
+        sph_ckpt_put(w, "sim.clock", clock, sizeof clock);
+        sph_ckpt_put(w, "sim.step", &s->step, sizeof s->step);
+    }
+    for (int i = 0; i < s->nbodies; i++)
+        checkpoint_body(w, &s->bodies[i], i);
     double sums[4];
     const double *x0;
     size_t nx0;
-    if (sph_contact_checkpoint(s, sums, &x0, &nx0)) {
+    if (w && sph_contact_checkpoint(s, sums, &x0, &nx0)) {
         sph_ckpt_put(w, "contact.sums", sums, sizeof sums);
         sph_ckpt_put(w, "contact.x0", x0, nx0 * sizeof *x0);
     }
@@ -334,6 +437,50 @@ static int same_particles(const sph_ckpt *c, const sph_body *b, int i)
     return 0;
 }
 
+/* The state of body b's own particles from the checkpoint's pieces; found counts them. */
+static int restore_pieces(const sph_ckpt *c, sph_body *b, int i, const sph_id_index *own,
+                          long *found)
+{
+    char name[96];
+    size_t bytes;
+    uint64_t pieces = 0;
+    key(name, sizeof name, i, "pieces");
+    if (sph_ckpt_take(c, name, &pieces, sizeof pieces))
+        return -1;
+    sph_state_array arr[SPH_STATE_ARRAYS];
+    const int na = sph_body_state_arrays(b, b->desc->nstate, arr);
+    for (uint64_t q = 0; q < pieces; q++) {
+        piece_key(name, sizeof name, i, (int)q, "gid");
+        const int64_t *gid = sph_ckpt_find(c, name, &bytes);
+        const size_t n = bytes / sizeof *gid;
+        const unsigned char *data[SPH_STATE_ARRAYS];
+        size_t per[SPH_STATE_ARRAYS];
+        int bad = !gid;
+        for (int k = 0; k < na && !bad; k++) {
+            per[k] = b->n ? arr[k].bytes / (size_t)b->n : 0;
+            piece_key(name, sizeof name, i, (int)q, arr[k].name);
+            data[k] = sph_ckpt_find(c, name, &bytes);
+            bad = !data[k] || bytes != n * per[k];
+        }
+        if (bad) {
+            sph_error("cannot restart from %s: piece %llu of body '%s' is missing or damaged "
+                      "(is it a checkpoint of this model?)", c->path, (unsigned long long)q,
+                      b->desc->name);
+            return -1;
+        }
+        for (size_t j = 0; j < n; j++) {
+            const int at = sph_id_find(own, b->nown, gid[j]);
+            if (at < 0)
+                continue; /* (another process's particle) */
+            for (int k = 0; k < na; k++)
+                memcpy((unsigned char *)arr[k].data + (size_t)at * per[k],
+                       data[k] + j * per[k], per[k]);
+            (*found)++;
+        }
+    }
+    return 0;
+}
+
 static int restore_body(const sph_ckpt *c, sph_body *b, int i)
 {
     char name[96];
@@ -342,15 +489,25 @@ static int restore_body(const sph_ckpt *c, sph_body *b, int i)
     if (same_particles(c, b, i) || sph_ckpt_take(c, name, sums, sizeof sums))
         return -1;
     b->vmax2 = sums[0], b->amax2 = sums[1], b->lam2min = sums[2];
-    b->visc_rate = sums[3], b->visc_dissipated = sums[4];
-    sph_state_array arr[SPH_STATE_ARRAYS];
-    const int na = sph_body_state_arrays(b, b->desc->nstate, arr);
-    for (int k = 0; k < na; k++) {
-        key(name, sizeof name, i, arr[k].name);
-        if (sph_ckpt_take(c, name, arr[k].data, arr[k].bytes))
-            return -1;
+    /* the sums over the processes: all of it on process 0, so that they add up again */
+    const int first = b->par->rank == 0;
+    b->visc_rate = first ? sums[3] : 0, b->visc_dissipated = first ? sums[4] : 0;
+    int64_t *id = own_ids(b);
+    sph_id_index *own = id ? sph_id_sort(id, b->nown) : NULL;
+    if (!own) {
+        free(id);
+        sph_error("out of memory to restart from %s", c->path);
+        return -1;
     }
-    return 0;
+    long found = 0;
+    const int bad = restore_pieces(c, b, i, own, &found);
+    free(id), free(own);
+    if (!bad && found != b->nown) {
+        sph_error("cannot restart from %s: it holds %ld of the %d particles of body '%s' here "
+                  "(or some twice): it is damaged", c->path, found, b->nown, b->desc->name);
+        return -1;
+    }
+    return bad;
 }
 
 int sph_sim_restore(const sph_ckpt *c, sph_sim *s)
@@ -368,8 +525,8 @@ int sph_sim_restore(const sph_ckpt *c, sph_sim *s)
         sph_ckpt_take(c, "sim.step", &s->step, sizeof s->step))
         return -1;
     s->t = clock[0], s->dt = clock[1], s->dt_factor = clock[2];
-    for (int i = 0; i < s->nbodies; i++)
-        if (restore_body(c, &s->bodies[i], i))
+    for (int i = 0; i < s->nbodies; i++) /* (a failure of one process's stops all) */
+        if (s->par->agree(restore_body(c, &s->bodies[i], i)))
             return -1;
     if (!s->m->contact)
         return 0;

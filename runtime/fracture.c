@@ -21,15 +21,25 @@ double sph_fracture_energy(const sph_body *b)
     double *g2 = calloc((size_t)b->n, sizeof(double));
     if (!g2)
         return 0.0;
-    for (int i = 0; i < b->n; i++) /* each pair once; ltab holds c_ij (< 0) */
+    if (b->xb_start) { /* on many processes: the halo's phase field as the last step left it */
+        const sph_field field = SPH_FIELD(b->s, 1);
+        b->par->post((sph_body *)b, &field, 1);
+        b->par->wait((sph_body *)b, &field, 1);
+    }
+    for (int i = 0; i < b->nown; i++) /* each pair once; ltab holds c_ij (< 0) */
         for (int p = b->hb_start[i]; p < b->hb_start[i + 1]; p++) {
             const int j = b->hb[p];
             const double d = b->s[i] - b->s[j], e = -0.5 * b->ltab[b->hb_k[p]] * d * d;
             g2[i] += e;
             g2[j] += e;
         }
+    for (int i = 0; b->xb_start && i < b->nown; i++) /* pairs with the halo: i's share */
+        for (int p = b->xb_start[i]; p < b->xb_start[i + 1]; p++) {
+            const double d = b->s[i] - b->s[b->xb[p]];
+            g2[i] += -0.5 * b->ltab[b->xb_k[p]] * d * d;
+        }
     double sum = 0;
-    for (int i = 0; i < b->n; i++) {
+    for (int i = 0; i < b->nown; i++) {
         const double d = 1.0 - b->s[i];
         sum += d * d / (4 * f->eps0) + f->eps0 * g2[i];
     }

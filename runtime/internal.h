@@ -16,8 +16,22 @@ int sph_region_bbox_dim(const sph_region *r, int dim, double lo[3], double hi[3]
  * zero is set), freed with free(); NULL when memory runs out. */
 void *sph_alloc_large(size_t bytes, int zero);
 
-/* setup.c: particles, neighbours, gradients, selections and arrays of one body. */
-int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m);
+/* part_fill.c: a process's particles of a body on many processes: its own (nown, first)
+ * and its halo (n - nown after them, with the process each belongs to), positions X (dim
+ * values each) and global ids.  0 (out->n = 0 when the region has no lattice), or -1 when
+ * the lattice is too large or memory runs out. */
+typedef struct {
+    int n, nown;
+    double *X;
+    int64_t *gid;
+    int *halo_part;
+} sph_part_fill;
+int sph_fill_part(const sph_region *r, int dim, double dx, double y_plane, double radius,
+                  int range, int part, int nparts, sph_part_fill *out);
+
+/* setup.c: particles, neighbours, gradients, selections and arrays of one body, on the
+ * processes par (collective). */
+int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, const sph_par *par);
 void sph_body_free(sph_body *b);
 
 /* contact.c: the contact state of a scene with contact (pair laws, search); idempotent. */

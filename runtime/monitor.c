@@ -10,6 +10,7 @@
  * to name what went wrong and where. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "internal.h"
 
@@ -40,7 +41,7 @@ static int scan_body(const sph_body *b, finding *f)
 {
     const int D = b->dim;
     const double vlim2 = 100.0 * b->c0 * b->c0;
-    for (int i = 0; i < b->n; i++) {
+    for (int i = 0; i < b->nown; i++) {
         if (not_finite(b, i, f))
             return 1;
         double v2 = 0;
@@ -65,7 +66,7 @@ static int fastest(const sph_body *b, double *speed)
     const int D = b->dim;
     int best = 0;
     double v2max = -1;
-    for (int i = 0; i < b->n; i++) {
+    for (int i = 0; i < b->nown; i++) {
         double v2 = 0;
         for (int k = 0; k < D; k++)
             v2 += b->v[(size_t)i * D + k] * b->v[(size_t)i * D + k];
@@ -80,9 +81,33 @@ static int fastest(const sph_body *b, double *speed)
 static int where(char *msg, size_t len, const sph_sim *s, const sph_body *b, int particle)
 {
     const double *X = b->X + (size_t)particle * b->dim;
-    return snprintf(msg, len, "step %ld, t = %.6g s, body '%s', particle %d (reference position "
+    char id[48]; /* on many processes the global id (partition.h), the same on any number */
+    if (b->gid)
+        snprintf(id, sizeof id, "global id %lld", (long long)b->gid[particle]);
+    else
+        snprintf(id, sizeof id, "%d", particle);
+    return snprintf(msg, len, "step %ld, t = %.6g s, body '%s', particle %s (reference position "
                               "x = %g, %s = %g)",
-                    s->step, s->t, b->desc->name, particle, X[0], b->dim == 2 ? "z" : "y", X[1]);
+                    s->step, s->t, b->desc->name, id, X[0], b->dim == 2 ? "z" : "y", X[1]);
+}
+
+/* On many processes: the lowest process where `found`, whose msg every process then gets;
+ * 1 when there is one.  On one process: found. */
+static int shared(const sph_sim *s, int found, char *msg, size_t len)
+{
+    const sph_par *par = s->par;
+    if (par->size == 1)
+        return found;
+    double first = found ? par->rank : par->size;
+    par->min(&first, 1);
+    if (first >= par->size)
+        return 0;
+    char buf[1024] = "";
+    if (par->rank == (int)first)
+        snprintf(buf, sizeof buf, "%s", msg);
+    par->bcast(buf, sizeof buf, (int)first);
+    snprintf(msg, len, "%s", buf);
+    return 1;
 }
 
 /* A finding as msg: where, what, and its value. */
@@ -96,33 +121,46 @@ static void report(char *msg, size_t len, const sph_sim *s, const sph_body *b, c
 
 int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len)
 {
-    double e_total = 0, e_most = -1;
-    int most = 0;
-    for (int ib = 0; ib < s->nbodies; ib++) {
-        const sph_body *b = &s->bodies[ib];
+    int found = 0;
+    for (int ib = 0; ib < s->nbodies && !found; ib++) {
         finding f;
-        if (scan_body(b, &f)) {
-            report(msg, len, s, b, &f);
-            return 1;
-        }
-        double es, ek;
-        sph_body_energies(b, &es, &ek);
-        e_total += es + ek;
-        if (!(es + ek <= e_most)) /* also takes a non-finite energy */
-            e_most = es + ek, most = ib;
+        if ((found = scan_body(&s->bodies[ib], &f)))
+            report(msg, len, s, &s->bodies[ib], &f);
     }
+    if (shared(s, found, msg, len))
+        return 1;
+    double e_total = 0, e_most = -1, *e = calloc((size_t)s->nbodies + 1, sizeof *e);
+    int most = 0;
+    if (!e)
+        return 0; /* (out of memory: no energy check this time) */
+    for (int ib = 0; ib < s->nbodies; ib++) {
+        double es, ek;
+        sph_body_energies(&s->bodies[ib], &es, &ek);
+        e[ib] = es + ek;
+    }
+    s->par->sum(e, s->nbodies); /* (each body's, over the processes) */
+    for (int ib = 0; ib < s->nbodies; ib++) {
+        e_total += e[ib];
+        if (!(e[ib] <= e_most)) /* also takes a non-finite energy */
+            e_most = e[ib], most = ib;
+    }
+    free(e);
     if (!isfinite(e_total) || (mon->e_ref > 0 && e_total > 1e6 * mon->e_ref)) {
         /* Named like the other findings: the body with the most energy and its fastest
-         * particle. */
+         * particle (on many processes, that of the process where it is fastest). */
         const sph_body *b = &s->bodies[most];
-        double speed;
-        int n = where(msg, len, s, b, fastest(b, &speed));
+        double speed, top;
+        const int i = fastest(b, &speed);
+        top = speed;
+        s->par->max(&top, 1);
+        int n = where(msg, len, s, b, i);
         if (n >= 0 && (size_t)n < len)
             snprintf(msg + n, len - (size_t)n,
                      ": total energy %g grew more than a millionfold since the last check (%g): "
                      "energy runaway (value: speed %g of the fastest particle of the body with "
                      "the most energy)",
                      e_total, mon->e_ref, speed);
+        shared(s, speed == top, msg, len);
         return 1;
     }
     if (e_total > mon->e_ref)
@@ -132,15 +170,14 @@ int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len)
 
 int sph_monitor_finite(const sph_sim *s, char *msg, size_t len)
 {
-    for (int ib = 0; ib < s->nbodies; ib++)
-        for (int i = 0; i < s->bodies[ib].n; i++) {
+    int found = 0;
+    for (int ib = 0; ib < s->nbodies && !found; ib++)
+        for (int i = 0; i < s->bodies[ib].nown && !found; i++) {
             finding f;
-            if (not_finite(&s->bodies[ib], i, &f)) {
+            if ((found = not_finite(&s->bodies[ib], i, &f)))
                 report(msg, len, s, &s->bodies[ib], &f);
-                return 1;
-            }
         }
-    return 0;
+    return shared(s, found, msg, len);
 }
 
 int sph_monitor_glance(sph_monitor *mon, const sph_sim *s, const sph_monitor_sums *sums,

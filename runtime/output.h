@@ -31,6 +31,10 @@ long sph_run_files(const char *dir, int remove_them, char *first, size_t len);
  * "phase_field" (s) and "history" (H, eq. 8). */
 int sph_write_vtu(const char *path, const sph_body *b, double t);
 
+/* The frame of a body on many processes: a .pvtu file listing the pieces, one .vtu file of
+ * each process's own particles (relative to the .pvtu), with the arrays body b's have. */
+int sph_write_pvtu(const char *path, const sph_body *b, const char *const *pieces, int npieces);
+
 /* A ParaView collection (.pvd) listing files[k] (relative to the pvd) at times[k]. */
 int sph_write_pvd(const char *path, const char *const *files, const double *times, int n);
 

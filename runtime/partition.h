@@ -115,6 +115,15 @@ void sph_rcb_local_free(sph_rcb_local_set *s);
 int sph_rcb_halo_sizes(const sph_lattice *L, const double *X, int n, const int *part,
                        int nparts, double radius, int range, long *halo);
 
+/* Particles by global id: n ids (any order) with their indices, sorted by id (malloc'd; NULL
+ * when memory runs out), and the index of a particle of id in them (-1: none). */
+typedef struct {
+    int64_t id;
+    int index;
+} sph_id_index;
+sph_id_index *sph_id_sort(const int64_t *id, int n);
+int sph_id_find(const sph_id_index *sorted, int n, int64_t id);
+
 /* The half-pair scheme: every pair belongs to one part, which computes it (both particles'
  * shares) and sends the other particle's share to that particle's part.  Two rules:
  * sph_pair_owner gives it to the part of its particle of smaller id, so both parts of an

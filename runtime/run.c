@@ -105,6 +105,7 @@ static double contact_energy(const sph_sim *s, int which)
 
 static double strain(const sph_sim *s, int i, const double *e) { return (void)s, e[2 * i]; }
 static double kinetic(const sph_sim *s, int i, const double *e) { return (void)s, e[2 * i + 1]; }
+/* (the columns below are this process's share on many processes, summed by record) */
 static double fracture(const sph_sim *s, int i, const double *e)
 {
     return (void)e, sph_fracture_energy(&s->bodies[i]);
@@ -185,7 +186,9 @@ static void energy_totals(const energy_slot *slot, const double *v, int n, int n
     total[0] += scene;
 }
 
-static int open_outputs(run_state *r)
+/* The files of a run (process 0's on many processes; the others write their pieces of the
+ * particle files only): the folders, energies.csv and the measurements' files. */
+static int open_files(run_state *r)
 {
     const sph_model *m = r->m;
     /* (--overwrite: an earlier run's files go first; refuse_used_folder checked for them) */
@@ -211,6 +214,21 @@ static int open_outputs(run_state *r)
         free(cols[k]);
     free(cols);
     free(slot);
+    static const char *const mcols[] = {"time", "ux", "uy", "uz", "fx", "fy", "fz"};
+    for (int i = 0; i < m->nbodies; i++)
+        for (int k = 0; k < m->bodies[i].nmeasures; k++) {
+            path = joinf("%s/measure_%s.csv", r->opt.out_dir, m->bodies[i].measures[k].name);
+            bad |= sph_csv_open(&r->measure_csv[r->rec.measure_base[i] + k], path, mcols, 7);
+            free(path);
+        }
+    if (m->compat_outputs)
+        bad |= sph_compat_open(&r->compat, m, r->opt.out_dir);
+    return bad ? -1 : 0;
+}
+
+static int open_outputs(run_state *r)
+{
+    const sph_model *m = r->m;
     r->rec.measure_base = calloc((size_t)m->nbodies, sizeof(int));
     for (int i = 0; i < m->nbodies; i++) {
         r->rec.measure_base[i] = r->nmeasures;
@@ -219,19 +237,10 @@ static int open_outputs(run_state *r)
     r->measure_csv = calloc((size_t)r->nmeasures + 1, sizeof *r->measure_csv);
     r->rec.measures = calloc((size_t)r->nmeasures + 1, sizeof *r->rec.measures);
     r->rec.energy.width = 2;
-    static const char *const mcols[] = {"time", "ux", "uy", "uz", "fx", "fy", "fz"};
-    for (int i = 0; i < m->nbodies; i++)
-        for (int k = 0; k < m->bodies[i].nmeasures; k++) {
-            int q = r->rec.measure_base[i] + k;
-            r->rec.measures[q].width = 6;
-            path = joinf("%s/measure_%s.csv", r->opt.out_dir, m->bodies[i].measures[k].name);
-            bad |= sph_csv_open(&r->measure_csv[q], path, mcols, 7);
-            free(path);
-        }
+    for (int q = 0; q < r->nmeasures; q++)
+        r->rec.measures[q].width = 6;
     r->frame_files = calloc((size_t)m->nbodies, sizeof(char **));
-    if (m->compat_outputs)
-        bad |= sph_compat_open(&r->compat, m, r->opt.out_dir);
-    return bad ? -1 : 0;
+    return r->sim.par->rank == 0 ? open_files(r) : 0;
 }
 
 /* One row of energies and measurements (every output time). */
@@ -249,13 +258,15 @@ static int record(run_state *r)
         if (slot[k].col->value)
             row[1 + k] = slot[k].col->value(s, slot[k].body, held);
     free(held);
+    s->par->sum(row + 1, ncol); /* (on many processes each held its own particles' share) */
     energy_totals(slot, row + 1, ncol, s->nbodies, total);
     for (int k = 0; k < ncol; k++)
         if (slot[k].col->kind == TOTAL)
             row[1 + k] = total[0] + total[1];
     free(slot);
-    int bad = sph_csv_row(&r->energies, row);
-    if (r->m->compat_outputs)
+    const int writes = s->par->rank == 0; /* (the files are the first process's) */
+    int bad = writes ? sph_csv_row(&r->energies, row) : 0;
+    if (r->m->compat_outputs && writes)
         bad |= sph_compat_energies(&r->compat, row);
     sph_series_push(&r->rec.energy, s->t, total);
     free(row);
@@ -265,18 +276,49 @@ static int record(run_state *r)
             double mrow[7];
             mrow[0] = s->t;
             sph_measure(&s->bodies[i], k, mrow + 1);
-            bad |= sph_csv_row(&r->measure_csv[q], mrow);
-            if (r->m->compat_outputs)
+            if (writes)
+                bad |= sph_csv_row(&r->measure_csv[q], mrow);
+            if (r->m->compat_outputs && writes)
                 bad |= sph_compat_plane(&r->compat, q, mrow);
             sph_series_push(&r->rec.measures[q], s->t, mrow + 1);
         }
     return bad;
 }
 
+/* On many processes a frame of a body is a .pvtu file (process 0) listing a .vtu piece of
+ * each process's particles; file is the .pvtu's name, path its folder.  0, or -1 after a
+ * message (any process's). */
+static int write_pieces(run_state *r, const sph_body *b, const char *dir, const char *file)
+{
+    const sph_par *par = r->sim.par;
+    char piece[300], path[4600];
+    const int stem = (int)strlen(file) - 5; /* (without ".pvtu") */
+    snprintf(piece, sizeof piece, "%.*s_p%d.vtu", stem, file, par->rank);
+    snprintf(path, sizeof path, "%s/%s", dir, piece);
+    int bad = sph_write_vtu(path, b, r->sim.t);
+    if (par->agree(bad))
+        return -1;
+    if (par->rank != 0)
+        return 0;
+    char **pieces = calloc((size_t)par->size, sizeof *pieces);
+    for (int k = 0; pieces && k < par->size; k++) {
+        char name[300];
+        snprintf(name, sizeof name, "%.*s_p%d.vtu", stem, file, k);
+        pieces[k] = strdup(name);
+    }
+    snprintf(path, sizeof path, "%s/%s", dir, file);
+    bad = !pieces || sph_write_pvtu(path, b, (const char *const *)pieces, par->size);
+    for (int k = 0; pieces && k < par->size; k++)
+        free(pieces[k]);
+    free(pieces);
+    return bad ? -1 : 0;
+}
+
 /* The particle files of every body at the current time: a frame of the .pvd series. */
 static int write_particles(run_state *r)
 {
     const sph_sim *s = &r->sim;
+    const int many = s->par->size > 1;
     r->m->stress_output(&r->sim);
     r->frame_times = realloc(r->frame_times, (size_t)(r->nframes + 1) * sizeof(double));
     r->frame_times[r->nframes] = s->t;
@@ -285,16 +327,23 @@ static int write_particles(run_state *r)
         const char *name = s->bodies[i].desc->name;
         char file[256], path[4096];
         frame_file(file, sizeof file, name, r->nframes);
-        snprintf(path, sizeof path, "%s/particles/%s", r->opt.out_dir, file);
-        bad |= sph_write_vtu(path, &s->bodies[i], s->t);
+        if (many) {
+            strcpy(file + strlen(file) - 4, ".pvtu"); /* (frame_file's ".vtu") */
+            snprintf(path, sizeof path, "%s/particles", r->opt.out_dir);
+            bad |= write_pieces(r, &s->bodies[i], path, file);
+        } else {
+            snprintf(path, sizeof path, "%s/particles/%s", r->opt.out_dir, file);
+            bad |= sph_write_vtu(path, &s->bodies[i], s->t);
+        }
         char **list = realloc(r->frame_files[i], (size_t)(r->nframes + 1) * sizeof(char *));
         list[r->nframes] = strdup(file);
         r->frame_files[i] = list;
         snprintf(path, sizeof path, "%s/particles/%s.pvd", r->opt.out_dir, name);
-        bad |= sph_write_pvd(path, (const char *const *)list, r->frame_times, r->nframes + 1);
+        if (s->par->rank == 0)
+            bad |= sph_write_pvd(path, (const char *const *)list, r->frame_times, r->nframes + 1);
     }
     r->nframes++;
-    return bad;
+    return s->par->agree(bad);
 }
 
 /* An output time: a row of energies and measurements, and a frame of particle files when
@@ -308,7 +357,7 @@ static int write_output(run_state *r)
         while (r->next_frame <= t + eps)
             r->next_frame += r->t_frames;
     }
-    return bad | record(r);
+    return r->sim.par->agree(bad | record(r));
 }
 
 /* fmax/fmin that keep a NaN: the summary of a run that blew up says null (not finite)
@@ -323,12 +372,18 @@ static double min_nan(double a, double b)
     return isnan(a) || isnan(b) ? NAN : fmin(a, b);
 }
 
-static void body_summary(sph_json *j, const sph_body *b)
+/* What summary.json says of a body: its extent and largest displacement and speed now, over
+ * all processes. */
+typedef struct {
+    double lo[3], hi[3], umax, vmax, particles, pairs;
+} body_stats;
+
+static void body_stats_of(const sph_body *b, body_stats *st)
 {
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     double umax = 0, vmax = 0;
     const int D = b->dim;
-    for (int i = 0; i < b->n; i++) {
+    for (int i = 0; i < b->nown; i++) {
         double x[3] = {0, b->y_plane, 0}, u2 = 0, v2 = 0;
         for (int k = 0; k < D; k++) {
             const double u = b->u[(size_t)i * D + k], v = b->v[(size_t)i * D + k];
@@ -339,26 +394,45 @@ static void body_summary(sph_json *j, const sph_body *b)
             lo[k] = min_nan(lo[k], x[k]), hi[k] = max_nan(hi[k], x[k]);
         umax = max_nan(umax, u2), vmax = max_nan(vmax, v2);
     }
+    /* maxima over the processes, each with a flag: not a number on some process */
+    double most[16] = {hi[0], hi[1], hi[2], -lo[0], -lo[1], -lo[2], umax, vmax};
+    for (int k = 0; k < 8; k++)
+        most[8 + k] = isnan(most[k]);
+    double count[2] = {b->nown, (double)b->npairs};
+    if (b->par->size > 1) {
+        b->par->max(most, 16);
+        b->par->sum(count, 2);
+    }
+    for (int k = 0; k < 8; k++)
+        most[k] = most[8 + k] > 0 ? NAN : most[k];
+    for (int k = 0; k < 3; k++)
+        st->hi[k] = most[k], st->lo[k] = -most[3 + k];
+    st->umax = most[6], st->vmax = most[7];
+    st->particles = count[0], st->pairs = count[1];
+}
+
+static void body_summary(sph_json *j, const sph_body *b, const body_stats *st)
+{
     sph_json_key_object(j, NULL);
     sph_json_str(j, "name", b->desc->name);
-    sph_json_int(j, "particles", b->n);
-    sph_json_int(j, "pairs", b->npairs);
-    sph_json_num(j, "mean_neighbours", (double)b->npairs / b->n);
+    sph_json_int(j, "particles", (long)st->particles);
+    sph_json_int(j, "pairs", (long)st->pairs);
+    sph_json_num(j, "mean_neighbours", st->pairs / st->particles);
     sph_json_num(j, "dx", b->dx);
     sph_json_num(j, "h", b->h);
     sph_json_num(j, "c0", b->c0);
     sph_json_key_object(j, "bbox");
     sph_json_key_array(j, "min");
     for (int k = 0; k < 3; k++)
-        sph_json_num(j, NULL, lo[k]);
+        sph_json_num(j, NULL, st->lo[k]);
     sph_json_end_array(j);
     sph_json_key_array(j, "max");
     for (int k = 0; k < 3; k++)
-        sph_json_num(j, NULL, hi[k]);
+        sph_json_num(j, NULL, st->hi[k]);
     sph_json_end_array(j);
     sph_json_end_object(j);
-    sph_json_num(j, "max_displacement", sqrt(umax));
-    sph_json_num(j, "max_velocity", sqrt(vmax));
+    sph_json_num(j, "max_displacement", sqrt(st->umax));
+    sph_json_num(j, "max_velocity", sqrt(st->vmax));
     sph_json_end_object(j);
 }
 
@@ -367,7 +441,41 @@ static void body_summary(sph_json *j, const sph_body *b)
  * killed stable) or how it ended: "finished" (its expectations evaluated, *failed set when
  * one failed), "unstable", "stopped" (by a signal) or "failed" (an output could not be
  * written); then the timers, the monitor's verdict and the bodies. */
-static int write_summary(run_state *r, const char *status, double wall, int *failed)
+/* Per process (processes: p->size numbers each): own particles, halo particles, bytes sent
+ * per step, seconds waited for the halo; every process gets them. */
+static double *process_table(const run_state *r)
+{
+    const sph_par *p = r->sim.par;
+    double *x = calloc(4 * (size_t)p->size, sizeof *x);
+    if (!x)
+        return NULL;
+    for (int i = 0; i < r->sim.nbodies; i++) {
+        x[4 * p->rank] += r->sim.bodies[i].nown;
+        x[4 * p->rank + 1] += r->sim.bodies[i].n - r->sim.bodies[i].nown;
+    }
+    x[4 * p->rank + 2] = r->sim.step > 0 ? p->bytes_sent() / (double)r->sim.step : 0.0;
+    x[4 * p->rank + 3] = p->wait_seconds();
+    p->sum(x, 4 * p->size); /* (each process's slots are its own) */
+    return x;
+}
+
+static void processes_summary(sph_json *j, const run_state *r, const double *x)
+{
+    static const char *const names[4] = {"particles", "halo", "bytes_per_step", "wait_time"};
+    const int n = r->sim.par->size;
+    sph_json_key_object(j, "processes");
+    sph_json_int(j, "count", n);
+    for (int c = 0; c < 4; c++) {
+        sph_json_key_array(j, names[c]);
+        for (int k = 0; k < n; k++)
+            sph_json_num(j, NULL, x[4 * k + c]);
+        sph_json_end_array(j);
+    }
+    sph_json_end_object(j);
+}
+
+static int summary_file(run_state *r, const char *status, double wall, int *failed,
+                        const body_stats *st, const double *procs)
 {
     const sph_sim *s = &r->sim;
     const long particles = r->particles, pairs = r->pairs;
@@ -427,8 +535,10 @@ static int write_summary(run_state *r, const char *status, double wall, int *fai
     sph_json_end_object(&j);
     sph_json_key_array(&j, "bodies");
     for (int i = 0; i < s->nbodies; i++)
-        body_summary(&j, &s->bodies[i]);
+        body_summary(&j, &s->bodies[i], &st[i]);
     sph_json_end_array(&j);
+    if (procs)
+        processes_summary(&j, r, procs);
     if (!strcmp(status, "stopped")) { /* cut short: its expectations are for the whole run */
         sph_json_key_object(&j, "stopped");
         sph_json_str(&j, "signal", stop_name());
@@ -443,6 +553,27 @@ static int write_summary(run_state *r, const char *status, double wall, int *fai
     return sph_json_close(&j);
 }
 
+/* summary.json, written by process 0 from what all processes hold (collective). */
+static int write_summary(run_state *r, const char *status, double wall, int *failed)
+{
+    const sph_par *par = r->sim.par;
+    const int running = !strcmp(status, "running");
+    body_stats *st = calloc((size_t)r->sim.nbodies + 1, sizeof *st);
+    for (int i = 0; st && !running && i < r->sim.nbodies; i++)
+        body_stats_of(&r->sim.bodies[i], &st[i]);
+    double *procs = par->size > 1 && !running ? process_table(r) : NULL;
+    int ok[2] = {0, 0}; /* the file failed; an expectation failed */
+    if (!st)
+        ok[0] = -1;
+    else if (par->rank == 0)
+        ok[0] = summary_file(r, status, wall, &ok[1], st, procs);
+    par->bcast(ok, sizeof ok, 0);
+    if (failed)
+        *failed = ok[1];
+    free(st), free(procs);
+    return ok[0];
+}
+
 /* ------------------------------------------------------------------ resuming */
 
 /* A run resumed from --restart FILE (read, and checked as a file, before the set-up): the
@@ -450,10 +581,11 @@ static int write_summary(run_state *r, const char *status, double wall, int *fai
  * they were at the checkpoint. */
 static int restart(run_state *r, sph_ckpt *c)
 {
-    int bad = sph_sim_restore(c, &r->sim) || sph_run_resume_files(c, r);
+    const sph_par *par = r->sim.par;
+    int bad = sph_sim_restore(c, &r->sim) || par->agree(sph_run_resume_files(c, r));
     if (!bad && r->m->copy_state)
         r->m->copy_state(&r->sim, 1);
-    bad = bad || open_outputs(r) || sph_run_resume(c, r);
+    bad = bad || par->agree(open_outputs(r)) || sph_run_resume(c, r);
     sph_ckpt_free(c);
     r->t_resumed = r->sim.t, r->step_resumed = r->sim.step;
     if (!bad && !r->opt.quiet)
@@ -521,7 +653,7 @@ static void dt_collapse_report(run_state *r, double dt, double floor_dt)
     double lowest = INFINITY, value = 0;
     for (int ib = 0; ib < s->nbodies; ib++) {
         const sph_body *b = &s->bodies[ib];
-        for (int i = 0; i < b->n; i++) {
+        for (int i = 0; i < b->nown; i++) {
             const double vn = magnitude(b->v + (size_t)i * b->dim, b->dim);
             const double an = b->fix[i] == 0 ? magnitude(b->a + (size_t)i * b->dim, b->dim) : 0;
             const double dtv = sph_body_dt(s->dt_factor, b->h, b->c0, vn * vn, 0);
@@ -531,8 +663,12 @@ static void dt_collapse_report(run_state *r, double dt, double floor_dt)
                 lowest = own, body = ib, particle = i, by_speed = dtv < dta, value = what;
         }
     }
+    /* on many processes: the process whose particle is lowest names it */
+    double least = lowest;
+    s->par->min(&least, 1);
+    const int mine = lowest == least;
     const double contact = sph_contact_dt(s, dt);
-    if (contact < lowest) { /* the stiffest contact between bodies set it */
+    if (contact < least) { /* the stiffest contact between bodies set it */
         snprintf(r->unstable, sizeof r->unstable,
                  "step %ld, t = %.6g s: time step collapsed to %g s, below dtmin = %g s (the "
                  "stiffest contact between bodies bounds it: 1/omega = %g s; is the scene's "
@@ -552,11 +688,21 @@ static void dt_collapse_report(run_state *r, double dt, double floor_dt)
     else
         snprintf(what, sizeof what, "time step collapsed to %g s, below dtmin = %g s", dt,
                  floor_dt);
+    char id[48];
+    if (b->gid)
+        snprintf(id, sizeof id, "global id %lld", (long long)b->gid[particle]);
+    else
+        snprintf(id, sizeof id, "%d", particle);
     snprintf(r->unstable, sizeof r->unstable,
-             "step %ld, t = %.6g s, body '%s', particle %d (reference position x = %g, %s = %g): "
+             "step %ld, t = %.6g s, body '%s', particle %s (reference position x = %g, %s = %g): "
              "%s (%s %g %s%s)",
-             s->step, s->t, b->desc->name, particle, X[0], b->dim == 2 ? "z" : "y", X[1], what,
+             s->step, s->t, b->desc->name, id, X[0], b->dim == 2 ? "z" : "y", X[1], what,
              by_speed ? "speed" : "acceleration", value, by_speed ? "m/s" : "m/s^2", crushed);
+    if (s->par->size == 1)
+        return;
+    double first = mine ? s->par->rank : s->par->size;
+    s->par->min(&first, 1);
+    s->par->bcast(r->unstable, sizeof r->unstable, first < s->par->size ? (int)first : 0);
 }
 
 /* Runs until t_end or instability; returns 0, or 1 when the monitor stopped it. */
@@ -564,13 +710,17 @@ static int time_loop(run_state *r)
 {
     sph_sim *s = &r->sim;
     sph_progress prog;
-    sph_progress_start(&prog, r->t_end, r->opt.quiet, r->opt.progress);
+    const sph_par *par = s->par;
+    sph_progress_start(&prog, r->t_end, r->opt.quiet || par->rank != 0, r->opt.progress);
     const double floor_dt = dt_floor(r), eps = 1e-9 * r->t_out;
     while (s->t < r->t_end - eps) {
         /* the steps to the next check or output time, whichever is first */
+        /* (on many processes a signal stops the run at the end of a batch, where the
+         * processes agree on it: every process must take the same steps) */
         sph_advance a = {.steps = CHECK_EVERY - (int)(s->step % CHECK_EVERY),
                          .t_stop = fmin(r->next_out, r->t_end),
-                         .eps = eps, .floor_dt = floor_dt, .stop = &stop_signal};
+                         .eps = eps, .floor_dt = floor_dt,
+                         .stop = par->size == 1 ? &stop_signal : NULL};
         const long batch = sph_team_batch(&r->team); /* (short while a count is tried) */
         if (a.steps > batch)
             a.steps = (int)batch;
@@ -588,6 +738,11 @@ static int time_loop(run_state *r)
         const double idle1 = idle0 < 0 ? -1 : sph_idle_time();
         sph_team_after(&r->team, steps, wall, sph_cpu_time() - cpu0,
                        idle1 < 0 ? -1 : idle1 - idle0, w0 + wall);
+        if (par->size > 1) { /* a signal that reached any process stops them all */
+            double sig = stop_signal;
+            par->max(&sig, 1);
+            stop_signal = (sig_atomic_t)sig;
+        }
         if (a.collapsed) {
             sync_host(r);
             dt_collapse_report(r, a.dt_bad, a.floor_bad);
@@ -618,12 +773,16 @@ static int time_loop(run_state *r)
 static int setup(run_state *r)
 {
     const sph_model *m = r->m;
-    if (sph_sim_init(&r->sim, m, !r->opt.quiet))
+    const sph_par *par = r->sim.par;
+    if (sph_sim_init_par(&r->sim, m, !r->opt.quiet, par))
         return -1;
+    double count[2] = {0, 0};
     for (int i = 0; i < r->sim.nbodies; i++) {
-        r->particles += r->sim.bodies[i].n;
-        r->pairs += r->sim.bodies[i].npairs;
+        count[0] += r->sim.bodies[i].nown;
+        count[1] += (double)r->sim.bodies[i].npairs;
     }
+    par->sum(count, 2); /* (all processes' particles; the pairs with a halo on both sides) */
+    r->particles = (long)count[0], r->pairs = (long)count[1];
     if (m->dt_fixed > 0 && m->dt_fixed > min_h_over_c0(r))
         sph_warning("the fixed time step %g s exceeds h/c0 = %g s (CFL 1); the run is likely to "
                     "be unstable", m->dt_fixed, min_h_over_c0(r));
@@ -702,7 +861,25 @@ static int refuse_used_folder(const run_state *r)
     return 1;
 }
 
+/* What a run on many processes cannot do yet (docs/mpi.md): 0, or 1 after a message. */
+static int beyond_many(const run_state *r)
+{
+    if (r->sim.par->size == 1)
+        return 0;
+    const char *what = r->m->contact ? "contact between bodies"
+                       : r->m->advance ? "a device target" : NULL;
+    if (what)
+        sph_error("%s on many processes is not supported yet: run the model on one process "
+                  "(without mpirun, or mpirun -np 1)", what);
+    return what != NULL;
+}
+
 int sph_main(const sph_model *m, int argc, char **argv)
+{
+    return sph_main_par(m, argc, argv, &sph_par_one);
+}
+
+int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
 {
     /* a log (stdout redirected to a file) gets each line when it is printed, not 4 KiB at a
      * time or at the end */
@@ -710,6 +887,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
     run_state r;
     memset(&r, 0, sizeof r);
     r.m = m;
+    r.sim.par = par;
     sph_message_program(m->name);
     r.stretch_seen = 1.0;
     int rc = sph_parse_options(&r.opt, m->name, argc, argv);
@@ -721,16 +899,17 @@ int sph_main(const sph_model *m, int argc, char **argv)
         return sph_partition_report(m, r.opt.partition) ? SPH_EXIT_SETUP : 0;
     /* fewer threads while the machine is busy, unless told how many (a device target's
      * host threads only copy and check) */
-    sph_team_init(&r.team, omp_get_max_threads(), r.opt.threads > 0 || m->advance);
+    sph_team_init(&r.team, omp_get_max_threads(),
+                  r.opt.threads > 0 || m->advance || par->size > 1);
     sph_profile_on = r.opt.profile;
     sph_profile_phase = SPH_PHASE_SETUP;
     r.t_end = r.opt.t_end > 0 ? r.opt.t_end : m->t_end;
     r.t_out = r.opt.t_out > 0 ? r.opt.t_out : m->t_out;
     r.t_frames = r.opt.t_frames > 0 ? r.opt.t_frames : r.t_out;
     r.t_checkpoint = r.opt.t_checkpoint > 0 ? r.opt.t_checkpoint : m->t_checkpoint;
-    if (too_many_outputs(&r))
+    if (too_many_outputs(&r) || beyond_many(&r))
         return SPH_EXIT_OPTIONS;
-    if (!r.opt.restart && refuse_used_folder(&r))
+    if (par->agree(!r.opt.restart && refuse_used_folder(&r)))
         return SPH_EXIT_SETUP;
     if (r.t_checkpoint > 0)
         catch_stop_signals();
@@ -738,7 +917,7 @@ int sph_main(const sph_model *m, int argc, char **argv)
     r.next_out = r.t_out;
     r.next_checkpoint = r.t_checkpoint;
     sph_ckpt ckpt;
-    if (r.opt.restart && sph_ckpt_read(&ckpt, r.opt.restart))
+    if (par->agree(r.opt.restart && sph_ckpt_read(&ckpt, r.opt.restart)))
         return SPH_EXIT_SETUP;
     if (setup(&r))
         return SPH_EXIT_SETUP;
@@ -752,7 +931,8 @@ int sph_main(const sph_model *m, int argc, char **argv)
             return SPH_EXIT_SETUP;
     } else {
         sync_host(&r);
-        if (initial_state_bad(&r) || open_outputs(&r) || write_summary(&r, "running", 0, NULL))
+        if (initial_state_bad(&r) || par->agree(open_outputs(&r)) ||
+            write_summary(&r, "running", 0, NULL))
             return SPH_EXIT_SETUP;
         r.setup_seconds = sph_wall_time() - r.wall0;
         sph_profile_phase = SPH_PHASE_CHECKS; /* the first output */
@@ -770,11 +950,13 @@ int sph_main(const sph_model *m, int argc, char **argv)
     if (write_summary(&r, state == 1 ? "unstable" : state == 2 ? "stopped" : "finished", wall,
                       &failed))
         return SPH_EXIT_SETUP;
-    sph_csv_close(&r.energies);
-    for (int q = 0; q < r.nmeasures; q++)
-        sph_csv_close(&r.measure_csv[q]);
-    if (m->compat_outputs)
-        sph_compat_close(&r.compat);
+    if (par->rank == 0) {
+        sph_csv_close(&r.energies);
+        for (int q = 0; q < r.nmeasures; q++)
+            sph_csv_close(&r.measure_csv[q]);
+        if (m->compat_outputs)
+            sph_compat_close(&r.compat);
+    }
     sph_sim_free(&r.sim);
     if (r.opt.profile) {
         const sph_profile_times t = {r.setup_seconds, r.step_seconds, r.check_seconds,

@@ -77,15 +77,21 @@ static void put_files(sph_ckpt_writer *w, const run_state *r)
  * timers, and how long each output file is. */
 int sph_run_write_checkpoint(run_state *r)
 {
-    char *path = joinf("%s/checkpoint.bin%s", r->opt.out_dir, "");
-    sph_ckpt_writer w;
-    const int bad = sph_ckpt_create(&w, path);
-    free(path);
-    if (bad)
+    const sph_par *par = r->sim.par; /* (on many processes process 0 writes the file) */
+    sph_ckpt_writer w, *wp = NULL;
+    if (par->rank == 0) {
+        char *path = joinf("%s/checkpoint.bin%s", r->opt.out_dir, "");
+        const int bad = sph_ckpt_create(&w, path);
+        free(path);
+        wp = bad ? NULL : &w;
+    }
+    if (par->agree(par->rank == 0 && !wp))
         return -1;
     if (r->m->copy_state)
         r->m->copy_state(&r->sim, 0);
-    sph_sim_checkpoint(&w, &r->sim);
+    sph_sim_checkpoint(wp, &r->sim); /* (collective) */
+    if (!wp)
+        return par->agree(0) ? -1 : 0;
     const double times[RUN_TIMES] = {
         r->next_out, r->next_frame, r->next_checkpoint, r->step_seconds, r->check_seconds,
         r->output_seconds, r->setup_seconds, r->wall_before + sph_wall_time() - r->wall0,
@@ -101,7 +107,7 @@ int sph_run_write_checkpoint(run_state *r)
         put_series(&w, name, &r->rec.measures[q]);
     }
     put_files(&w, r);
-    return sph_ckpt_commit(&w);
+    return par->agree(sph_ckpt_commit(&w)) ? -1 : 0;
 }
 
 static int take_series(const sph_ckpt *c, const char *name, sph_series *q)
@@ -123,6 +129,8 @@ static int take_series(const sph_ckpt *c, const char *name, sph_series *q)
 /* Before the outputs are opened: the files they keep, cut back to their checkpoint length. */
 int sph_run_resume_files(const sph_ckpt *c, const run_state *r)
 {
+    if (r->sim.par->rank != 0)
+        return 0; /* (the files are process 0's) */
     size_t nb, lb;
     const char *names = sph_ckpt_find(c, "run.files", &nb);
     const long *lengths = sph_ckpt_find(c, "run.file_lengths", &lb);
@@ -150,23 +158,56 @@ int sph_run_resume_files(const sph_ckpt *c, const run_state *r)
     return ok ? 0 : -1;
 }
 
+/* Removes path (and path.tmp, one cut short); 1 when either was there. */
+static int remove_frame_file(const char *path)
+{
+    char tmp[4200];
+    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    const int gone = remove(tmp) == 0;
+    return (remove(path) == 0) | gone;
+}
+
 /* The frames of body i that the run wrote after its checkpoint: the resumed run writes them
  * again, and one that ends sooner (a shorter --end, a stop) must not leave them beside its
- * own, nor its .pvd list them.  0, or -1 after reporting. */
+ * own, nor its .pvd list them; on many processes a frame is a .pvtu file and its pieces
+ * (NAME_k.pvtu, NAME_k_p0.vtu, ...), which the run may have written on another number of
+ * processes.  Process 0's work; 0, or -1 after reporting. */
 static int drop_later_frames(const run_state *r, int i)
 {
     const char *body = r->sim.bodies[i].desc->name;
     char file[256], path[4096];
-    for (int k = r->nframes, gone = 1; gone; k++) { /* (and one cut short, PATH.tmp) */
-        frame_file(file, sizeof file, body, k);
-        snprintf(path, sizeof path, "%s/particles/%s.tmp", r->opt.out_dir, file);
-        gone = remove(path) == 0;
-        path[strlen(path) - 4] = '\0';
-        gone = (remove(path) == 0) | gone;
+    for (int k = r->nframes, gone = 1; gone; k++) {
+        frame_file(file, sizeof file, body, k); /* NAME_k.vtu */
+        snprintf(path, sizeof path, "%s/particles/%s", r->opt.out_dir, file);
+        gone = remove_frame_file(path);
+        strcpy(path + strlen(path) - 4, ".pvtu");
+        gone |= remove_frame_file(path);
+        for (int p = 0, piece = 1; piece; p++) {
+            snprintf(path, sizeof path, "%s/particles/%.*s_p%d.vtu", r->opt.out_dir,
+                     (int)strlen(file) - 4, file, p);
+            piece = remove_frame_file(path);
+            gone |= piece;
+        }
     }
     snprintf(path, sizeof path, "%s/particles/%s.pvd", r->opt.out_dir, body);
     return sph_write_pvd(path, (const char *const *)r->frame_files[i], r->frame_times,
                          r->nframes);
+}
+
+/* The file of body's earlier frame k as the run wrote it: NAME_k.pvtu when it ran on many
+ * processes, NAME_k.vtu on one. */
+static char *earlier_frame(const run_state *r, const char *body, int k)
+{
+    char file[256], path[4400];
+    frame_file(file, sizeof file, body, k);
+    strcpy(file + strlen(file) - 4, ".pvtu");
+    snprintf(path, sizeof path, "%s/particles/%s", r->opt.out_dir, file);
+    FILE *f = fopen(path, "rb");
+    if (f)
+        fclose(f);
+    else
+        frame_file(file, sizeof file, body, k);
+    return strdup(file);
 }
 
 /* The run's records, after the outputs are open: times, frames, series, timers. */
@@ -206,14 +247,13 @@ int sph_run_resume(const sph_ckpt *c, run_state *r)
     memcpy(r->frame_times, frames, (size_t)r->nframes * sizeof(double));
     for (int i = 0; i < r->sim.nbodies; i++) { /* the pvd lists the earlier frames again */
         r->frame_files[i] = calloc((size_t)r->nframes + 1, sizeof(char *));
-        for (int k = 0; k < r->nframes; k++) {
-            char file[256];
-            frame_file(file, sizeof file, r->sim.bodies[i].desc->name, k);
-            r->frame_files[i][k] = strdup(file);
-        }
-        if (drop_later_frames(r, i))
-            return -1;
+        for (int k = 0; k < r->nframes; k++)
+            r->frame_files[i][k] = earlier_frame(r, r->sim.bodies[i].desc->name, k);
     }
-    return 0;
+    /* (process 0's files; the others wait for it to be done with them) */
+    int bad = 0;
+    for (int i = 0; i < r->sim.nbodies && r->sim.par->rank == 0; i++)
+        bad |= drop_later_frames(r, i);
+    return r->sim.par->agree(bad) ? -1 : 0;
 }
 

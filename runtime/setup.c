@@ -62,9 +62,9 @@ static int by_slab(const void *pa, const void *pb)
 
 static void order_particles(sph_body *b)
 {
-    const int D = b->dim;
+    const int D = b->dim, n = b->nown; /* (a halo stays after the own particles) */
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (int i = 0; i < b->n; i++)
+    for (int i = 0; i < n; i++)
         for (int k = 0; k < D; k++) {
             lo[k] = fmin(lo[k], b->X[(size_t)i * D + k]);
             hi[k] = fmax(hi[k], b->X[(size_t)i * D + k]);
@@ -78,16 +78,25 @@ static void order_particles(sph_body *b)
                 order_axes[a] = order_axes[c];
                 order_axes[c] = t;
             }
-    int *perm = zalloc((size_t)b->n, sizeof(int));
-    for (int i = 0; i < b->n; i++)
+    int *perm = zalloc((size_t)n, sizeof(int));
+    for (int i = 0; i < n; i++)
         perm[i] = i;
     order_X = b->X;
     order_dim = D;
-    qsort(perm, (size_t)b->n, sizeof(int), by_slab);
+    qsort(perm, (size_t)n, sizeof(int), by_slab);
     double *X = zalloc((size_t)b->n * D, sizeof(double));
-    for (int i = 0; i < b->n; i++)
+    memcpy(X, b->X, (size_t)b->n * D * sizeof *X);
+    for (int i = 0; i < n; i++)
         for (int k = 0; k < D; k++)
             X[(size_t)i * D + k] = b->X[(size_t)perm[i] * D + k];
+    if (b->gid) {
+        int64_t *gid = zalloc((size_t)b->n, sizeof *gid);
+        memcpy(gid, b->gid, (size_t)b->n * sizeof *gid);
+        for (int i = 0; i < n; i++)
+            gid[i] = b->gid[perm[i]];
+        free(b->gid);
+        b->gid = gid;
+    }
     free(b->X);
     free(perm);
     b->X = X;
@@ -152,7 +161,7 @@ static int silent_pair(const sph_body *b, int i, int p, sph_kernel_kind kernel, 
 
 static void drop_silent_pairs(sph_body *b, sph_kernel_kind kernel)
 {
-    const int D = b->dim, n = b->n;
+    const int D = b->dim, n = b->nown; /* (the rows of own particles) */
     double wmax = 0;
     if (sizeof(sph_real) < sizeof(double)) {
 #pragma omp parallel for schedule(dynamic, 1024) reduction(max : wmax)
@@ -253,7 +262,7 @@ static void offset_tables(sph_body *b, sph_kernel_kind kernel)
     long reach = 0;
     int lattice = 1;
 #pragma omp parallel for schedule(dynamic, 1024) reduction(max : reach) reduction(&& : lattice)
-    for (int i = 0; i < b->n; i++)
+    for (int i = 0; i < b->nown; i++)
         for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
             long off[3], key = 0;
             if (!pair_offset(b, i, p, off)) {
@@ -278,10 +287,10 @@ static void offset_tables(sph_body *b, sph_kernel_kind kernel)
         for (long s = 0; s < nslots; s++)
             slot[s] = -1;
 #pragma omp parallel for schedule(dynamic, 1024)
-        for (int i = 0; i < b->n; i++)
+        for (int i = 0; i < b->nown; i++)
             for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++)
                 b->nb_k[p] = (int)repack_key(b->nb_k[p], D, reach);
-        for (int i = 0; i < b->n; i++) /* numbered in pair order */
+        for (int i = 0; i < b->nown; i++) /* numbered in pair order */
             for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
                 int *k = &slot[b->nb_k[p]];
                 if (*k < 0)
@@ -303,7 +312,7 @@ static void offset_tables(sph_body *b, sph_kernel_kind kernel)
         return;
     }
 #pragma omp parallel for schedule(dynamic, 1024)
-    for (int i = 0; i < b->n; i++)
+    for (int i = 0; i < b->nown; i++)
         for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
             b->nb_k[p] = p;
             table_entry(b, p, i, p, kernel);
@@ -314,25 +323,42 @@ static void offset_tables(sph_body *b, sph_kernel_kind kernel)
  * (see sphrt.h). */
 static void half_lists(sph_body *b)
 {
-    b->hb_start = zalloc((size_t)b->n + 1, sizeof(int));
+    const int n = b->nown; /* pairs of own particles; with a halo, those with it apart */
+    b->hb_start = zalloc((size_t)n + 1, sizeof(int));
+    if (b->nown < b->n)
+        b->xb_start = zalloc((size_t)n + 1, sizeof(int));
     int reach = 1;
 #pragma omp parallel for schedule(static)
-    for (int i = 0; i < b->n; i++) { /* counts, then their running sum */
-        int c = 0;
-        for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++)
-            c += b->nb[p] > i;
+    for (int i = 0; i < n; i++) { /* counts, then their running sum */
+        int c = 0, x = 0;
+        for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
+            c += b->nb[p] > i && b->nb[p] < n;
+            x += b->nb[p] >= n;
+        }
         b->hb_start[i + 1] = c;
+        if (b->xb_start)
+            b->xb_start[i + 1] = x;
     }
-    for (int i = 0; i < b->n; i++)
+    for (int i = 0; i < n; i++) {
         b->hb_start[i + 1] += b->hb_start[i];
-    const size_t q = (size_t)b->hb_start[b->n];
+        if (b->xb_start)
+            b->xb_start[i + 1] += b->xb_start[i];
+    }
+    const size_t q = (size_t)b->hb_start[n];
     b->hb = zalloc(q, sizeof(int));
     b->hb_k = zalloc(q, sizeof(int));
+    if (b->xb_start) {
+        b->xb = zalloc((size_t)b->xb_start[n] + 1, sizeof(int));
+        b->xb_k = zalloc((size_t)b->xb_start[n] + 1, sizeof(int));
+    }
 #pragma omp parallel for schedule(static) reduction(max : reach)
-    for (int i = 0; i < b->n; i++) {
-        int at = b->hb_start[i];
+    for (int i = 0; i < n; i++) {
+        int at = b->hb_start[i], xat = b->xb_start ? b->xb_start[i] : 0;
         for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++)
-            if (b->nb[p] > i) {
+            if (b->nb[p] >= n) {
+                b->xb[xat] = b->nb[p];
+                b->xb_k[xat++] = b->nb_k[p];
+            } else if (b->nb[p] > i) {
                 b->hb[at] = b->nb[p];
                 b->hb_k[at++] = b->nb_k[p];
                 reach = b->nb[p] - i > reach ? b->nb[p] - i : reach;
@@ -342,14 +368,14 @@ static void half_lists(sph_body *b)
     free(b->nb_start), free(b->nb), free(b->nb_k);
     b->nb_start = b->nb = b->nb_k = NULL;
     /* Stripes of at least `reach` particles; fewer than 4 stripes: one, run serially. */
-    int ns = b->n / reach;
+    int ns = n / reach;
     if (ns < 4)
         ns = 1;
     b->nstripes = ns;
     b->stripe = zalloc((size_t)ns + 1, sizeof(int));
     b->stripe_sum = zalloc((size_t)ns, sizeof(double));
     for (int s = 0; s <= ns; s++)
-        b->stripe[s] = (int)((long)b->n * s / ns);
+        b->stripe[s] = (int)((long)n * s / ns);
 }
 
 /* Whether value (a BC's or a restrict's expression) gives a value, rather than skip, at any
@@ -360,15 +386,24 @@ static void half_lists(sph_body *b)
 static int selects_any(const sph_body *b, int (*value)(const struct sph_pt *, double *),
                        const int *list, int n, double t_end)
 {
-    for (int q = 0; q <= 4; q++)
-        for (int c = 0; c < n; c++) {
+    double any = 0; /* (on many processes: on any of them) */
+    for (int q = 0; q <= 4 && !any; q++)
+        for (int c = 0; c < n && !any; c++) {
             sph_pt p;
             double val;
             sph_point(b, list ? list[c] : c, b->dim, 0.25 * q * t_end, 0, &p);
-            if (value(&p, &val))
-                return 1;
+            any = value(&p, &val);
         }
-    return 0;
+    b->par->max(&any, 1);
+    return any > 0;
+}
+
+/* The number of particles a selection holds on all processes. */
+static double selected(const sph_body *b, int count)
+{
+    double n = count;
+    b->par->sum(&n, 1);
+    return n;
 }
 
 static void selections(sph_body *b, const sph_body_desc *d, double t_end)
@@ -378,17 +413,19 @@ static void selections(sph_body *b, const sph_body_desc *d, double t_end)
     for (int k = 0; k < d->nbcs; k++) {
         const sph_bc_desc *bc = &d->bcs[k];
         if (bc->has_near) {
-            b->bc_count[k] = sph_select_near(b->X, b->n, b->dim, b->y_plane, b->dx, &bc->near,
-                                             &b->bc_list[k]);
-            if (b->bc_count[k] == 0) {
-                fprintf(stderr, "%s: warning: %s of body '%s' acts on no particle: none lies "
+            b->bc_count[k] = sph_select_near(b->X, b->nown, b->dim, b->y_plane, b->dx,
+                                             &bc->near, &b->bc_list[k]);
+            if (selected(b, b->bc_count[k]) == 0) {
+                if (b->par->rank == 0)
+                    fprintf(stderr, "%s: warning: %s of body '%s' acts on no particle: none lies "
                                 "within dx = %g m of its `near` shape\n",
                         bc->where, bc->what, d->name, b->dx);
                 continue;
             }
         }
         if (bc->value && !selects_any(b, bc->value, bc->has_near ? b->bc_list[k] : NULL,
-                                      bc->has_near ? b->bc_count[k] : b->n, t_end))
+                                      bc->has_near ? b->bc_count[k] : b->nown, t_end) &&
+            b->par->rank == 0)
             fprintf(stderr, "%s: warning: %s of body '%s' acts on no particle: its expression "
                             "skips every particle%s at t = 0, T/4, T/2, 3T/4 and T (the end "
                             "time); is the selection narrower than the spacing dx = %g m?\n",
@@ -397,9 +434,9 @@ static void selections(sph_body *b, const sph_body_desc *d, double t_end)
     b->ms_list = zalloc((size_t)d->nmeasures, sizeof(int *));
     b->ms_count = zalloc((size_t)d->nmeasures, sizeof(int));
     for (int k = 0; k < d->nmeasures; k++) {
-        b->ms_count[k] = sph_select_plane(b->X, b->n, b->dim, b->dx, d->measures[k].p,
+        b->ms_count[k] = sph_select_plane(b->X, b->nown, b->dim, b->dx, d->measures[k].p,
                                           &b->ms_list[k]);
-        if (b->ms_count[k] == 0)
+        if (selected(b, b->ms_count[k]) == 0 && b->par->rank == 0)
             sph_warning("measurement '%s' of body '%s' selects no particle",
                         d->measures[k].name, d->name);
     }
@@ -410,10 +447,10 @@ static void selections(sph_body *b, const sph_body_desc *d, double t_end)
 static void cut_notches(sph_body *b, const sph_fracture_desc *f)
 {
     int *cuts = zalloc((size_t)f->nnotches, sizeof(int));
-    b->npairs = sph_drop_notch_pairs(b->X, b->n, b->dim, b->y_plane, b->nb_start, b->nb,
+    b->npairs = sph_drop_notch_pairs(b->X, b->nown, b->dim, b->y_plane, b->nb_start, b->nb,
                                      (const double(*)[4][3])f->notches, f->nnotches, cuts);
     for (int k = 0; k < f->nnotches; k++)
-        if (!cuts[k])
+        if (selected(b, cuts[k]) == 0 && b->par->rank == 0)
             fprintf(stderr, "%s: warning: the notch of body '%s' cuts no pair of particles: no "
                             "pair of neighbours crosses it (does it lie outside the body?)\n",
                     f->notch_where ? f->notch_where[k] : "sph", b->desc->name);
@@ -424,7 +461,8 @@ static void cut_notches(sph_body *b, const sph_fracture_desc *f)
  * boundary condition that acts on none. */
 static void check_restrict(const sph_body *b, const sph_fracture_desc *f, double t_end)
 {
-    if (!f->restrict_value || selects_any(b, f->restrict_value, NULL, b->n, t_end))
+    if (!f->restrict_value || selects_any(b, f->restrict_value, NULL, b->nown, t_end) ||
+        b->par->rank != 0)
         return;
     fprintf(stderr, "%s: warning: the restrict of body '%s' bounds no particle: its expression "
                     "skips every particle at t = 0, T/4, T/2, 3T/4 and T (the end time); is the "
@@ -504,10 +542,49 @@ static int too_few_neighbours(const sph_body *b, const sph_body_desc *d, int nsi
     return -1;
 }
 
-int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
+/* The body's particles: the whole body on one process; on many, this process's own part
+ * and its halo (docs/mpi.md).  0, or -1 after a message (on every process alike). */
+static int fill(sph_body *b, const sph_body_desc *d, const sph_model *m)
+{
+    const sph_par *par = b->par;
+    int bad = 0;
+    if (par->size == 1) {
+        SPH_TIMED("set-up: filling the shapes",
+                  b->n = sph_fill_region(&d->region, m->dim, b->dx, d->y_plane, &b->X));
+        b->nown = b->n;
+        bad = b->n < 0;
+    } else {
+        sph_part_fill pf;
+        SPH_TIMED("set-up: filling the shapes",
+                  bad = sph_fill_part(&d->region, m->dim, b->dx, d->y_plane, 2.0 * b->h,
+                                      d->nbsrange, par->rank, par->size, &pf));
+        b->n = pf.n, b->nown = pf.nown, b->X = pf.X, b->gid = pf.gid, b->halo_part = pf.halo_part;
+    }
+    if (par->agree(bad)) {
+        sph_error("body '%s' cannot be filled with particles of spacing %g", d->name, b->dx);
+        return -1;
+    }
+    double count[2] = {b->nown, b->nown > 0 ? 1 : 0}; /* particles, processes holding some */
+    par->sum(count, 2);
+    if (count[0] == 0) {
+        sph_error("body '%s' has no particles (its shape is smaller than the "
+                  "particle spacing %g)", d->name, b->dx);
+        return -1;
+    }
+    if (count[1] < par->size) {
+        sph_error("body '%s' has %.0f particles, too few to give each of the %d processes "
+                  "some (%.0f hold none): run it on fewer processes", d->name, count[0],
+                  par->size, par->size - count[1]);
+        return -1;
+    }
+    return 0;
+}
+
+int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, const sph_par *par)
 {
     memset(b, 0, sizeof *b);
     b->desc = d;
+    b->par = par;
     b->dim = m->dim;
     b->dx = m->dp / d->refine;
     b->h = m->coefh * sqrt((double)m->dim) * b->dx; /* h = coefh sqrt(dim) dx */
@@ -516,32 +593,22 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
     b->mass = b->rho0 * b->vol;
     b->c0 = d->c0;
     b->y_plane = d->y_plane;
-    SPH_TIMED("set-up: filling the shapes",
-              b->n = sph_fill_region(&d->region, m->dim, b->dx, d->y_plane, &b->X));
-    if (b->n < 0) {
-        sph_error("body '%s' cannot be filled with particles of spacing %g",
-                  d->name, b->dx);
+    if (fill(b, d, m))
         return -1;
-    }
-    if (b->n == 0) {
-        sph_error("body '%s' has no particles (its shape is smaller than the "
-                  "particle spacing %g)", d->name, b->dx);
-        return -1;
-    }
-    if (check_size(b))
+    if (par->agree(check_size(b)))
         return -1;
     SPH_TIMED("set-up: particle order", order_particles(b));
     SPH_TIMED("set-up: neighbour search",
               sph_neighbours(b->X, b->n, b->dim, 2.0 * b->h, d->nbsrange, b->dx, &b->nb_start,
                              &b->nb));
-    b->npairs = b->nb_start[b->n];
+    b->npairs = b->nb_start[b->nown];
     if (d->fracture && d->fracture->nnotches) /* before the gradients: L sees the cut */
         SPH_TIMED("set-up: notches", cut_notches(b, d->fracture));
     int nsingular = 0, first = -1;
     SPH_TIMED("set-up: kernel gradients and L",
-              nsingular = sph_gradients(b->X, b->n, b->dim, b->nb_start, b->nb, m->kernel, b->h,
-                                        b->vol, NULL, &b->L, &first));
-    if (nsingular && too_few_neighbours(b, d, nsingular, first))
+              nsingular = sph_gradients(b->X, b->nown, b->dim, b->nb_start, b->nb, m->kernel,
+                                        b->h, b->vol, NULL, &b->L, &first));
+    if (par->agree(nsingular && too_few_neighbours(b, d, nsingular, first)))
         return -1;
     SPH_TIMED("set-up: silent pairs", drop_silent_pairs(b, m->kernel));
     SPH_TIMED("set-up: offset tables", offset_tables(b, m->kernel));
@@ -555,6 +622,9 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m)
 
 void sph_body_free(sph_body *b)
 {
+    if (b->par)
+        b->par->body_free(b);
+    free(b->gid), free(b->halo_part), free(b->xb_start), free(b->xb), free(b->xb_k);
     for (int k = 0; k < b->desc->nbcs; k++)
         free(b->bc_list[k]);
     for (int k = 0; k < b->desc->nmeasures; k++)
@@ -575,11 +645,11 @@ void sph_body_energies(const sph_body *b, double *strain, double *kinetic)
     /* Summed in blocks of a fixed size, the blocks' sums in order: the same bits on any
      * number of threads (a run's team changes with the machine's load, runtime/team.h). */
     enum { BLOCK = 4096 };
-    const int D = b->dim, nblocks = (b->n + BLOCK - 1) / BLOCK;
+    const int D = b->dim, nblocks = (b->nown + BLOCK - 1) / BLOCK;
     double *part = zalloc(2 * (size_t)nblocks + 1, sizeof(double));
 #pragma omp parallel for schedule(static)
     for (int k = 0; k < nblocks; k++) {
-        const int end = b->n - k * BLOCK < BLOCK ? b->n : (k + 1) * BLOCK;
+        const int end = b->nown - k * BLOCK < BLOCK ? b->nown : (k + 1) * BLOCK;
         double es = 0, ek = 0;
         for (int i = k * BLOCK; i < end; i++) {
             es += b->psi[i];
@@ -602,7 +672,7 @@ double sph_dissipated_energy(const sph_body *b)
     if (slot < 0 || !b->state)
         return 0.0;
     double w = 0;
-    for (int i = 0; i < b->n; i++)
+    for (int i = 0; i < b->nown; i++)
         w += b->state[(size_t)i * ns + slot];
     return w * b->vol;
 }
@@ -618,8 +688,17 @@ void sph_measure(const sph_body *b, int k, double out[6])
             out[3 + sph_axis(D, c)] += b->mass * b->a[(size_t)i * D + c];
         }
     }
-    for (int c = 0; c < 3 && n; c++)
-        out[c] /= n;
+    double count = n;
+    if (b->par->size > 1) { /* the sums and the particles of every process */
+        double all[7];
+        memcpy(all, out, 6 * sizeof(double));
+        all[6] = n;
+        b->par->sum(all, 7);
+        memcpy(out, all, 6 * sizeof(double));
+        count = all[6];
+    }
+    for (int c = 0; c < 3 && count > 0; c++)
+        out[c] /= count;
 }
 
 void sph_series_push(sph_series *s, double t, const double *row)

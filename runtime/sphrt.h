@@ -395,9 +395,33 @@ typedef float sph_real;
 typedef double sph_real;
 #endif
 
+/* Values of a body's particles that a pass reads from neighbours: bytes per particle at
+ * base (particle i at base + i size), for the halo exchange of runs on many processes. */
+typedef struct {
+    void *base;
+    size_t size;
+} sph_field;
+#define SPH_FIELD(array, per_particle) ((sph_field){(array), (per_particle) * sizeof *(array)})
+
+struct sph_par;
+
 struct sph_body {
     const sph_body_desc *desc;
     int n, dim;
+    /* Runs on many processes (docs/mpi.md): this process's own particles are 0 .. nown - 1,
+     * its halo (particles of other processes within the kernel support of its own, whose
+     * values the exchanges bring) nown .. n - 1.  On one process nown = n.  Particle loops
+     * run over the own particles, the pair passes over the pairs of own particles. */
+    int nown;
+    int64_t *gid;         /* n global ids (lattice ids, partition.h); NULL on one process */
+    int *halo_part;       /* n - nown: the process each halo particle belongs to */
+    /* Pairs of an own particle i with halo particles: xb_start[i] .. xb_start[i + 1] - 1,
+     * neighbour xb[p], offset table entry xb_k[p] (as i sees the pair).  A process computes
+     * them for its own particle only; the other process computes the same pair for its own.
+     * NULL on one process. */
+    int *xb_start, *xb, *xb_k;
+    const struct sph_par *par; /* the processes of the run (one, or MPI's) */
+    void *halo;                /* the halo exchange's plan (the MPI runtime's) */
     double dx, h, vol, mass, rho0, c0, y_plane;
 
     double *X;          /* n*dim reference positions */
@@ -497,6 +521,43 @@ static inline int sph_body_state_arrays(sph_body *b, int nstate, sph_state_array
 
 typedef struct sph_contact sph_contact;
 
+/* The processes of a run: one (sph_par_one), or many under MPI (libsphrt_mpi, sph_mpi_main).
+ * The runtime calls these at the points where processes must agree; on one process they
+ * do nothing.  Sums add the processes' values in process order, so that every process gets
+ * the same bits whatever the library's reduction order. */
+typedef struct sph_par {
+    int rank, size;
+    void (*sum)(double *x, int n);          /* in place, elementwise over the processes */
+    void (*min)(double *x, int n);
+    void (*max)(double *x, int n);
+    /* Collective: 1 when `bad` on any process; then the first message (sph_error) of the
+     * lowest failing process is printed by process 0, unless process 0 failed too. */
+    int (*agree)(int bad);
+    void (*bcast)(void *buf, int bytes, int root);
+    /* Every process's `bytes` at mine into all (size blocks, in process order). */
+    void (*allgather)(const void *mine, void *all, int bytes);
+    /* Collective: process 0 gets every process's block (any length) in process order, and
+     * calls take(ctx, process, data, bytes) with each; the others only send. */
+    void (*gather0)(const void *data, size_t bytes,
+                    void (*take)(void *ctx, int from, const void *data, size_t bytes),
+                    void *ctx);
+    /* Collective, once after every body's set-up: the plan of body b's halo exchange;
+     * 0, or -1 after a message. */
+    int (*body_ready)(sph_body *b);
+    void (*body_free)(sph_body *b);
+    /* The halo's values of nf fields of body b from their processes: post starts the
+     * exchange, wait ends it (the same fields); passes that need no halo value run between. */
+    void (*post)(sph_body *b, const sph_field *f, int nf);
+    void (*wait)(sph_body *b, const sph_field *f, int nf);
+    /* The bytes this process has sent in all exchanges so far, and the seconds it waited
+     * for them (in wait). */
+    double (*bytes_sent)(void);
+    double (*wait_seconds)(void);
+} sph_par;
+
+/* The run on one process. */
+extern const sph_par sph_par_one;
+
 struct sph_sim {
     const sph_model *m;
     sph_body *bodies;
@@ -507,10 +568,15 @@ struct sph_sim {
     sph_contact *contact;  /* contact state (contact.c); NULL until the first contact pass */
     double dt_factor;      /* the smallest factor on eq. 65 of any body at the last
                               sph_sim_stable_dt (timestep auto or stretch; 1 otherwise) */
+    const sph_par *par;    /* the processes of the run (sph_par_one unless under MPI) */
 };
 
-/* Entry point of a generated program. */
+/* Entry point of a generated program; sph_mpi_main that of one built with sphc --mpi, on
+ * every process of the run (libsphrt_mpi). */
 int sph_main(const sph_model *m, int argc, char **argv);
+int sph_mpi_main(const sph_model *m, int argc, char **argv);
+/* sph_main for the processes par (run.c). */
+int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par);
 
 /* The runtime's messages on stderr, "NAME: error: ..." (a line each), NAME the program's
  * model once sph_main or sph_sim_init has set it (message.c). */
@@ -523,6 +589,10 @@ void sph_message_program(const char *name);
 void sph_error(const char *fmt, ...) SPH_PRINTF;
 void sph_warning(const char *fmt, ...) SPH_PRINTF;
 void sph_note(const char *fmt, ...) SPH_PRINTF;
+/* On the processes other than the first of a run on many processes: messages are not printed,
+ * the first error is kept (sph_message_kept; "" when none). */
+void sph_message_keep(int keep);
+const char *sph_message_kept(void);
 
 /* Where the time of a run goes (the program's --profile; profile.c).  The CPU target's step
  * calls its passes through SPH_PASS(fn, (args)), and the set-up times its stages with
@@ -555,6 +625,8 @@ double sph_idle_time(void); /* the machine's idle seconds summed over its cores,
  * build every body and apply the velocity boundary conditions at t = 0 (initial
  * conditions); the stable time step of eq. 64-66 (or the fixed one); one step. */
 int sph_sim_init(sph_sim *s, const sph_model *m, int verbose);
+/* The same on the processes par; collective. */
+int sph_sim_init_par(sph_sim *s, const sph_model *m, int verbose, const sph_par *par);
 double sph_sim_stable_dt(sph_sim *s);
 /* The smallest principal stretch of any particle (finite ones; capped at 1), from the host's
  * F (or, for a body that tracks it for its time step, its lam2min of the same F). */

@@ -22,6 +22,7 @@
 typedef enum {
     A_DISPLACEMENT, A_VELOCITY, A_STRESS, A_VON_MISES, A_J, A_ENERGY,
     A_PHASE, A_HISTORY, /* bodies with fracture only */
+    A_GID,              /* runs on many processes only: the particles' global ids */
     A_POINTS, A_CONNECTIVITY, A_OFFSETS, A_TYPES, A_COUNT
 } array_id;
 
@@ -41,6 +42,7 @@ static const array_info ARRAYS[A_COUNT] = {
     [A_ENERGY]       = {"strain_energy", "Float64", 1, sizeof(double)},
     [A_PHASE]        = {"phase_field", "Float64", 1, sizeof(double)},
     [A_HISTORY]      = {"history", "Float64", 1, sizeof(double)},
+    [A_GID]          = {"global_id", "Int64", 1, sizeof(int64_t)},
     [A_POINTS]       = {"Points", "Float64", 3, sizeof(double)},
     [A_CONNECTIVITY] = {"connectivity", "Int64", 1, sizeof(int64_t)},
     [A_OFFSETS]      = {"offsets", "Int64", 1, sizeof(int64_t)},
@@ -70,10 +72,10 @@ static size_t block_bytes(array_id a, size_t n)
 /* Expand a compact per-particle vector (dim components, NULL = zero) to 3D. */
 static void fill_vec3(const sph_body *b, const double *v, double *out)
 {
-    memset(out, 0, (size_t)b->n * 3 * sizeof(double));
+    memset(out, 0, (size_t)b->nown * 3 * sizeof(double));
     if (!v)
         return;
-    for (int i = 0; i < b->n; i++)
+    for (int i = 0; i < b->nown; i++)
         for (int k = 0; k < b->dim; k++)
             out[i * 3 + sph_axis(b->dim, k)] = v[(size_t)i * b->dim + k];
 }
@@ -83,18 +85,18 @@ static void fill_points(const sph_body *b, double *out)
 {
     fill_vec3(b, b->X, out);
     if (b->u) {
-        for (int i = 0; i < b->n; i++)
+        for (int i = 0; i < b->nown; i++)
             for (int k = 0; k < b->dim; k++)
                 out[i * 3 + sph_axis(b->dim, k)] += b->u[(size_t)i * b->dim + k];
     }
     if (b->dim == 2)
-        for (int i = 0; i < b->n; i++)
+        for (int i = 0; i < b->nown; i++)
             out[i * 3 + 1] = b->y_plane;
 }
 
 static void fill_stress(const sph_body *b, double *out)
 {
-    size_t bytes = (size_t)b->n * 6 * sizeof(double);
+    size_t bytes = (size_t)b->nown * 6 * sizeof(double);
     if (b->sigma)
         memcpy(out, b->sigma, bytes);
     else
@@ -111,7 +113,7 @@ static double von_mises(const double *s)
 
 static void fill_von_mises(const sph_body *b, double *out)
 {
-    for (int i = 0; i < b->n; i++)
+    for (int i = 0; i < b->nown; i++)
         out[i] = b->sigma ? von_mises(b->sigma + (size_t)i * 6) : 0.0;
 }
 
@@ -124,24 +126,26 @@ static double det3(const double *F)
 
 static void fill_jacobian(const sph_body *b, double *out)
 {
-    for (int i = 0; i < b->n; i++)
+    for (int i = 0; i < b->nown; i++)
         out[i] = b->F ? det3(b->F + (size_t)i * 9) : 1.0;
 }
 
 static void fill_energy(const sph_body *b, double *out)
 {
-    for (int i = 0; i < b->n; i++)
+    for (int i = 0; i < b->nown; i++)
         out[i] = b->psi ? b->psi[i] : 0.0;
 }
 
 static int present(array_id a, const sph_body *b)
 {
+    if (a == A_GID)
+        return b->gid != NULL;
     return (a != A_PHASE && a != A_HISTORY) || b->s;
 }
 
 static void fill_scalar(const sph_body *b, const double *x, double *out)
 {
-    for (int i = 0; i < b->n; i++)
+    for (int i = 0; i < b->nown; i++)
         out[i] = x[i];
 }
 
@@ -169,8 +173,9 @@ static void fill_array(array_id a, const sph_body *b, void *buf)
     case A_ENERGY:       fill_energy(b, buf); break;
     case A_PHASE:        fill_scalar(b, b->s, buf); break;
     case A_HISTORY:      fill_scalar(b, b->H, buf); break;
+    case A_GID:          memcpy(buf, b->gid, block_bytes(A_GID, (size_t)b->nown)); break;
     case A_POINTS:       fill_points(b, buf); break;
-    default:             fill_cells(a, b->n, buf); break;
+    default:             fill_cells(a, b->nown, buf); break;
     }
 }
 
@@ -200,9 +205,9 @@ static void write_header(FILE *f, const sph_body *b, double t)
     for (int a = 0; a < A_COUNT; a++) {
         off[a] = pos;
         if (present((array_id)a, b))
-            pos += sizeof(uint64_t) + block_bytes((array_id)a, (size_t)b->n);
+            pos += sizeof(uint64_t) + block_bytes((array_id)a, (size_t)b->nown);
     }
-    const uint64_t state_bytes = sizeof(uint64_t) + (uint64_t)b->n * sizeof(double);
+    const uint64_t state_bytes = sizeof(uint64_t) + (uint64_t)b->nown * sizeof(double);
     fprintf(f, "<?xml version=\"1.0\"?>\n"
                "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"%s\""
                " header_type=\"UInt64\">\n  <UnstructuredGrid>\n"
@@ -210,8 +215,8 @@ static void write_header(FILE *f, const sph_body *b, double t)
                " NumberOfTuples=\"1\" format=\"ascii\">%.17g</DataArray>\n    </FieldData>\n"
                "    <Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n"
                "      <PointData Scalars=\"sigma_vm\" Vectors=\"displacement\">\n",
-            host_byte_order(), t, b->n, b->n);
-    for (int a = A_DISPLACEMENT; a <= A_HISTORY; a++)
+            host_byte_order(), t, b->nown, b->nown);
+    for (int a = A_DISPLACEMENT; a <= A_GID; a++)
         if (present((array_id)a, b))
             write_data_array(f, (array_id)a, off[a], in);
     for (int k = 0; b->desc && k < b->desc->nstate; k++)
@@ -237,7 +242,7 @@ static void write_blocks(FILE *f, const sph_body *b, void *buf)
     for (int a = 0; a < A_COUNT; a++) {
         if (!present((array_id)a, b))
             continue;
-        uint64_t bytes = block_bytes((array_id)a, (size_t)b->n);
+        uint64_t bytes = block_bytes((array_id)a, (size_t)b->nown);
         fill_array((array_id)a, b, buf);
         if (fwrite(&bytes, sizeof bytes, 1, f) != 1)
             return;
@@ -249,9 +254,9 @@ static void write_blocks(FILE *f, const sph_body *b, void *buf)
             continue;
         double *v = buf;
         const int ns = b->desc->nstate;
-        for (int i = 0; i < b->n; i++)
+        for (int i = 0; i < b->nown; i++)
             v[i] = b->state[(size_t)i * ns + k];
-        uint64_t bytes = (uint64_t)b->n * sizeof(double);
+        uint64_t bytes = (uint64_t)b->nown * sizeof(double);
         if (fwrite(&bytes, sizeof bytes, 1, f) != 1 || (bytes && fwrite(buf, 1, bytes, f) != bytes))
             return;
     }
@@ -259,7 +264,7 @@ static void write_blocks(FILE *f, const sph_body *b, void *buf)
 
 int sph_write_vtu(const char *path, const sph_body *b, double t)
 {
-    size_t n = b->n > 0 ? (size_t)b->n : 0;
+    size_t n = b->nown > 0 ? (size_t)b->nown : 0;
     void *buf = malloc(block_bytes(A_STRESS, n) + 1);
     if (!buf)
         return write_error(path, ENOMEM);
@@ -315,6 +320,44 @@ int sph_write_pvd(const char *path, const char *const *files, const double *time
         return write_error(path, errno);
     errno = 0;
     write_collection(f, files, times, n);
+    const int err = sph_close_whole(f, path);
+    return err ? write_error(path, err) : 0;
+}
+
+/* ------------------------------------------------------------------ pieces of many processes */
+
+int sph_write_pvtu(const char *path, const sph_body *b, const char *const *pieces, int npieces)
+{
+    FILE *f = sph_open_whole(path);
+    if (!f)
+        return write_error(path, errno);
+    errno = 0;
+    const char *in = "      ";
+    fprintf(f, "<?xml version=\"1.0\"?>\n"
+               "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"%s\""
+               " header_type=\"UInt64\">\n  <PUnstructuredGrid GhostLevel=\"0\">\n"
+               "    <PPointData Scalars=\"sigma_vm\" Vectors=\"displacement\">\n",
+            host_byte_order());
+    for (int a = A_DISPLACEMENT; a <= A_GID; a++) /* (the arrays of the pieces, write_header) */
+        if (present((array_id)a, b)) {
+            fprintf(f, "%s<PDataArray type=\"%s\" Name=\"%s\"", in, ARRAYS[a].type,
+                    ARRAYS[a].name);
+            if (ARRAYS[a].ncomp > 1)
+                fprintf(f, " NumberOfComponents=\"%d\"", ARRAYS[a].ncomp);
+            fputs("/>\n", f);
+        }
+    for (int k = 0; b->desc && k < b->desc->nstate; k++)
+        if (state_output(b, k))
+            fprintf(f, "%s<PDataArray type=\"Float64\" Name=\"%s\"/>\n", in,
+                    b->desc->state_names[k]);
+    fprintf(f, "    </PPointData>\n    <PPoints>\n%s<PDataArray type=\"Float64\" "
+               "Name=\"Points\" NumberOfComponents=\"3\"/>\n    </PPoints>\n", in);
+    for (int k = 0; k < npieces; k++) {
+        fputs("    <Piece Source=\"", f);
+        write_xml_attr(f, pieces[k]);
+        fputs("\"/>\n", f);
+    }
+    fputs("  </PUnstructuredGrid>\n</VTKFile>\n", f);
     const int err = sph_close_whole(f, path);
     return err ? write_error(path, err) : 0;
 }

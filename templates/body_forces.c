@@ -25,6 +25,23 @@ static void @B@_gradient_pass(sph_body *b)
     const sph_real *restrict ltab = b->ltab;
     double *restrict lap = b->lap; /* zero on entry, like A */
 //@endif
+//@if MPI
+    /* On many processes the halo's values are on their way while the pairs of own particles
+     * are summed; the pairs with the halo follow (docs/mpi.md).  What the pair passes read of
+     * a neighbour: u here, and v for the viscosity of the momentum pass (unchanged until then),
+     * the phase field for its Laplacian. */
+    const sph_field halo_in[] = {
+        SPH_FIELD(b->u, D),
+//@if VISCOSITY
+        SPH_FIELD(b->v, D),
+//@endif
+//@if FRACTURE
+        SPH_FIELD(b->s, 1),
+//@endif
+    };
+    const int nhalo_in = sizeof halo_in / sizeof *halo_in;
+    b->par->post(b, halo_in, nhalo_in);
+//@endif
     for (int colour = 0; colour < 2; colour++) {
 #pragma omp parallel for schedule(static)
         for (int s = colour; s < b->nstripes; s += 2)
@@ -56,13 +73,37 @@ static void @B@_gradient_pass(sph_body *b)
 //@endif
             }
     }
+//@if MPI
+    /* the pairs with the halo: i's share only (the other process computes j's) */
+    b->par->wait(b, halo_in, nhalo_in);
+    const int *restrict xs = b->xb_start, *restrict xb = b->xb, *restrict xk = b->xb_k;
+#pragma omp parallel for schedule(static) if (xs)
+    for (int i = 0; i < (xs ? b->nown : 0); i++) {
+        if (xs[i] == xs[i + 1])
+            continue;
+        vec Ai[D];
+        for (int r = 0; r < D; r++)
+            Ai[r] = (vec){0};
+        for (int p = xs[i]; p < xs[i + 1]; p++) {
+            const int j = xb[p];
+            const vec w = wtab[xk[p]];
+//@if FRACTURE
+            lap[i] += ltab[xk[p]] * (sf[i] - sf[j]);
+//@endif
+            for (int r = 0; r < D; r++)
+                Ai[r] += (sph_real)(u[j * D + r] - u[i * D + r]) * w;
+        }
+        for (int r = 0; r < D; r++)
+            A[(size_t)i * D + r] += Ai[r];
+    }
+//@endif
 }
 
 /* Pass 2, per particle: F, the law, P L and cof(F) (@B@_particle_stress). */
 static void @B@_stress_pass(sph_body *b)
 {
     enum { D = @DIM@, R = SPH_ROW(D) };
-    const int n = b->n;
+    const int n = b->nown;
     sph_real *restrict Ac = b->A;
     @B@_gradient_pass(b);
 #pragma omp parallel for schedule(static)
@@ -81,23 +122,110 @@ static void @B@_stress_pass(sph_body *b)
 /* Pass 3, over pairs (each once): momentum balance (eq. 55) in the symmetric corrected form
  *   rho0 dv_i/dt = sum_j V_j (P_i L_i + P_j L_j) grad W_ij
  * plus artificial viscosity (eq. 57-60) symmetrised the same way.  Each pair force is added
- * to i and subtracted from j, so linear momentum is conserved to round-off. */
-static void @B@_momentum_pass(sph_body *b)
+ * to i and subtracted from j, so linear momentum is conserved to round-off.
+ * The pairs p0 .. p1 - 1 of particle i (neighbour hb[p], table entry hk[p]): their forces on
+ * i into *force (a pointer, not a returned vector: that would change the ABI), and with `both` (the half lists, a pair visited once) each pair's force on
+ * j is subtracted from acc; without (pairs with the halo of a run on many processes) only i's
+ * share is computed, the other process computing j's.  *power gets the pairs' f_visc . (v_i -
+ * v_j), half of it without `both`. */
+SPH_VECTOR(@B@_vec, SPH_ROW(@DIM@));
+static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
+                                      const int *restrict hb, const int *restrict hk, int both,
+                                      double *restrict acc, @B@_vec *force, sph_real *power)
 {
     enum { D = @DIM@, R = SPH_ROW(D) };
-    SPH_VECTOR(vec, R);
-    const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
+    typedef @B@_vec vec;
     const sph_real *restrict wtab = b->wtab;
     const vec *restrict Q = (const vec *)b->Q; /* column c of Q_i at Q[i*D + c] */
-    double *restrict acc = b->a;
     const sph_real inv_rho = (sph_real)(1.0 / b->rho0);
+    const vec *Qi = Q + (size_t)i * D;
 //@if VISCOSITY
     const double *restrict v = b->v;
     const vec *restrict Cv = (const vec *)b->Cv;
     const sph_real *restrict gtab = b->gtab;
+    const vec *Ci = Cv + (size_t)i * D;
+    sph_real pv = 0;
+//@endif
+    vec fi = {0};
+    for (int p = p0; p < p1; p++) {
+        const int j = hb[p], k = hk[p];
+        const sph_real *w = wtab + (size_t)k * R;
+        const vec *Qj = Q + (size_t)j * D;
+        vec f = {0}; /* (Q_i + Q_j) w, column by column */
+        for (int c = 0; c < D; c++)
+            f += (Qi[c] + Qj[c]) * w[c];
+        f *= inv_rho;
+//@if VISCOSITY
+        /* The direction the viscous pressure acts along, fv = (J F^-T)_i w + (J F^-T)_j w
+         * (eq. 57 from both sides, without the correction L), and G_ij of eq. 60 measured
+         * along it (gtab holds h / (r^2 + 0.001 h^2) in the units of w).  In the reference
+         * configuration fv/2 is w, parallel to X_i - X_j, so this is eq. 60; fv turns with the
+         * pair, so a rigid rotation gives G = 0 at any angle, and the viscous power pi G is
+         * never positive (eq. 60 taken along X_i - X_j feeds energy in once a pair has turned
+         * by more than 90 degrees, and L in fv lets a boundary pair's G see a rigid rotation;
+         * docs/stability.md). */
+        const vec *Cj = Cv + (size_t)j * D;
+        vec fv = {0};
+        for (int c = 0; c < D; c++)
+            fv += (Ci[c] + Cj[c]) * w[c];
+        sph_real vw = 0;
+        for (int r = 0; r < D; r++)
+            vw += (sph_real)(v[i * D + r] - v[j * D + r]) * fv[r];
+        const sph_real G = gtab[k] * (sph_real)0.5 * vw;
+        sph_real pi = (sph_real)(-@BETA1@ * @C0@) * G; /* eq. 58, times rho0 */
+//@if BETA2
+        const sph_real Gc = G < 0 ? G : 0; /* min(G, 0): beta2 acts on approach */
+        pi += (sph_real)@BETA2@ * Gc * Gc;
+//@endif
+        const sph_real hpi = (sph_real)0.5 * pi;
+        f -= hpi * fv;
+        pv -= hpi * vw;
+//@endif
+//@if PAIR_TERMS
+        sph_real fh[D];
+        for (int r = 0; r < D; r++)
+            fh[r] = f[r];
+        @B@_pair_terms(b, i, j, k, fh);
+        for (int r = 0; r < D; r++)
+            f[r] = fh[r];
+//@endif
+        fi += f;
+        if (both)
+            for (int r = 0; r < D; r++)
+                acc[j * D + r] -= f[r];
+    }
+//@if VISCOSITY
+    *power = both ? pv : (sph_real)0.5 * pv;
+//@else
+    (void)power;
+//@endif
+    *force = fi;
+}
+
+static void @B@_momentum_pass(sph_body *b)
+{
+    enum { D = @DIM@ };
+    typedef @B@_vec vec;
+    const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
+    double *restrict acc = b->a;
+//@if MPI
+    /* The halo's values of what the pairs read of a neighbour besides u and v: Q, and cof F
+     * for the viscosity, F for the hourglass control; on their way during the pairs of own
+     * particles (docs/mpi.md). */
+    const sph_field halo_in[] = {
+        {b->Q, SPH_TENSOR_SIZE(D) * sizeof *b->Q},
+//@if VISCOSITY
+        {b->Cv, SPH_TENSOR_SIZE(D) * sizeof *b->Cv},
+//@endif
+//@if HOURGLASS
+        SPH_FIELD(b->F, 9),
+//@endif
+    };
+    const int nhalo_in = sizeof halo_in / sizeof *halo_in;
+    b->par->post(b, halo_in, nhalo_in);
 //@endif
 #pragma omp parallel for schedule(static)
-    for (int i = 0; i < b->n; i++)
+    for (int i = 0; i < b->nown; i++)
         for (int r = 0; r < D; r++)
 //@if GRAVITY
             acc[i * D + r] = @B@_gravity[r];
@@ -111,59 +239,9 @@ static void @B@_momentum_pass(sph_body *b)
             double stripe_power = 0; /* f_visc . (v_i - v_j) over the stripe's pairs */
 //@endif
             for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
-                const vec *Qi = Q + (size_t)i * D;
-//@if VISCOSITY
-                const vec *Ci = Cv + (size_t)i * D;
-                sph_real pv = 0;
-//@endif
-                vec fi = {0};
-                for (int p = hs[i]; p < hs[i + 1]; p++) {
-                    const int j = hb[p], k = hk[p];
-                    const sph_real *w = wtab + (size_t)k * R;
-                    const vec *Qj = Q + (size_t)j * D;
-                    vec f = {0}; /* (Q_i + Q_j) w, column by column */
-                    for (int c = 0; c < D; c++)
-                        f += (Qi[c] + Qj[c]) * w[c];
-                    f *= inv_rho;
-//@if VISCOSITY
-                    /* The direction the viscous pressure acts along, fv = (J F^-T)_i w +
-                     * (J F^-T)_j w (eq. 57 from both sides, without the correction L), and
-                     * G_ij of eq. 60 measured along it (gtab holds h / (r^2 + 0.001 h^2) in
-                     * the units of w).  In the reference configuration fv/2 is w, parallel
-                     * to X_i - X_j, so this is eq. 60; fv turns with the pair, so a rigid
-                     * rotation gives G = 0 at any angle, and the viscous power pi G is never
-                     * positive (eq. 60 taken along X_i - X_j feeds energy in once a pair has
-                     * turned by more than 90 degrees, and L in fv lets a boundary pair's G
-                     * see a rigid rotation; docs/stability.md). */
-                    const vec *Cj = Cv + (size_t)j * D;
-                    vec fv = {0};
-                    for (int c = 0; c < D; c++)
-                        fv += (Ci[c] + Cj[c]) * w[c];
-                    sph_real vw = 0;
-                    for (int r = 0; r < D; r++)
-                        vw += (sph_real)(v[i * D + r] - v[j * D + r]) * fv[r];
-                    const sph_real G = gtab[k] * (sph_real)0.5 * vw;
-                    sph_real pi = (sph_real)(-@BETA1@ * @C0@) * G; /* eq. 58, times rho0 */
-//@if BETA2
-                    const sph_real Gc = G < 0 ? G : 0; /* min(G, 0): beta2 acts on approach */
-                    pi += (sph_real)@BETA2@ * Gc * Gc;
-//@endif
-                    const sph_real hpi = (sph_real)0.5 * pi;
-                    f -= hpi * fv;
-                    pv -= hpi * vw;
-//@endif
-//@if PAIR_TERMS
-                    sph_real fh[D];
-                    for (int r = 0; r < D; r++)
-                        fh[r] = f[r];
-                    @B@_pair_terms(b, i, j, k, fh);
-                    for (int r = 0; r < D; r++)
-                        f[r] = fh[r];
-//@endif
-                    fi += f;
-                    for (int r = 0; r < D; r++)
-                        acc[j * D + r] -= f[r];
-                }
+                sph_real pv;
+                vec fi;
+                @B@_momentum_pairs(b, i, hs[i], hs[i + 1], hb, hk, 1, acc, &fi, &pv);
                 for (int r = 0; r < D; r++)
                     acc[i * D + r] += fi[r];
 //@if VISCOSITY
@@ -175,6 +253,25 @@ static void @B@_momentum_pass(sph_body *b)
 //@endif
         }
     }
+//@if MPI
+    /* the pairs with the halo: i's share only, in the stripes of i (the power too) */
+    b->par->wait(b, halo_in, nhalo_in);
+    const int *restrict xs = b->xb_start, *restrict xb = b->xb, *restrict xk = b->xb_k;
+#pragma omp parallel for schedule(static) if (xs)
+    for (int s = 0; s < (xs ? b->nstripes : 0); s++)
+        for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
+            if (xs[i] == xs[i + 1])
+                continue;
+            sph_real pv;
+            vec fi;
+            @B@_momentum_pairs(b, i, xs[i], xs[i + 1], xb, xk, 0, acc, &fi, &pv);
+            for (int r = 0; r < D; r++)
+                acc[i * D + r] += fi[r];
+//@if VISCOSITY
+            b->stripe_sum[s] += pv;
+//@endif
+        }
+//@endif
 //@if VISCOSITY
     double visc_power = 0; /* the viscous work rate, in stripe order (any number of threads) */
     for (int s = 0; s < b->nstripes; s++)

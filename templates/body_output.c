@@ -4,7 +4,7 @@
 static void @B@_stress_output(sph_body *b)
 {
 #pragma omp parallel for schedule(static)
-    for (int i = 0; i < b->n; i++) {
+    for (int i = 0; i < b->nown; i++) {
         const double *F = b->F + (size_t)i * 9;
         double S[9], e, FS[9], sig[9];
 //@if FRACTURE

@@ -22,7 +22,7 @@ static void @B@_predict(sph_body *b, double dt)
     const double *restrict sdd = b->sdd, *restrict H = b->H;
 //@endif
 #pragma omp parallel for schedule(static)
-    for (int i = 0; i < b->n; i++) {
+    for (int i = 0; i < b->nown; i++) {
         for (int k = 0; k < D; k++) {
             vn[i * D + k] = v[i * D + k];
             u[i * D + k] += 0.5 * dt * v[i * D + k];
@@ -71,7 +71,7 @@ static void @B@_update(sph_body *b, double dt)
 //@else
 #pragma omp parallel for schedule(static) reduction(max : vmax2, amax2)
 //@endif
-    for (int i = 0; i < b->n; i++) {
+    for (int i = 0; i < b->nown; i++) {
         double v2 = 0, a2 = 0;
 //@if CRUSH
         const double l2 = sph_bound_stretch2(b->lam2[i]);

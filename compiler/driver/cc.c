@@ -1,5 +1,6 @@
 /* cc.c — the last stage: the generated source written to a file and built by the target's
- * compiler (cc for the CPU, nvcc for CUDA) against the runtime. */
+ * compiler (cc for the CPU, mpicc for the CPU with --mpi, nvcc for CUDA) against the
+ * runtime. */
 #define _XOPEN_SOURCE 700
 #include <errno.h>
 #include <stdio.h>
@@ -29,17 +30,38 @@ static int run_command(char *const argv[])
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-static int write_source(const Plan *plan, Target target, const Paths *paths, const char *file)
+static int write_source(const Plan *plan, const Options *o, const Paths *paths,
+                        const char *file)
 {
     FILE *f = fopen(file, "w");
     if (!f) {
         diag_fatal_noloc("cannot write '%s': %s", file, strerror(errno));
         return -1;
     }
-    int r = emit_program(plan, target, paths->templates, f);
+    int r = emit_program(plan, o->target, o->mpi, paths->templates, f);
     if (fclose(f) != 0)
         r = -1;
     return r;
+}
+
+/* Program `name` in the first folder of PATH that has it executable (in buf); NULL when
+ * none has.  A name with a slash is that file itself, as execvp takes it. */
+static const char *find_on_path(const char *name, char *buf, size_t size)
+{
+    if (strchr(name, '/')) {
+        snprintf(buf, size, "%s", name);
+        return access(buf, X_OK) == 0 ? buf : NULL;
+    }
+    const char *path = getenv("PATH");
+    while (path && *path) {
+        const char *end = strchr(path, ':');
+        size_t n = end ? (size_t)(end - path) : strlen(path);
+        snprintf(buf, size, "%.*s/%s", (int)n, path, name);
+        if (n && access(buf, X_OK) == 0)
+            return buf;
+        path = end ? end + 1 : NULL;
+    }
+    return NULL;
 }
 
 /* nvcc: $CUDA_HOME/bin/nvcc, else the first on PATH; NULL when there is none. */
@@ -51,16 +73,48 @@ static const char *find_nvcc(char *buf, size_t size)
         if (access(buf, X_OK) == 0)
             return buf;
     }
-    const char *path = getenv("PATH");
-    while (path && *path) {
-        const char *end = strchr(path, ':');
-        size_t n = end ? (size_t)(end - path) : strlen(path);
-        snprintf(buf, size, "%.*s/nvcc", (int)n, path);
-        if (n && access(buf, X_OK) == 0)
-            return buf;
-        path = end ? end + 1 : NULL;
-    }
+    return find_on_path("nvcc", buf, size);
+}
+
+/* The MPI compiler wrapper: $MPICC, else mpicc (in buf); NULL after reporting when it is not
+ * there, so that the user reads what to install rather than execvp's "cannot run". */
+static const char *find_mpicc(char *buf, size_t size)
+{
+    const char *mpicc = getenv("MPICC");
+    if (!mpicc || !*mpicc)
+        mpicc = "mpicc";
+    if (find_on_path(mpicc, buf, size))
+        return buf;
+    diag_fatal_noloc("--mpi needs %s (an MPI library: scripts/deps installs Open MPI), which "
+                     "is not on PATH", mpicc);
     return NULL;
+}
+
+/* The processes' runtime (runtime/mpi/, sph_mpi_main), in the folder of libsphrt.a. */
+#define MPI_RUNTIME "libsphrt_mpi.a"
+
+/* What a build for many processes needs beyond the CPU target's, checked before anything is
+ * written: -1 after reporting. */
+static int mpi_ready(const Model *m, const Options *o, const Paths *paths)
+{
+    /* libsphrt_mpi is built on the double runtime only (there is no libsphrt_mpi_single) */
+    if (m->single) {
+        diag_fatal_noloc("--mpi with `precision single` is not supported yet");
+        return -1;
+    }
+    if (o->emit_only) /* the source alone needs neither MPI nor its runtime */
+        return 0;
+    char buf[4200];
+    if (!find_mpicc(buf, sizeof buf))
+        return -1;
+    /* built only where cmake found an MPI library when sphc was built */
+    snprintf(buf, sizeof buf, "%s/" MPI_RUNTIME, paths->lib);
+    if (access(buf, R_OK)) {
+        diag_fatal_noloc("sphc was built without MPI (" MPI_RUNTIME " is missing in %s): install "
+                         "an MPI library (scripts/deps) and build sphc again", paths->lib);
+        return -1;
+    }
+    return 0;
 }
 
 /* The CUDA target: nvcc builds model.cu with runtime/sph_cuda.h and links the host runtime. */
@@ -87,17 +141,39 @@ static int compile_cuda(const Model *m, const Options *o, const char *src, const
     return run_command(argv);
 }
 
-/* The CPU target: cc (or $CC) builds model.c with OpenMP and links the runtime.
+/* The CPU target: cc (or $CC) builds model.c with OpenMP and links the runtime; with --mpi,
+ * mpicc (or $MPICC: the C compiler with MPI's headers and libraries) builds it and links the
+ * processes' runtime too, before libsphrt.a, whose functions it calls (mpi_ready checked both).
  * -ffp-contract=fast: let a*b+c become one fused multiply-add (ISO C mode turns that off by
  * default); -fno-math-errno: math functions need not set errno, so they inline. */
 static int compile_c(const Model *m, const Options *o, const char *src, const char *lib,
                      const char *inc, const char *exe)
 {
-    (void)m, (void)o;
+    (void)m;
+    char compiler[4096], mpilib[4200];
     const char *cc = getenv("CC");
-    char *argv[] = {(char *)(cc && *cc ? cc : "cc"), "-std=c11", "-O3", "-march=native",
-                    "-ffp-contract=fast", "-fno-math-errno", "-fopenmp", "-Wall", "-Wextra",
-                    (char *)inc, (char *)src, (char *)lib, "-lm", "-o", (char *)exe, NULL};
+    if (o->mpi)
+        find_mpicc(compiler, sizeof compiler);
+    else
+        snprintf(compiler, sizeof compiler, "%s", cc && *cc ? cc : "cc");
+    char *argv[24];
+    int n = 0;
+    argv[n++] = compiler;
+    static const char *const flags[] = {"-std=c11", "-O3", "-march=native", "-ffp-contract=fast",
+                                        "-fno-math-errno", "-fopenmp", "-Wall", "-Wextra", NULL};
+    for (const char *const *f = flags; *f; f++)
+        argv[n++] = (char *)*f;
+    argv[n++] = (char *)inc;
+    argv[n++] = (char *)src;
+    if (o->mpi) { /* lib is DIR/libsphrt.a (build_program) */
+        snprintf(mpilib, sizeof mpilib, "%.*s/" MPI_RUNTIME, (int)(strrchr(lib, '/') - lib), lib);
+        argv[n++] = mpilib;
+    }
+    argv[n++] = (char *)lib;
+    argv[n++] = "-lm";
+    argv[n++] = "-o";
+    argv[n++] = (char *)exe;
+    argv[n] = NULL;
     return run_command(argv);
 }
 
@@ -114,6 +190,8 @@ static const struct {
 int build_program(const Plan *plan, const Options *o, const Paths *paths)
 {
     const Model *m = plan->model;
+    if (o->mpi && mpi_ready(m, o, paths))
+        return -1;
     char dir[4096];
     if (o->emit_dir) {
         snprintf(dir, sizeof dir, "%s", o->emit_dir);
@@ -129,7 +207,7 @@ int build_program(const Plan *plan, const Options *o, const Paths *paths)
     snprintf(src, sizeof src, "%s/%s.%s", dir, m->name, target_suffix(o->target));
     snprintf(lib, sizeof lib, "%s/libsphrt%s.a", paths->lib, m->single ? "_single" : "");
     snprintf(inc, sizeof inc, "-I%s", paths->include);
-    if (write_source(plan, o->target, paths, src))
+    if (write_source(plan, o, paths, src))
         return -1;
     if (o->emit_only) {
         printf("sphc: wrote %s\n", src);
@@ -146,8 +224,8 @@ int build_program(const Plan *plan, const Options *o, const Paths *paths)
                          "inspect it", COMPILERS[o->target].name, rc);
         return -1;
     }
-    printf("sphc: built %s%s (%s)%s%s\n", strchr(exe, '/') ? "" : "./", exe,
-           target_name(o->target), o->emit_dir ? ", its source in " : "",
+    printf("sphc: built %s%s (%s%s)%s%s\n", strchr(exe, '/') ? "" : "./", exe,
+           target_name(o->target), o->mpi ? ", MPI" : "", o->emit_dir ? ", its source in " : "",
            o->emit_dir ? src : "");
     return 0;
 }

@@ -1,7 +1,8 @@
 /* options.c — sphc's command line:
  *
- *   sphc [-o NAME] [--target cpu|cuda] [--emit-c DIR] [--dump=ast|model|plan] [--check]
- *        [--strict] [--to-sph] [--xml-elastic2d=3d|sdsph] [--xml-fill=volume|gencase] FILE
+ *   sphc [-o NAME] [--target cpu|cuda] [--mpi] [--emit-c DIR] [--dump=ast|model|plan]
+ *        [--check] [--strict] [--to-sph] [--xml-elastic2d=3d|sdsph]
+ *        [--xml-fill=volume|gencase] FILE
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,7 +13,7 @@
 
 static void usage(FILE *f)
 {
-    fputs("usage: sphc [-o NAME] [--target cpu|cuda] [--cuda-arch A] [--emit-c DIR]\n"
+    fputs("usage: sphc [-o NAME] [--target cpu|cuda] [--cuda-arch A] [--mpi] [--emit-c DIR]\n"
           "            [--dump=ast|model|plan]\n"
           "            [--check] [--strict] [--to-sph] [--xml-elastic2d=3d|sdsph]\n"
           "            [--xml-fill=volume|gencase] FILE\n"
@@ -22,6 +23,8 @@ static void usage(FILE *f)
           "  --target T       cpu (OpenMP, default) or cuda (nvcc from PATH or $CUDA_HOME)\n"
           "  --cuda-arch A    nvcc -arch for the cuda target (default: native when a GPU is\n"
           "                   present, else sm_90)\n"
+          "  --mpi            build for many processes (MPI): mpirun -np N ./model runs the model\n"
+          "                   on N processes; without mpirun it runs as one (docs/mpi.md)\n"
           "  --emit-c DIR     keep the generated C source in DIR\n"
           "  --dump=STAGE     print the syntax tree, checked model or kernel plan and stop\n"
           "  --emit-only      with --emit-c: write the C source without compiling it\n"
@@ -109,6 +112,8 @@ int parse_options(int argc, char **argv, Options *o)
             o->cuda_arch = argv[++i];
         } else if (!strncmp(a, "--cuda-arch=", 12)) {
             o->cuda_arch = a + 12;
+        } else if (!strcmp(a, "--mpi")) {
+            o->mpi = 1;
         } else if (!strcmp(a, "--emit-c") && i + 1 < argc) {
             o->emit_dir = argv[++i];
         } else if (!strncmp(a, "--emit-c=", 9)) {
@@ -142,6 +147,13 @@ int parse_options(int argc, char **argv, Options *o)
     }
     if (target_named(target, &o->target)) {
         diag_fatal_noloc("unknown target '%s' (expected cpu or cuda)", target);
+        return -1;
+    }
+    /* The processes exchange their halos through the CPU runtime's arrays (runtime/mpi/);
+     * the device keeps its own, which nothing exchanges yet. */
+    if (o->mpi && o->target == TARGET_CUDA) {
+        diag_fatal_noloc("--mpi with --target cuda is not supported yet (the CPU target runs on "
+                         "many processes)");
         return -1;
     }
     if (o->emit_only && !o->emit_dir) {

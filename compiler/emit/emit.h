@@ -17,8 +17,8 @@ const char *target_suffix(Target t);
 /* Its name, as --target takes it. */
 const char *target_name(Target t);
 
-/* Write the whole generated program for target t; templates_dir holds the templates.  Returns
- * 0, or -1 after reporting. */
-int emit_program(const Plan *plan, Target t, const char *templates_dir, FILE *out);
+/* Write the whole generated program for target t, for many processes (MPI) when mpi is set;
+ * templates_dir holds the templates.  Returns 0, or -1 after reporting. */
+int emit_program(const Plan *plan, Target t, int mpi, const char *templates_dir, FILE *out);
 
 #endif

@@ -158,7 +158,7 @@ static void bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
         any_whole |= !bc->has_near;
     }
     if (vel || any_whole) {
-        E->target->loop_open(out, "    ", "i", "b->n");
+        E->target->loop_open(out, "    ", "i", "b->nown");
         if (E->target->windows_in_loops)
             windows_open(E, b, kind, "        ");
         /* Without a whole-body BC, the velocity pass's loop only clears the fix bits. */

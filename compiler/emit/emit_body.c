@@ -14,6 +14,9 @@ int emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyPl
 #define PLAN_SWITCH(member, name, sw, value) tpl_switch(&env, #sw, p->member);
     PLAN_FEATURES(PLAN_SWITCH)
 #undef PLAN_SWITCH
+    /* Declared for every template, on or off, since an undeclared switch is an error: the
+     * parts a program on many processes adds (//@if MPI). */
+    tpl_switch(&env, "MPI", E->mpi);
     tpl_set(&env, "NSTATE", "%d", p->nstate);
     int k = 0;
 #define PLAN_KEY(member, key, value, when)                                                    \

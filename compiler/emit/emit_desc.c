@@ -259,6 +259,13 @@ static void expects(Emitter *E)
     fputs("};\n\n", out);
 }
 
+/* The runtime's entry point that main() calls: sph_mpi_main (libsphrt_mpi) runs the model on
+ * the processes mpirun starts (docs/mpi.md), sph_main in one process. */
+static const char *main_entry(const Emitter *E)
+{
+    return E->mpi ? "sph_mpi_main" : "sph_main";
+}
+
 void emit_model_desc(Emitter *E)
 {
     const Model *m = E->m;
@@ -289,7 +296,7 @@ void emit_model_desc(Emitter *E)
             "    .compat_outputs = %d,\n%s%s"
             "    .velocity_bcs = model_velocity_bcs,\n    .step = model_step,\n"
             "    .stress_output = model_stress_output,\n%s};\n\n"
-            "int main(int argc, char **argv)\n{\n    return sph_main(&MODEL, argc, argv);\n}\n",
+            "int main(int argc, char **argv)\n{\n    return %s(&MODEL, argc, argv);\n}\n",
             m->name, source_basename(m->source), m->dim, m->dp,
             m->kernel == KERNEL_WENDLAND ? "SPH_WENDLAND" : "SPH_CUBIC", m->coefh,
             m->integrator == INTEGRATOR_VERLET ? "SPH_VERLET" : "SPH_SYMPLECTIC", m->cfl, m->dtmin,
@@ -297,5 +304,5 @@ void emit_model_desc(Emitter *E)
             m->nexpects ? "EXPECTS" : "NULL", m->nexpects, m->compat_outputs,
             lambda_on,
             model_has_contact(m) ? "    .contact = &CONTACT,\n" : "",
-            E->target->desc_members);
+            E->target->desc_members, main_entry(E));
 }

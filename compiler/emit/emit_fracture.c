@@ -38,7 +38,7 @@ void emit_fracture_restrict(Emitter *E, const BodyModel *b)
                  "static void %s_restrict(sph_body *b, sph_time t, sph_time dt)\n{\n"
                  "    enum { D = %d };\n",
             b->name, b->name, E->m->dim);
-    E->target->loop_open(out, "    ", "i", "b->n");
+    E->target->loop_open(out, "    ", "i", "b->nown");
     fprintf(out, "        sph_pt p;\n        sph_point(b, i, D, t, dt, &p);\n"
                  "        double smin;\n"
                  "        if (%s(&p, &smin) && b->s[i] < smin)\n"

@@ -59,6 +59,7 @@ struct Emitter {
     const char *templates;
     FILE *out;
     const EmitTarget *target;
+    int mpi; /* sphc --mpi: the program runs on many processes (sph_mpi_main) */
 };
 
 /* The targets' tables (emit_target.c) and the targets' scenes. */

@@ -40,9 +40,9 @@ static int body_piece(Emitter *E, const BodyPiece *piece, const BodyModel *b, co
     return 0;
 }
 
-int emit_program(const Plan *plan, Target t, const char *templates_dir, FILE *out)
+int emit_program(const Plan *plan, Target t, int mpi, const char *templates_dir, FILE *out)
 {
-    Emitter E = {plan->model, plan, plan->bodies, templates_dir, out, emit_target(t)};
+    Emitter E = {plan->model, plan, plan->bodies, templates_dir, out, emit_target(t), mpi};
     if (target_complete(E.target))
         return -1;
     E.target->header(&E);

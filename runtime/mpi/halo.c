@@ -7,34 +7,18 @@
 
 enum { TAG_COUNT = 1, TAG_IDS = 2, TAG_VALUES = 3 };
 
-/* The index of id in the ascending list ids[0..n), or -1. */
-static int find_id(const int64_t *ids, int n, int64_t id)
-{
-    int lo = 0, hi = n - 1;
-    while (lo <= hi) {
-        const int mid = lo + (hi - lo) / 2;
-        if (ids[mid] == id)
-            return mid;
-        if (ids[mid] < id)
-            lo = mid + 1;
-        else
-            hi = mid - 1;
-    }
-    return -1;
-}
-
 /* The peers (the parts of the halo, ascending) and, per peer, the halo particles it
  * provides (in id order, as the halo is). */
-static int plan_receives(sph_halo *h, const sph_rcb_local_set *s, int nparts)
+static int plan_receives(sph_halo *h, const int *halo_part, int nparts)
 {
     int *count = calloc((size_t)nparts, sizeof *count);
     if (!count)
         return -1;
-    for (int i = 0; i < s->nhalo; i++)
-        count[s->halo_part[i]]++;
+    for (int i = 0; i < h->nhalo; i++)
+        count[halo_part[i]]++;
     h->peer = malloc(((size_t)nparts + 1) * sizeof *h->peer);
     h->recv_start = malloc(((size_t)nparts + 1) * sizeof *h->recv_start);
-    h->recv = malloc(((size_t)s->nhalo + 1) * sizeof *h->recv);
+    h->recv = malloc(((size_t)h->nhalo + 1) * sizeof *h->recv);
     int *slot = malloc(((size_t)nparts + 1) * sizeof *slot);
     if (!h->peer || !h->recv_start || !h->recv || !slot) {
         free(count), free(slot);
@@ -50,8 +34,8 @@ static int plan_receives(sph_halo *h, const sph_rcb_local_set *s, int nparts)
             h->npeers++;
         }
     int *at = calloc((size_t)h->npeers + 1, sizeof *at);
-    for (int i = 0; at && i < s->nhalo; i++) {
-        const int q = slot[s->halo_part[i]];
+    for (int i = 0; at && i < h->nhalo; i++) {
+        const int q = slot[halo_part[i]];
         h->recv[h->recv_start[q] + at[q]++] = i;
     }
     free(count), free(slot);
@@ -62,7 +46,7 @@ static int plan_receives(sph_halo *h, const sph_rcb_local_set *s, int nparts)
 }
 
 /* What each peer needs of this part: the ids it asks for (counts first), as own indices. */
-static int plan_sends(sph_halo *h, const sph_rcb_local_set *s)
+static int plan_sends(sph_halo *h, const int64_t *own_id, const int64_t *halo_id)
 {
     const int np = h->npeers;
     int *want = malloc(((size_t)np + 1) * sizeof *want);
@@ -89,7 +73,7 @@ static int plan_sends(sph_halo *h, const sph_rcb_local_set *s)
     if (!ids_in || !ids_out || !h->send)
         return free(want), free(asks), free(req), free(ids_in), free(ids_out), -1;
     for (int i = 0; i < h->recv_start[np]; i++)
-        ids_out[i] = s->halo_id[h->recv[i]];
+        ids_out[i] = halo_id[h->recv[i]];
     for (int q = 0; q < np; q++) {
         MPI_Irecv(ids_in + h->send_start[q], asks[q], MPI_INT64_T, h->peer[q], TAG_IDS, h->comm,
                   &req[q]);
@@ -97,25 +81,45 @@ static int plan_sends(sph_halo *h, const sph_rcb_local_set *s)
                   h->comm, &req[np + q]);
     }
     MPI_Waitall(2 * np, req, MPI_STATUSES_IGNORE);
-    int bad = 0;
-    for (int i = 0; i < nsend; i++)
-        if ((h->send[i] = find_id(s->own_id, s->nown, ids_in[i])) < 0)
-            bad = 1;
-    free(want), free(asks), free(req), free(ids_in), free(ids_out);
-    return bad ? -2 : 0;
+    sph_id_index *sorted = sph_id_sort(own_id, h->nown);
+    int bad = !sorted;
+    for (int i = 0; !bad && i < nsend; i++)
+        if ((h->send[i] = sph_id_find(sorted, h->nown, ids_in[i])) < 0)
+            bad = 2;
+    free(want), free(asks), free(req), free(ids_in), free(ids_out), free(sorted);
+    return -bad;
 }
 
-int sph_halo_plan(sph_halo *h, const sph_rcb_local_set *s, int kmax, MPI_Comm comm)
+/* Buffers for `bytes` per particle: 0, or -1 when memory runs out. */
+static int reserve(sph_halo *h, size_t bytes)
+{
+    if (bytes <= h->cap)
+        return 0;
+    const int np = h->npeers;
+    unsigned char *sb = realloc(h->sbuf, (size_t)h->send_start[np] * bytes + 1);
+    if (sb)
+        h->sbuf = sb;
+    unsigned char *rb = realloc(h->rbuf, (size_t)h->recv_start[np] * bytes + 1);
+    if (rb)
+        h->rbuf = rb;
+    if (!sb || !rb)
+        return -1;
+    h->cap = bytes;
+    return 0;
+}
+
+int sph_halo_plan_ids(sph_halo *h, int nown, const int64_t *own_id, int nhalo,
+                      const int64_t *halo_id, const int *halo_part, MPI_Comm comm)
 {
     memset(h, 0, sizeof *h);
     h->comm = comm;
-    h->kmax = kmax;
+    h->nown = nown, h->nhalo = nhalo;
     int nparts, rank;
     MPI_Comm_size(comm, &nparts);
     MPI_Comm_rank(comm, &rank);
-    if (plan_receives(h, s, nparts) < 0)
+    if (plan_receives(h, halo_part, nparts) < 0)
         return fprintf(stderr, "error: part %d: out of memory for its halo plan\n", rank), -1;
-    const int r = plan_sends(h, s);
+    const int r = plan_sends(h, own_id, halo_id);
     if (r < 0) {
         fprintf(stderr, "error: part %d: %s\n", rank,
                 r == -1 ? "out of memory for its halo plan"
@@ -123,39 +127,102 @@ int sph_halo_plan(sph_halo *h, const sph_rcb_local_set *s, int kmax, MPI_Comm co
                           "disagree on the decomposition)");
         return -1;
     }
-    const int np = h->npeers;
-    h->sbuf = malloc(((size_t)h->send_start[np] * kmax + 1) * sizeof *h->sbuf);
-    h->rbuf = malloc(((size_t)h->recv_start[np] * kmax + 1) * sizeof *h->rbuf);
-    h->req = malloc((2 * (size_t)np + 1) * sizeof *h->req);
-    if (!h->sbuf || !h->rbuf || !h->req)
+    h->req = malloc((2 * (size_t)h->npeers + 1) * sizeof *h->req);
+    if (!h->req)
         return fprintf(stderr, "error: part %d: out of memory for its halo\n", rank), -1;
     return 0;
 }
 
-void sph_halo_begin(sph_halo *h, const double *own, int k)
+int sph_halo_plan(sph_halo *h, const sph_rcb_local_set *s, int kmax, MPI_Comm comm)
+{
+    if (sph_halo_plan_ids(h, s->nown, s->own_id, s->nhalo, s->halo_id, s->halo_part, comm))
+        return -1;
+    if (reserve(h, (size_t)kmax * sizeof(double)) == 0)
+        return 0;
+    fprintf(stderr, "error: out of memory for a halo\n");
+    return -1;
+}
+
+/* Receives posted, then each peer's values packed and sent; `bytes` per particle. */
+static void post_messages(sph_halo *h, size_t bytes)
 {
     const int np = h->npeers;
     for (int q = 0; q < np; q++) {
         const int a = h->recv_start[q], n = h->recv_start[q + 1] - a;
-        MPI_Irecv(h->rbuf + (size_t)a * k, n * k, MPI_DOUBLE, h->peer[q], TAG_VALUES, h->comm,
-                  &h->req[q]);
+        MPI_Irecv(h->rbuf + (size_t)a * bytes, (int)((size_t)n * bytes), MPI_BYTE, h->peer[q],
+                  TAG_VALUES, h->comm, &h->req[q]);
     }
+}
+
+static void send_messages(sph_halo *h, size_t bytes)
+{
+    const int np = h->npeers;
     for (int q = 0; q < np; q++) {
         const int a = h->send_start[q], n = h->send_start[q + 1] - a;
-        double *buf = h->sbuf + (size_t)a * k;
-        for (int i = 0; i < n; i++)
-            memcpy(buf + (size_t)i * k, own + (size_t)h->send[a + i] * k, (size_t)k * sizeof *own);
-        MPI_Isend(buf, n * k, MPI_DOUBLE, h->peer[q], TAG_VALUES, h->comm, &h->req[np + q]);
+        MPI_Isend(h->sbuf + (size_t)a * bytes, (int)((size_t)n * bytes), MPI_BYTE, h->peer[q],
+                  TAG_VALUES, h->comm, &h->req[np + q]);
     }
-    h->bytes = (long)h->send_start[np] * k * (long)sizeof(double);
+    h->bytes = (long)((size_t)h->send_start[np] * bytes);
+}
+
+static size_t field_bytes(const sph_field *f, int nf)
+{
+    size_t bytes = 0;
+    for (int k = 0; k < nf; k++)
+        bytes += f[k].size;
+    return bytes;
+}
+
+int sph_halo_post(sph_halo *h, const sph_field *f, int nf)
+{
+    const size_t bytes = field_bytes(f, nf);
+    if (reserve(h, bytes))
+        return -1;
+    post_messages(h, bytes);
+    const int nsend = h->send_start[h->npeers];
+    for (int i = 0; i < nsend; i++) {
+        unsigned char *to = h->sbuf + (size_t)i * bytes;
+        for (int k = 0; k < nf; k++) {
+            memcpy(to, (const unsigned char *)f[k].base + (size_t)h->send[i] * f[k].size,
+                   f[k].size);
+            to += f[k].size;
+        }
+    }
+    send_messages(h, bytes);
+    return 0;
+}
+
+void sph_halo_wait(sph_halo *h, const sph_field *f, int nf)
+{
+    const size_t bytes = field_bytes(f, nf);
+    MPI_Waitall(2 * h->npeers, h->req, MPI_STATUSES_IGNORE);
+    const int nrecv = h->recv_start[h->npeers];
+    for (int i = 0; i < nrecv; i++) {
+        const unsigned char *from = h->rbuf + (size_t)i * bytes;
+        const size_t at = (size_t)h->nown + (size_t)h->recv[i];
+        for (int k = 0; k < nf; k++) {
+            memcpy((unsigned char *)f[k].base + at * f[k].size, from, f[k].size);
+            from += f[k].size;
+        }
+    }
+}
+
+void sph_halo_begin(sph_halo *h, const double *own, int k)
+{
+    const size_t bytes = (size_t)k * sizeof *own;
+    post_messages(h, bytes);
+    const int nsend = h->send_start[h->npeers];
+    for (int i = 0; i < nsend; i++)
+        memcpy(h->sbuf + (size_t)i * bytes, own + (size_t)h->send[i] * k, bytes);
+    send_messages(h, bytes);
 }
 
 void sph_halo_end(sph_halo *h, double *halo, int k)
 {
-    const int np = h->npeers;
-    MPI_Waitall(2 * np, h->req, MPI_STATUSES_IGNORE);
-    for (int i = 0; i < h->recv_start[np]; i++)
-        memcpy(halo + (size_t)h->recv[i] * k, h->rbuf + (size_t)i * k, (size_t)k * sizeof *halo);
+    const size_t bytes = (size_t)k * sizeof *halo;
+    MPI_Waitall(2 * h->npeers, h->req, MPI_STATUSES_IGNORE);
+    for (int i = 0; i < h->recv_start[h->npeers]; i++)
+        memcpy(halo + (size_t)h->recv[i] * k, h->rbuf + (size_t)i * bytes, bytes);
 }
 
 void sph_halo_free(sph_halo *h)

@@ -2,14 +2,18 @@
  * (docs/mpi.md).
  *
  * A part (runtime/partition.h, sph_rcb_local) holds its own particles and its halo, the
- * particles of other parts within the kernel support of its own, each list in id order.
- * Neighbours in the reference configuration never change, so the plan of what to send
- * where is made once: every process tells each part it takes halo particles from which ids
- * it needs (the neighbour relation is symmetric: the parts a process takes from are those
- * that take from it), and each maps the ids it is asked for to its own particles.  At every
- * step the values of the own particles (k doubles each) go to the parts that need them and
- * the halo's come in, with non-blocking messages: sph_halo_begin posts them, work on the
- * particles that need no halo can go on, sph_halo_end waits and puts the halo's in place. */
+ * particles of other parts within the kernel support of its own.  Neighbours in the
+ * reference configuration never change, so the plan of what to send where is made once:
+ * every process tells each part it takes halo particles from which ids it needs (the
+ * neighbour relation is symmetric: the parts a process takes from are those that take from
+ * it), and each maps the ids it is asked for to its own particles.  At every step the values
+ * of the own particles go to the parts that need them and the halo's come in, with
+ * non-blocking messages: a post starts the exchange, work on the particles that need no halo
+ * can go on, a wait ends it and puts the halo's values in place.
+ *
+ * Two forms of the values: k doubles per particle in separate arrays of own and halo
+ * particles (sph_halo_begin/end), or any fields of a body's arrays, which hold the own
+ * particles first and the halo after them (sph_halo_post/wait, sph_field of sphrt.h). */
 #ifndef SPH_MPI_HALO_H
 #define SPH_MPI_HALO_H
 
@@ -20,23 +24,36 @@
 
 typedef struct {
     MPI_Comm comm;
+    int nown, nhalo;
     int npeers;              /* the parts this one exchanges with, */
     int *peer;               /* their ranks (= part numbers), ascending */
     int *send_start, *send;  /* own particles each peer needs: send[send_start[q] ..] */
-    int *recv_start, *recv;  /* halo particles each peer provides: recv[recv_start[q] ..] */
-    double *sbuf, *rbuf;     /* packed values, k per particle (sized for kmax) */
-    int kmax;
+    int *recv_start, *recv;  /* halo particles each peer provides: recv[recv_start[q] ..],
+                                as indices into the halo (0 .. nhalo - 1) */
+    unsigned char *sbuf, *rbuf; /* packed values */
+    size_t cap;              /* bytes per particle the buffers hold */
     MPI_Request *req;        /* 2 npeers */
     long bytes;              /* sent by the last exchange */
 } sph_halo;
 
-/* The plan of part `rank` of comm (whose size is the number of parts) for the local set s,
- * for up to kmax values per particle.  Collective over the peers; 0, or -1 after an error
- * message (an id asked for that this part does not own: the parts disagree). */
+/* The plan of process `rank` of comm (whose size is the number of parts) for nown own
+ * particles of ids own_id (any order) and nhalo halo particles of ids halo_id, held by the
+ * parts halo_part.  Collective over the peers; 0, or -1 after an error message (an id asked
+ * for that this part does not own: the parts disagree; or memory ran out). */
+int sph_halo_plan_ids(sph_halo *h, int nown, const int64_t *own_id, int nhalo,
+                      const int64_t *halo_id, const int *halo_part, MPI_Comm comm);
+/* The same for a part's set s (sph_rcb_local), for up to kmax doubles per particle. */
 int sph_halo_plan(sph_halo *h, const sph_rcb_local_set *s, int kmax, MPI_Comm comm);
-/* Posts the exchange of k values per particle (k <= kmax): own[] holds s->nown * k values. */
+
+/* Posts the exchange of nf fields; own particle i at f->base + i size, halo particle k at
+ * f->base + (nown + k) size.  0, or -1 when memory for the buffers runs out. */
+int sph_halo_post(sph_halo *h, const sph_field *f, int nf);
+/* Waits for it and writes the halo's values of the same fields. */
+void sph_halo_wait(sph_halo *h, const sph_field *f, int nf);
+
+/* Posts the exchange of k doubles per particle (k <= kmax): own[] holds nown * k values. */
 void sph_halo_begin(sph_halo *h, const double *own, int k);
-/* Waits for it and writes the halo's values into halo[] (s->nhalo * k values). */
+/* Waits for it and writes the halo's values into halo[] (nhalo * k values). */
 void sph_halo_end(sph_halo *h, double *halo, int k);
 void sph_halo_free(sph_halo *h);
 

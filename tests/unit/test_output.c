@@ -193,7 +193,7 @@ static void test_vtu_2d(void)
                     2, 0, 0, 0, 1, 0, 0, 0, 1};
     double sigma[18] = {100, 0, 0, 0, 0, 0,   0, 0, 0, 10, 0, 0,   1, 2, 3, 4, 5, 6};
     double psi[] = {0.5, 1.5, 2.5};
-    sph_body b = {.n = 3, .dim = 2, .y_plane = 0.25, .X = X, .u = u, .v = vel,
+    sph_body b = {.n = 3, .nown = 3, .dim = 2, .y_plane = 0.25, .X = X, .u = u, .v = vel,
                   .F = F, .sigma = sigma, .psi = psi};
     const char *path = path_in_tmp("body2d_0000.vtu");
     CHECK(sph_write_vtu(path, &b, 0.125) == 0, "sph_write_vtu returns 0");
@@ -230,7 +230,7 @@ static void test_vtu_3d(void)
     double X[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
     double u[] = {0.5, 0.25, -1, 0, 0, 0, 0, 0, 0, 0, 0, 1};
     double vel[12] = {0};
-    sph_body b = {.n = 4, .dim = 3, .X = X, .u = u, .v = vel};
+    sph_body b = {.n = 4, .nown = 4, .dim = 3, .X = X, .u = u, .v = vel};
     const char *path = path_in_tmp("body3d_0001.vtu");
     CHECK(sph_write_vtu(path, &b, 2.5) == 0, "sph_write_vtu returns 0");
     vtu_file v;
@@ -255,7 +255,7 @@ static void test_vtu_3d(void)
 static void test_vtu_empty_and_error(void)
 {
     printf("vtu: empty body; unwritable path fails (error message expected)\n");
-    sph_body b = {.n = 0, .dim = 3};
+    sph_body b = {.n = 0, .nown = 0, .dim = 3};
     const char *path = path_in_tmp("empty.vtu");
     CHECK(sph_write_vtu(path, &b, 0) == 0, "empty body written");
     vtu_file v;

@@ -1,0 +1,203 @@
+/* par_mpi.c — a generated program on many processes (sphc --mpi, docs/mpi.md): MPI started
+ * and ended around the run, and the runtime's agreements (sph_par) made with MPI: sums in
+ * process order, minima and maxima, a failure on any process, the halo exchanges of the
+ * bodies (halo.h). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "halo.h"
+
+static MPI_Comm comm = MPI_COMM_NULL;
+static double sent_bytes, waited;
+
+static void out_of_memory(void)
+{
+    fprintf(stderr, "error: out of memory on process of a run on many processes\n");
+    MPI_Abort(comm, SPH_EXIT_SETUP);
+}
+
+/* Sums in process order: every process adds the same values in the same order, so the bits
+ * do not depend on MPI's reduction tree. */
+static void par_sum(double *x, int n)
+{
+    int size;
+    MPI_Comm_size(comm, &size);
+    double *all = malloc(((size_t)n * (size_t)size + 1) * sizeof *all);
+    if (!all)
+        out_of_memory();
+    MPI_Allgather(x, n, MPI_DOUBLE, all, n, MPI_DOUBLE, comm);
+    for (int k = 0; k < n; k++) {
+        double s = 0;
+        for (int r = 0; r < size; r++)
+            s += all[(size_t)r * n + k];
+        x[k] = s;
+    }
+    free(all);
+}
+
+static void par_min(double *x, int n)
+{
+    MPI_Allreduce(MPI_IN_PLACE, x, n, MPI_DOUBLE, MPI_MIN, comm);
+}
+
+static void par_max(double *x, int n)
+{
+    MPI_Allreduce(MPI_IN_PLACE, x, n, MPI_DOUBLE, MPI_MAX, comm);
+}
+
+static void par_bcast(void *buf, int bytes, int root)
+{
+    MPI_Bcast(buf, bytes, MPI_BYTE, root, comm);
+}
+
+static void par_allgather(const void *mine, void *all, int bytes)
+{
+    MPI_Allgather(mine, bytes, MPI_BYTE, all, bytes, MPI_BYTE, comm);
+}
+
+/* Blocks of any length to process 0, one process after the other (so that process 0 holds
+ * one at a time), in pieces of at most 1 GiB (MPI counts are ints). */
+enum { TAG_GATHER = 11, CHUNK = 1 << 30 };
+
+static void send_block(const void *data, size_t bytes)
+{
+    uint64_t n = bytes;
+    MPI_Send(&n, 1, MPI_UINT64_T, 0, TAG_GATHER, comm);
+    for (size_t at = 0; at < bytes; at += CHUNK) {
+        const size_t k = bytes - at < CHUNK ? bytes - at : CHUNK;
+        MPI_Send((const char *)data + at, (int)k, MPI_BYTE, 0, TAG_GATHER, comm);
+    }
+}
+
+static void par_gather0(const void *data, size_t bytes,
+                        void (*take)(void *ctx, int from, const void *data, size_t bytes),
+                        void *ctx)
+{
+    int rank, size;
+    MPI_Comm_rank(comm, &rank);
+    MPI_Comm_size(comm, &size);
+    if (rank != 0) {
+        /* (a handshake first: process 0 takes the blocks in order, one in memory at once) */
+        MPI_Recv(NULL, 0, MPI_BYTE, 0, TAG_GATHER, comm, MPI_STATUS_IGNORE);
+        send_block(data, bytes);
+        return;
+    }
+    take(ctx, 0, data, bytes);
+    for (int q = 1; q < size; q++) {
+        uint64_t n;
+        MPI_Send(NULL, 0, MPI_BYTE, q, TAG_GATHER, comm);
+        MPI_Recv(&n, 1, MPI_UINT64_T, q, TAG_GATHER, comm, MPI_STATUS_IGNORE);
+        char *buf = malloc(n + 1);
+        if (!buf)
+            out_of_memory();
+        for (size_t at = 0; at < n; at += CHUNK) {
+            const size_t k = n - at < CHUNK ? n - at : CHUNK;
+            MPI_Recv(buf + at, (int)k, MPI_BYTE, q, TAG_GATHER, comm, MPI_STATUS_IGNORE);
+        }
+        take(ctx, q, buf, n);
+        free(buf);
+    }
+}
+
+/* A failure anywhere: process 0 has reported its own; a failure of other processes alone is
+ * reported by process 0 with the lowest one's first message. */
+static int par_agree(int bad)
+{
+    int rank, size;
+    MPI_Comm_rank(comm, &rank);
+    MPI_Comm_size(comm, &size);
+    int *flags = malloc(((size_t)size + 1) * sizeof *flags);
+    if (!flags)
+        out_of_memory();
+    bad = bad != 0;
+    MPI_Allgather(&bad, 1, MPI_INT, flags, 1, MPI_INT, comm);
+    int first = -1;
+    for (int r = 0; r < size && first < 0; r++)
+        if (flags[r])
+            first = r;
+    free(flags);
+    if (first <= 0)
+        return first == 0;
+    char msg[1024] = "";
+    if (rank == first)
+        snprintf(msg, sizeof msg, "%s", sph_message_kept());
+    MPI_Bcast(msg, sizeof msg, MPI_CHAR, first, comm);
+    if (rank == 0)
+        sph_error("process %d: %s", first, msg[0] ? msg : "failed (no message)");
+    return 1;
+}
+
+static int body_ready(sph_body *b)
+{
+    if (b->nown == b->n && !b->gid)
+        return 0; /* (one process: no halo) */
+    sph_halo *h = calloc(1, sizeof *h);
+    if (!h || sph_halo_plan_ids(h, b->nown, b->gid, b->n - b->nown, b->gid + b->nown,
+                                b->halo_part, comm)) {
+        free(h);
+        sph_error("body '%s': no plan for its halo exchange", b->desc->name);
+        return -1;
+    }
+    b->halo = h;
+    return 0;
+}
+
+static void body_free(sph_body *b)
+{
+    if (!b->halo)
+        return;
+    sph_halo_free(b->halo);
+    free(b->halo);
+    b->halo = NULL;
+}
+
+static void post(sph_body *b, const sph_field *f, int nf)
+{
+    sph_halo *h = b->halo;
+    if (!h)
+        return;
+    if (sph_halo_post(h, f, nf))
+        out_of_memory();
+    sent_bytes += (double)h->bytes;
+}
+
+static void wait_halo(sph_body *b, const sph_field *f, int nf)
+{
+    if (!b->halo)
+        return;
+    const double t0 = MPI_Wtime();
+    sph_halo_wait(b->halo, f, nf);
+    waited += MPI_Wtime() - t0;
+}
+
+static double bytes_sent(void) { return sent_bytes; }
+static double wait_seconds(void) { return waited; }
+
+int sph_mpi_main(const sph_model *m, int argc, char **argv)
+{
+    int provided;
+    /* the threads of a process (OpenMP) never call MPI: funneled through the main thread */
+    MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+    MPI_Comm_dup(MPI_COMM_WORLD, &comm);
+    sph_par par = {
+        .sum = par_sum, .min = par_min, .max = par_max, .agree = par_agree, .bcast = par_bcast,
+        .allgather = par_allgather, .gather0 = par_gather0,
+        .body_ready = body_ready, .body_free = body_free, .post = post, .wait = wait_halo,
+        .bytes_sent = bytes_sent, .wait_seconds = wait_seconds,
+    };
+    MPI_Comm_rank(comm, &par.rank);
+    MPI_Comm_size(comm, &par.size);
+    if (par.rank != 0) {
+        /* messages and progress come from process 0 (sph_par agree reports the others') */
+        sph_message_keep(1);
+        if (!freopen("/dev/null", "w", stdout))
+            fprintf(stderr, "warning: process %d: its output is not silenced\n", par.rank);
+    }
+    const int rc = sph_main_par(m, argc, argv, &par);
+    /* the exit status of process 0 is the run's (every process reaches the same end) */
+    MPI_Comm_free(&comm);
+    MPI_Finalize();
+    return rc;
+}

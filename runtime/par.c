@@ -1,0 +1,32 @@
+/* par.c — the processes of a run on one process (sph_par_one): every agreement is this
+ * process's own, and there is no halo.  The many-process version is runtime/mpi/par_mpi.c. */
+#include <string.h>
+
+#include "sphrt.h"
+
+static void one_values(double *x, int n) { (void)x, (void)n; }
+static int one_agree(int bad) { return bad; }
+static void one_bcast(void *buf, int bytes, int root) { (void)buf, (void)bytes, (void)root; }
+static int one_body_ready(sph_body *b) { return (void)b, 0; }
+static void one_body_free(sph_body *b) { (void)b; }
+static void one_fields(sph_body *b, const sph_field *f, int nf) { (void)b, (void)f, (void)nf; }
+static double one_zero(void) { return 0.0; }
+static void one_allgather(const void *mine, void *all, int bytes)
+{
+    memcpy(all, mine, (size_t)bytes);
+}
+static void one_gather0(const void *data, size_t bytes,
+                        void (*take)(void *ctx, int from, const void *data, size_t bytes),
+                        void *ctx)
+{
+    take(ctx, 0, data, bytes);
+}
+
+const sph_par sph_par_one = {
+    .rank = 0, .size = 1,
+    .sum = one_values, .min = one_values, .max = one_values,
+    .agree = one_agree, .bcast = one_bcast, .allgather = one_allgather, .gather0 = one_gather0,
+    .body_ready = one_body_ready, .body_free = one_body_free,
+    .post = one_fields, .wait = one_fields,
+    .bytes_sent = one_zero, .wait_seconds = one_zero,
+};
