@@ -398,9 +398,12 @@ void sph_sim_checkpoint(sph_ckpt_writer *w, const sph_sim *s)
     double sums[4];
     const double *x0;
     size_t nx0;
-    if (w && sph_contact_checkpoint(s, sums, &x0, &nx0)) {
-        sph_ckpt_put(w, "contact.sums", sums, sizeof sums);
-        sph_ckpt_put(w, "contact.x0", x0, nx0 * sizeof *x0);
+    if (sph_contact_checkpoint(s, sums, &x0, &nx0)) {
+        s->par->sum(sums, 2); /* (the energies: each process's share, as totals) */
+        if (w) {
+            sph_ckpt_put(w, "contact.sums", sums, sizeof sums);
+            sph_ckpt_put(w, "contact.x0", x0, nx0 * sizeof *x0);
+        }
     }
 }
 
@@ -534,5 +537,7 @@ int sph_sim_restore(const sph_ckpt *c, sph_sim *s)
     const double *x0 = sph_ckpt_find(c, "contact.x0", &bytes);
     if (sph_ckpt_take(c, "contact.sums", sums, sizeof sums))
         return -1;
+    if (s->par->rank != 0) /* (the energies' totals: process 0's share, so they add up) */
+        sums[0] = sums[1] = 0;
     return sph_contact_restore(s, sums, x0, bytes / sizeof(double));
 }

@@ -37,11 +37,13 @@
 
 struct sph_contact {
     int dim, n, nbodies;
-    int *base;         /* nbodies + 1: first global index of each body */
+    int *base;         /* nbodies + 1: first global index of each body (its own particles) */
+    int nown;          /* base[nbodies]: the particles of this process */
     int *body;         /* n: body of each global particle */
     double *dc;        /* nbodies^2 contact distances (for the search) */
     sph_pair_law *law;     /* nbodies^2 */
-    double *x;         /* n*dim current positions */
+    double *x, *v;     /* n*dim current positions and velocities */
+    int cap;           /* particles the arrays hold (own and, on many processes, partners) */
     sph_csearch search;
     double stored, dissipated, w2max;
     double level, close; /* sph_contact_closeness's level, and the closest pair's (contact_law.h) */
@@ -78,8 +80,8 @@ void sph_contact_init(sph_sim *s)
     c->nbodies = nb;
     c->base = calloc((size_t)nb + 1, sizeof *c->base);
     for (int i = 0; i < nb; i++)
-        c->base[i + 1] = c->base[i] + s->bodies[i].n;
-    c->n = c->base[nb];
+        c->base[i + 1] = c->base[i] + s->bodies[i].nown;
+    c->n = c->nown = c->cap = c->base[nb];
     c->body = malloc(((size_t)c->n + 1) * sizeof *c->body);
     for (int i = 0; i < nb; i++)
         for (int p = c->base[i]; p < c->base[i + 1]; p++)
@@ -97,6 +99,7 @@ void sph_contact_init(sph_sim *s)
         }
     }
     c->x = malloc(((size_t)c->n * c->dim + 1) * sizeof *c->x);
+    c->v = malloc(((size_t)c->n * c->dim + 1) * sizeof *c->v);
     const double skin = 0.5 * dxmax; /* (as the device's, sph_cuda_contact.h) */
     c->search = (sph_csearch){.n = c->n, .dim = c->dim, .nbodies = nb, .body = c->body,
                               .dc = c->dc, .skin = skin};
@@ -104,29 +107,127 @@ void sph_contact_init(sph_sim *s)
     c->close = c->level; /* before the first step's pairs: as if touching */
 }
 
-/* Current positions of every particle into c->x. */
+/* Current positions and velocities of every own particle into c->x, c->v. */
 static void gather(sph_contact *c, const sph_sim *s)
 {
     for (int i = 0; i < s->nbodies; i++) {
         const sph_body *b = &s->bodies[i];
-        double *x = c->x + (size_t)c->base[i] * c->dim;
-        const size_t nd = (size_t)b->n * c->dim;
+        double *x = c->x + (size_t)c->base[i] * c->dim, *v = c->v + (size_t)c->base[i] * c->dim;
+        const size_t nd = (size_t)b->nown * c->dim;
 #pragma omp parallel for schedule(static)
         for (size_t p = 0; p < nd; p++)
-            x[p] = b->X[p] + b->u[p];
+            x[p] = b->X[p] + b->u[p], v[p] = b->v[p];
     }
 }
 
+/* Room for n particles in the arrays of the contact set; 0, or -1 when memory runs out. */
+static int reserve(sph_contact *c, int n)
+{
+    if (n <= c->cap)
+        return 0;
+    const size_t nd = (size_t)n * c->dim + 1;
+    int *body = realloc(c->body, ((size_t)n + 1) * sizeof *body);
+    if (body)
+        c->body = body;
+    double *x = realloc(c->x, nd * sizeof *x);
+    if (x)
+        c->x = x;
+    double *v = realloc(c->v, nd * sizeof *v);
+    if (v)
+        c->v = v;
+    if (!body || !x || !v)
+        return -1;
+    c->cap = n;
+    return 0;
+}
+
+/* On many processes: the particles of other processes that may touch this one's, appended
+ * to the contact set after the own ones (body, position, velocity), as partners whose forces
+ * their own processes compute.  Each process sends every other one its particles within the
+ * search's reach (largest contact distance + skin) of the box of that process's particles of
+ * another body.  The set changes from step to step, so the candidates are built anew. */
+static void add_partners(sph_contact *c, const sph_sim *s)
+{
+    const sph_par *par = s->par;
+    const int D = c->dim, nb = c->nbodies, np = par->size, rec = 1 + 2 * D;
+    double dcmax = 0;
+    for (int k = 0; k < nb * nb; k++)
+        dcmax = fmax(dcmax, c->dc[k]);
+    const double reach = dcmax + c->search.skin;
+    double *box = malloc(2 * 3 * (size_t)nb * sizeof *box);          /* this process's */
+    double *boxes = malloc(2 * 3 * (size_t)nb * (size_t)np * sizeof *boxes); /* everyone's */
+    double **out = calloc((size_t)np, sizeof *out);
+    size_t *bytes = calloc(2 * (size_t)np, sizeof *bytes), *got = bytes + np;
+    if (!box || !boxes || !out || !bytes) {
+        sph_error("out of memory for contact between processes");
+        exit(SPH_EXIT_SETUP);
+    }
+    for (int i = 0; i < nb; i++)
+        for (int k = 0; k < 3; k++)
+            box[6 * i + k] = k < D ? INFINITY : 0, box[6 * i + 3 + k] = k < D ? -INFINITY : 0;
+    for (int p = 0; p < c->nown; p++)
+        for (int k = 0; k < D; k++) {
+            double *b = box + 6 * c->body[p], x = c->x[(size_t)p * D + k];
+            b[k] = fmin(b[k], x), b[3 + k] = fmax(b[3 + k], x);
+        }
+    par->allgather(box, boxes, (int)(6 * (size_t)nb * sizeof *box));
+    for (int q = 0; q < np; q++) {
+        out[q] = malloc(((size_t)c->nown * rec + 1) * sizeof **out);
+        if (!out[q]) {
+            sph_error("out of memory for contact between processes");
+            exit(SPH_EXIT_SETUP);
+        }
+        int count = 0;
+        for (int p = 0; q != par->rank && p < c->nown; p++) {
+            const double *x = c->x + (size_t)p * D;
+            int near = 0;
+            for (int j = 0; j < nb && !near; j++) { /* (another body's box of process q) */
+                const double *b = boxes + 6 * ((size_t)q * nb + j);
+                double d2 = 0;
+                for (int k = 0; k < D; k++) {
+                    const double d = fmax(fmax(b[k] - x[k], x[k] - b[3 + k]), 0.0);
+                    d2 += d * d;
+                }
+                near = j != c->body[p] && b[0] <= b[3] && d2 <= reach * reach;
+            }
+            if (!near)
+                continue;
+            double *r = out[q] + (size_t)count++ * rec;
+            r[0] = c->body[p];
+            memcpy(r + 1, x, (size_t)D * sizeof *x);
+            memcpy(r + 1 + D, c->v + (size_t)p * D, (size_t)D * sizeof *x);
+        }
+        bytes[q] = (size_t)count * rec * sizeof **out;
+    }
+    void *in;
+    par->swap((const void *const *)out, bytes, &in, got);
+    size_t total = 0;
+    for (int q = 0; q < np; q++)
+        total += got[q] / (rec * sizeof(double)), free(out[q]);
+    if (reserve(c, c->nown + (int)total)) {
+        sph_error("out of memory for contact between processes");
+        exit(SPH_EXIT_SETUP);
+    }
+    const double *r = in;
+    for (size_t g = 0; g < total; g++, r += rec) {
+        const size_t at = (size_t)c->nown + g;
+        c->body[at] = (int)r[0];
+        memcpy(c->x + at * D, r + 1, (size_t)D * sizeof *r);
+        memcpy(c->v + at * D, r + 1 + D, (size_t)D * sizeof *r);
+    }
+    c->n = c->nown + (int)total;
+    sph_csearch_reset(&c->search, c->n, c->body);
+    free(in), free(box), free(boxes), free(out), free(bytes);
+}
+
 /* Contact force on particle i (global gi) from j (global gj), contact_law.h. */
-static void pair_force(const sph_contact *c, const sph_sim *s, int gi, int gj, double dt,
-                       double f[3], double *stored, double *power, double *w2, double *close)
+static void pair_force(const sph_contact *c, int gi, int gj, double dt, double f[3],
+                       double *stored, double *power, double *w2, double *close)
 {
     const int D = c->dim, bi = c->body[gi], bj = c->body[gj];
-    const double *vi = s->bodies[bi].v + (size_t)(gi - c->base[bi]) * D;
-    const double *vj = s->bodies[bj].v + (size_t)(gj - c->base[bj]) * D;
     sph_contact_pair(&c->law[bi * c->nbodies + bj], D, c->x + (size_t)gi * D,
-                     c->x + (size_t)gj * D, vi, vj, dt, c->level, f, stored, power, w2,
-                     close);
+                     c->x + (size_t)gj * D, c->v + (size_t)gi * D, c->v + (size_t)gj * D, dt,
+                     c->level, f, stored, power, w2, close);
 }
 
 void sph_contact_forces(sph_sim *s, double dt)
@@ -136,6 +237,8 @@ void sph_contact_forces(sph_sim *s, double dt)
     sph_contact_init(s);
     sph_contact *c = s->contact;
     gather(c, s);
+    if (s->par->size > 1)
+        add_partners(c, s);
     sph_csearch_update(&c->search, c->x);
     const sph_csearch *q = &c->search;
     enum { BLOCK = 32 };
@@ -152,9 +255,11 @@ void sph_contact_forces(sph_sim *s, double dt)
         double stored = 0, power = 0;
         for (int a = blk * BLOCK; a < end; a++) {
             const int gi = q->active[a], bi = c->body[gi];
+            if (gi >= c->nown)
+                continue; /* (a partner of another process: its forces are that one's) */
             double fi[3] = {0, 0, 0}, f[3];
             for (int p = q->start[gi]; p < q->start[gi + 1]; p++) {
-                pair_force(c, s, gi, q->nb[p], dt, f, &stored, &power, &w2, &close);
+                pair_force(c, gi, q->nb[p], dt, f, &stored, &power, &w2, &close);
                 for (int k = 0; k < c->dim; k++)
                     fi[k] += f[k];
             }
@@ -168,10 +273,12 @@ void sph_contact_forces(sph_sim *s, double dt)
     double stored = 0, power = 0;
     for (int blk = 0; blk < nblocks; blk++)
         stored += c->part[2 * blk], power += c->part[2 * blk + 1];
-    c->stored = stored;
+    c->stored = stored; /* (on many processes: this process's share, summed at outputs) */
     c->dissipated += power * dt;
-    c->w2max = w2;
-    c->close = close;
+    double most[2] = {w2, close}; /* (the time step's: over all processes) */
+    s->par->max(most, 2);
+    c->w2max = most[0];
+    c->close = most[1];
 }
 
 const sph_pair_law *sph_contact_laws(sph_sim *s)
@@ -206,7 +313,8 @@ int sph_contact_checkpoint(const sph_sim *s, double sums[4], const double **x0, 
         return 0;
     sums[0] = c ? c->stored : 0, sums[1] = c ? c->dissipated : 0, sums[2] = c ? c->w2max : 0;
     sums[3] = c ? c->close : 0;
-    const int built = c && c->search.built; /* (a device target builds no lists) */
+    /* (a device target builds no lists; on many processes they are built at every step) */
+    const int built = c && c->search.built && s->par->size == 1;
     *x0 = built ? c->search.x0 : NULL;
     *nx0 = built ? (size_t)c->n * (size_t)c->dim : 0;
     return 1;
@@ -216,8 +324,8 @@ int sph_contact_restore(sph_sim *s, const double sums[4], const double *x0, size
 {
     sph_contact_set(s, sums[0], sums[1], sums[2], sums[3]);
     sph_contact *c = s->contact;
-    if (!nx0)
-        return 0;
+    if (!nx0 || s->par->size > 1)
+        return 0; /* (on many processes the lists are built at every step) */
     if (nx0 != (size_t)c->n * (size_t)c->dim) {
         sph_error("cannot restart: the checkpoint's contact holds %zu coordinates, the scene %zu",
                   nx0, (size_t)c->n * (size_t)c->dim);
@@ -261,6 +369,7 @@ void sph_contact_free(sph_sim *s)
     free(c->dc);
     free(c->law);
     free(c->x);
+    free(c->v);
     free(c->part);
     free(c);
     s->contact = NULL;

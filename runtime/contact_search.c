@@ -168,3 +168,11 @@ void sph_csearch_free(sph_csearch *c)
     free(c->active);
     memset(c, 0, sizeof *c);
 }
+
+void sph_csearch_reset(sph_csearch *c, int n, const int *body)
+{
+    free(c->x0), free(c->active);
+    c->x0 = NULL, c->active = NULL;
+    c->n = n, c->body = body;
+    c->built = 0;
+}

@@ -29,5 +29,8 @@ int sph_csearch_update(sph_csearch *c, const double *x);
  * from its checkpoint). */
 void sph_csearch_build_at(sph_csearch *c, const double *x0);
 void sph_csearch_free(sph_csearch *c);
+/* Another set of n particles of bodies body[] (a run on many processes, whose partners from
+ * other processes change): the next update builds the candidates anew. */
+void sph_csearch_reset(sph_csearch *c, int n, const int *body);
 
 #endif

@@ -1,5 +1,6 @@
 /* par.c — the processes of a run on one process (sph_par_one): every agreement is this
  * process's own, and there is no halo.  The many-process version is runtime/mpi/par_mpi.c. */
+#include <stdlib.h>
 #include <string.h>
 
 #include "sphrt.h"
@@ -15,6 +16,13 @@ static void one_allgather(const void *mine, void *all, int bytes)
 {
     memcpy(all, mine, (size_t)bytes);
 }
+static void one_swap(const void *const *out, const size_t *bytes, void **in, size_t *got)
+{
+    *in = malloc(bytes[0] + 1);
+    if (*in)
+        memcpy(*in, out[0], bytes[0]);
+    got[0] = *in ? bytes[0] : 0;
+}
 static void one_gather0(const void *data, size_t bytes,
                         void (*take)(void *ctx, int from, const void *data, size_t bytes),
                         void *ctx)
@@ -26,6 +34,7 @@ const sph_par sph_par_one = {
     .rank = 0, .size = 1,
     .sum = one_values, .min = one_values, .max = one_values,
     .agree = one_agree, .bcast = one_bcast, .allgather = one_allgather, .gather0 = one_gather0,
+    .swap = one_swap,
     .body_ready = one_body_ready, .body_free = one_body_free,
     .post = one_fields, .wait = one_fields,
     .bytes_sent = one_zero, .wait_seconds = one_zero,

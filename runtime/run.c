@@ -866,8 +866,7 @@ static int beyond_many(const run_state *r)
 {
     if (r->sim.par->size == 1)
         return 0;
-    const char *what = r->m->contact ? "contact between bodies"
-                       : r->m->advance ? "a device target" : NULL;
+    const char *what = r->m->advance ? "a device target" : NULL;
     if (what)
         sph_error("%s on many processes is not supported yet: run the model on one process "
                   "(without mpirun, or mpirun -np 1)", what);

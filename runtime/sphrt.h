@@ -541,6 +541,9 @@ typedef struct sph_par {
     void (*gather0)(const void *data, size_t bytes,
                     void (*take)(void *ctx, int from, const void *data, size_t bytes),
                     void *ctx);
+    /* Every process sends out[q] (bytes[q] bytes) to process q and gets what each sent it:
+     * *in (malloc'd; free it) holds the blocks in process order, got[q] bytes from q. */
+    void (*swap)(const void *const *out, const size_t *bytes, void **in, size_t *got);
     /* Collective, once after every body's set-up: the plan of body b's halo exchange;
      * 0, or -1 after a message. */
     int (*body_ready)(sph_body *b);

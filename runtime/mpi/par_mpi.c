@@ -101,6 +101,37 @@ static void par_gather0(const void *data, size_t bytes,
     }
 }
 
+static void par_swap(const void *const *out, const size_t *bytes, void **in, size_t *got)
+{
+    int size;
+    MPI_Comm_size(comm, &size);
+    int *count = malloc(4 * ((size_t)size + 1) * sizeof *count);
+    unsigned char *send = NULL;
+    if (!count)
+        out_of_memory();
+    int *sdisp = count + size, *rcount = count + 2 * size, *rdisp = count + 3 * size;
+    size_t total = 0;
+    for (int q = 0; q < size; q++) {
+        if (bytes[q] > (size_t)CHUNK || total > (size_t)CHUNK)
+            out_of_memory(); /* (an int count; never near for contact's neighbours) */
+        count[q] = (int)bytes[q], sdisp[q] = (int)total, total += bytes[q];
+    }
+    send = malloc(total + 1);
+    if (!send)
+        out_of_memory();
+    for (int q = 0; q < size; q++)
+        memcpy(send + sdisp[q], out[q], bytes[q]);
+    MPI_Alltoall(count, 1, MPI_INT, rcount, 1, MPI_INT, comm);
+    size_t rtotal = 0;
+    for (int q = 0; q < size; q++)
+        rdisp[q] = (int)rtotal, rtotal += (size_t)rcount[q], got[q] = (size_t)rcount[q];
+    *in = malloc(rtotal + 1);
+    if (!*in)
+        out_of_memory();
+    MPI_Alltoallv(send, count, sdisp, MPI_BYTE, *in, rcount, rdisp, MPI_BYTE, comm);
+    free(send), free(count);
+}
+
 /* A failure anywhere: process 0 has reported its own; a failure of other processes alone is
  * reported by process 0 with the lowest one's first message. */
 static int par_agree(int bad)
@@ -183,7 +214,7 @@ int sph_mpi_main(const sph_model *m, int argc, char **argv)
     MPI_Comm_dup(MPI_COMM_WORLD, &comm);
     sph_par par = {
         .sum = par_sum, .min = par_min, .max = par_max, .agree = par_agree, .bcast = par_bcast,
-        .allgather = par_allgather, .gather0 = par_gather0,
+        .allgather = par_allgather, .gather0 = par_gather0, .swap = par_swap,
         .body_ready = body_ready, .body_free = body_free, .post = post, .wait = wait_halo,
         .bytes_sent = bytes_sent, .wait_seconds = wait_seconds,
     };

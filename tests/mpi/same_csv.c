@@ -24,9 +24,9 @@ static int read_table(const char *path, table *t)
     FILE *f = fopen(path, "r");
     if (!f || !fgets(t->header, sizeof t->header, f))
         return fprintf(stderr, "same_csv: cannot read %s\n", path), -1;
-    t->ncol = 1;
+    t->ncol = 1; /* (columns apart by commas, or by tabs: the SoliDualSPHysics files) */
     for (const char *c = t->header; *c; c++)
-        t->ncol += *c == ',';
+        t->ncol += *c == ',' || *c == '\t';
     if (t->ncol > MAXCOL)
         return fprintf(stderr, "same_csv: %s: too many columns\n", path), -1;
     t->v = malloc(sizeof *t->v * MAXCOL * MAXROW);
@@ -36,7 +36,7 @@ static int read_table(const char *path, table *t)
         char *p = line;
         for (int c = 0; c < t->ncol; c++) {
             t->v[(size_t)t->nrow * t->ncol + c] = strtod(p, &p);
-            if (*p == ',')
+            if (*p == ',' || *p == '\t')
                 p++;
         }
         t->nrow++;
@@ -61,9 +61,9 @@ int main(int argc, char **argv)
     char name[MAXCOL][64] = {{0}};
     const char *h = a.header;
     for (int c = 0; c < a.ncol; c++) { /* the column names */
-        size_t n = strcspn(h, ",\n");
+        size_t n = strcspn(h, ",\t\n");
         snprintf(name[c], sizeof name[c], "%.*s", (int)n, h);
-        h += n + (h[n] == ',');
+        h += n + (h[n] == ',' || h[n] == '\t');
     }
     double worst = 0;
     int wr = 0, wc = 0;

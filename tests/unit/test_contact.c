@@ -126,11 +126,11 @@ static void pair_init(pair_scene *p, int dim, double dx, const double mass[2], d
     for (int k = 0; k < 2; k++) {
         p->desc[k] = (sph_body_desc){.young = 200e9, .poisson = 0.3, .restitution = e,
                                      .friction = mu};
-        p->b[k] = (sph_body){.desc = &p->desc[k], .n = 1, .dim = dim, .dx = dx,
+        p->b[k] = (sph_body){.desc = &p->desc[k], .n = 1, .nown = 1, .dim = dim, .dx = dx,
                              .mass = mass[k], .X = p->X[k], .u = p->u[k], .v = p->v[k],
                              .a = p->a[k]};
     }
-    p->s = (sph_sim){.m = &p->m, .bodies = p->b, .nbodies = 2};
+    p->s = (sph_sim){.m = &p->m, .bodies = p->b, .nbodies = 2, .par = &sph_par_one};
 }
 
 /* One step of Alg. 1 (Verlet) with contact as the only force. */

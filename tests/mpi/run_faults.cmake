@@ -1,0 +1,43 @@
+# Faults of runs on many processes end with a message and an exit code, never a hang:
+#   -DTINY= (tests/mpi/tiny.sph built with --mpi) -DPROGRAM= (the beam, --mpi) -DMPIEXEC=
+#   -DNPFLAG= -DMPIFLAGS= -DOUT=
+# - more processes than a body has particles: the set-up refuses (exit 4), naming the body;
+# - --restart from a damaged checkpoint: every process refuses it (exit 4);
+# - a process killed while the others run: mpirun ends the job (exit non-zero), no hang
+#   (the test's timeout would catch one).
+file(REMOVE_RECURSE ${OUT})
+function(expect_failure what code pattern)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
+                  TIMEOUT 120)
+  if(code STREQUAL "any")
+    if(rc EQUAL 0)
+      message(FATAL_ERROR "${what}: exit code 0\n${out}\n${err}")
+    endif()
+  elseif(NOT rc EQUAL code)
+    message(FATAL_ERROR "${what}: exit code ${rc}, expected ${code}\n${out}\n${err}")
+  endif()
+  if(NOT "${out}${err}" MATCHES "${pattern}")
+    message(FATAL_ERROR "${what}: no message matching '${pattern}'\n${out}\n${err}")
+  endif()
+  message(STATUS "${what}: exit code ${rc}, as expected")
+endfunction()
+expect_failure("4 processes, 3 particles" 4 "body 'strip' has 3 particles, too few to give each of the 4 processes"
+               ${MPIEXEC} ${NPFLAG} 4 ${MPIFLAGS} ${TINY} --quiet --out ${OUT}/tiny)
+
+execute_process(COMMAND ${MPIEXEC} ${NPFLAG} 2 ${MPIFLAGS} ${PROGRAM} --quiet --end 0.002
+                        --checkpoint 0.002 --out ${OUT}/damaged RESULT_VARIABLE rc)
+# cut short: its last records and the hash of its bytes are missing
+file(SIZE ${OUT}/damaged/checkpoint.bin size)
+math(EXPR keep "${size} * 2 / 3")
+execute_process(COMMAND head -c ${keep} ${OUT}/damaged/checkpoint.bin
+                OUTPUT_FILE ${OUT}/damaged/cut.bin)
+expect_failure("a damaged checkpoint on 3 processes" 4 "cannot restart|damaged|incomplete|hash"
+               ${MPIEXEC} ${NPFLAG} 3 ${MPIFLAGS} ${PROGRAM} --quiet --end 0.004
+               --restart ${OUT}/damaged/cut.bin)
+
+# A process that dies: the last process kills itself with SIGKILL a second into the run.
+file(WRITE ${OUT}/die.sh "#!/bin/sh\nrank=\${OMPI_COMM_WORLD_RANK:-\${PMI_RANK:-0}}\n"
+     "if [ \"$rank\" = 1 ]; then (sleep 1; kill -9 $$) & fi\nexec \"$@\"\n")
+file(CHMOD ${OUT}/die.sh PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+expect_failure("a process killed" any ".*" ${MPIEXEC} ${NPFLAG} 2 ${MPIFLAGS} ${OUT}/die.sh
+               ${PROGRAM} --quiet --end 1 --out ${OUT}/killed)
