@@ -4,7 +4,8 @@
 # - more processes than a body has particles: the set-up refuses (exit 4), naming the body;
 # - --restart from a damaged checkpoint: every process refuses it (exit 4);
 # - a process killed while the others run: mpirun ends the job (exit non-zero), no hang
-#   (the test's timeout would catch one).
+#   (the test's timeout would catch one);
+# - SIGTERM to mpirun: every process stops at once, with one checkpoint (resumed on 3).
 file(REMOVE_RECURSE ${OUT})
 function(expect_failure what code pattern)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
@@ -41,3 +42,25 @@ file(WRITE ${OUT}/die.sh "#!/bin/sh\nrank=\${OMPI_COMM_WORLD_RANK:-\${PMI_RANK:-
 file(CHMOD ${OUT}/die.sh PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
 expect_failure("a process killed" any ".*" ${MPIEXEC} ${NPFLAG} 2 ${MPIFLAGS} ${OUT}/die.sh
                ${PROGRAM} --quiet --end 1 --out ${OUT}/killed)
+
+# SIGTERM to mpirun, which passes it to the processes: they agree to stop at the end of a
+# batch of steps and write one checkpoint, which resumes on 3 processes.
+string(REPLACE ";" " " flags "${MPIFLAGS}")
+execute_process(COMMAND sh -c "${MPIEXEC} ${NPFLAG} 2 ${flags} ${PROGRAM} --quiet --end 1 \
+--checkpoint 0.5 --out ${OUT}/signalled & pid=$!; sleep 4; kill -TERM $pid; wait $pid"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
+if(rc EQUAL 0 OR NOT "${out}${err}" MATCHES "stopped by SIGTERM at t = [^ ]+ s \\(step [0-9]+\\); the checkpoint"
+   OR NOT EXISTS ${OUT}/signalled/checkpoint.bin)
+  message(FATAL_ERROR "SIGTERM on 2 processes: exit code ${rc}\n${out}\n${err}")
+endif()
+file(READ ${OUT}/signalled/summary.json summary)
+if(NOT summary MATCHES "\"status\": \"stopped\"")
+  message(FATAL_ERROR "SIGTERM on 2 processes: summary.json does not say stopped\n${summary}")
+endif()
+execute_process(COMMAND ${MPIEXEC} ${NPFLAG} 3 ${MPIFLAGS} ${PROGRAM} --quiet --end 0.03
+                        --restart ${OUT}/signalled/checkpoint.bin
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
+if(NOT rc EQUAL 0 AND NOT rc EQUAL 1)
+  message(FATAL_ERROR "resumed on 3 processes after SIGTERM: exit code ${rc}\n${out}\n${err}")
+endif()
+message(STATUS "SIGTERM: stopped with one checkpoint, resumed on 3 processes")
