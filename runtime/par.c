@@ -12,6 +12,17 @@ static int one_body_ready(sph_body *b) { return (void)b, 0; }
 static void one_body_free(sph_body *b) { (void)b; }
 static void one_fields(sph_body *b, const sph_field *f, int nf) { (void)b, (void)f, (void)nf; }
 static double one_zero(void) { return 0.0; }
+static void one_halo_lists(const sph_body *b, const int **send, int *nsend, const int **recv,
+                           int *nrecv)
+{
+    (void)b;
+    *send = *recv = NULL;
+    *nsend = *nrecv = 0;
+}
+static void one_exchange_packed(sph_body *b, const void *out, void *in, size_t bytes)
+{
+    (void)b, (void)out, (void)in, (void)bytes;
+}
 static void one_allgather(const void *mine, void *all, int bytes)
 {
     memcpy(all, mine, (size_t)bytes);
@@ -37,5 +48,6 @@ const sph_par sph_par_one = {
     .swap = one_swap,
     .body_ready = one_body_ready, .body_free = one_body_free,
     .post = one_fields, .wait = one_fields,
+    .halo_lists = one_halo_lists, .exchange_packed = one_exchange_packed,
     .bytes_sent = one_zero, .wait_seconds = one_zero,
 };

@@ -610,6 +610,13 @@ static int glance(run_state *r)
     sph_monitor_sums *sums = calloc((size_t)r->sim.nbodies, sizeof *sums);
     double stretch = 1.0;
     r->m->monitor(&r->sim, sums);
+    const sph_par *par = r->sim.par;
+    for (int i = 0; i < r->sim.nbodies && par->size > 1; i++) { /* (all processes' sums) */
+        double most[2] = {sums[i].bad, -sums[i].stretch2}, energy = sums[i].energy;
+        par->max(most, 2);
+        par->sum(&energy, 1);
+        sums[i].bad = most[0] > 0, sums[i].stretch2 = -most[1], sums[i].energy = energy;
+    }
     const int look = sph_monitor_glance(&r->mon, &r->sim, sums, &stretch);
     free(sums);
     if (!look)
@@ -866,7 +873,7 @@ static int beyond_many(const run_state *r)
 {
     if (r->sim.par->size == 1)
         return 0;
-    const char *what = r->m->advance ? "a device target" : NULL;
+    const char *what = r->m->advance && r->m->contact ? "contact on a device target" : NULL;
     if (what)
         sph_error("%s on many processes is not supported yet: run the model on one process "
                   "(without mpirun, or mpirun -np 1)", what);

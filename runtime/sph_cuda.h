@@ -69,6 +69,12 @@ template <class T> static inline cudaError_t cudaMemcpyFromSymbol(void *d, const
     return cudaSuccess;
 }
 static inline cudaError_t cudaGetLastError() { return cudaSuccess; }
+static inline cudaError_t cudaGetDeviceCount(int *n)
+{
+    *n = 1;
+    return cudaSuccess;
+}
+static inline cudaError_t cudaSetDevice(int) { return cudaSuccess; }
 static inline void atomicAdd(double *a, double v) { *a += v; }
 #endif
 
@@ -508,6 +514,121 @@ static void sph_read_mostly(const void *p, size_t bytes)
 #endif
 }
 
+/* ---- runs on many processes (sphc --mpi, docs/mpi.md) ----------------------------------
+ * One process per GPU: the process's rank among those of its node (the MPI launcher's
+ * variable) picks the device.  The halo's values are staged through the host: a kernel
+ * packs the values of the own particles the plan sends into a device buffer, the host
+ * copies it out, the processes exchange (sph_par), the host copies what came in back and a
+ * kernel writes it into the halo particles. */
+static void sph_cuda_pick_device(const sph_par *par)
+{
+    static int picked;
+    if (picked || !par || par->size == 1)
+        return;
+    picked = 1;
+    const char *names[] = {"OMPI_COMM_WORLD_LOCAL_RANK", "MPI_LOCALRANKID", "SLURM_LOCALID",
+                           "PMI_LOCAL_RANK"};
+    int count = 0;
+    SPH_CUDA_CHECK(cudaGetDeviceCount(&count));
+    for (const char *name : names)
+        if (const char *v = getenv(name)) {
+            if (count > 0)
+                SPH_CUDA_CHECK(cudaSetDevice(atoi(v) % count));
+            return;
+        }
+}
+
+/* A field of a device view that the halo exchange carries: particle i's entry e at base + (i
+ * pstride + e estride) elements of `size` bytes (a double: sph_real is double on many
+ * processes, which `precision single` is not yet). */
+struct sph_cuda_field {
+    void *base;
+    size_t size;
+    int entries;
+    size_t pstride, estride;
+};
+
+/* The plan's lists and buffers on the device, made at a body's first exchange. */
+struct sph_cuda_halo_lists {
+    int nsend, nrecv, width; /* width: the doubles of the buffers per particle */
+    int *send, *recv;        /* device copies of the plan's lists */
+    double *out, *in;        /* device buffers */
+    double *host_out, *host_in;
+};
+
+static inline sph_cuda_halo_lists *sph_cuda_halo_prepare(sph_body *b, int width)
+{
+    sph_cuda_halo_lists *x = (sph_cuda_halo_lists *)b->halo_dev;
+    if (x && x->width >= width)
+        return x;
+    const int *send, *recv;
+    int nsend, nrecv;
+    b->par->halo_lists(b, &send, &nsend, &recv, &nrecv);
+    if (!x) {
+        x = (sph_cuda_halo_lists *)calloc(1, sizeof *x);
+        x->nsend = nsend, x->nrecv = nrecv;
+        x->send = (int *)sph_dev_copy(send, (size_t)nsend * sizeof(int));
+        x->recv = (int *)sph_dev_copy(recv, (size_t)nrecv * sizeof(int));
+        b->halo_dev = x; /* (host memory: read on the host only) */
+    }
+    x->width = width;
+    x->out = (double *)sph_dev_alloc(((size_t)nsend * width + 1) * sizeof(double));
+    x->in = (double *)sph_dev_alloc(((size_t)nrecv * width + 1) * sizeof(double));
+    x->host_out = (double *)realloc(x->host_out, ((size_t)nsend * width + 1) * sizeof(double));
+    x->host_in = (double *)realloc(x->host_in, ((size_t)nrecv * width + 1) * sizeof(double));
+    if (!x->host_out || !x->host_in) {
+        sph_error("out of memory for the halo of a body");
+        exit(SPH_EXIT_SETUP);
+    }
+    return x;
+}
+
+enum { SPH_CUDA_HALO_FIELDS = 4 };
+struct sph_cuda_fields {
+    sph_cuda_field f[SPH_CUDA_HALO_FIELDS];
+    int nf;
+};
+
+/* The halo's values of nf fields of device view b from their processes (a pass of the step;
+ * nothing on one process). */
+static inline void sph_cuda_halo(sph_body *b, const sph_cuda_field *f, int nf)
+{
+    if (!b->par || b->par->size == 1 || !b->halo)
+        return;
+    sph_cuda_fields fs;
+    int width = 0;
+    fs.nf = nf;
+    for (int k = 0; k < nf && k < SPH_CUDA_HALO_FIELDS; k++) {
+        fs.f[k] = f[k];
+        width += f[k].entries;
+        if (f[k].size != sizeof(double)) {
+            sph_error("the halo of a device target carries doubles only");
+            exit(SPH_EXIT_CUDA);
+        }
+    }
+    sph_cuda_halo_lists *x = sph_cuda_halo_prepare(b, width);
+    const int *send = x->send, *recv = x->recv, nown = b->nown;
+    double *out = x->out, *in = x->in;
+    sph_for(x->nsend, "halo: pack", [=] __device__(int q) {
+        double *o = out + (size_t)q * width;
+        const size_t i = (size_t)send[q];
+        for (int k = 0; k < fs.nf; k++)
+            for (int e = 0; e < fs.f[k].entries; e++)
+                *o++ = ((const double *)fs.f[k].base)[i * fs.f[k].pstride + e * fs.f[k].estride];
+    });
+    const size_t bytes = (size_t)width * sizeof(double);
+    SPH_CUDA_CHECK(cudaMemcpy(x->host_out, out, (size_t)x->nsend * bytes, cudaMemcpyDeviceToHost));
+    b->par->exchange_packed(b, x->host_out, x->host_in, bytes);
+    SPH_CUDA_CHECK(cudaMemcpy(in, x->host_in, (size_t)x->nrecv * bytes, cudaMemcpyHostToDevice));
+    sph_for(x->nrecv, "halo: unpack", [=] __device__(int q) {
+        const double *v = in + (size_t)q * width;
+        const size_t i = (size_t)nown + (size_t)recv[q];
+        for (int k = 0; k < fs.nf; k++)
+            for (int e = 0; e < fs.f[k].entries; e++)
+                ((double *)fs.f[k].base)[i * fs.f[k].pstride + e * fs.f[k].estride] = *v++;
+    });
+}
+
 /* Full pair lists from the half lists (j > i): i gets (j, k), j gets (i, ~k), laid out slot
  * by slot (sphrt.h, fb_*).  A pair is packed as key << 32 | j, key = 2k or 2~k + 1 (every
  * offset its own key), and each particle's pairs are sorted by key.  When the body's pairs
@@ -518,11 +639,16 @@ static void sph_read_mostly(const void *p, size_t bytes)
  * whose particles lie near a surface.  Otherwise the pairs are packed from slot 0. */
 static void sph_full_lists(const sph_body *h, int **count, int **nb, int **k, int *slots)
 {
-    const size_t n = (size_t)h->n, nkey = 2 * (size_t)h->ntab + 2;
+    /* (on many processes the rows of own particles, each with its pairs with the halo too,
+     * h->xb: a halo particle has no list) */
+    const size_t n = (size_t)h->n, nown = (size_t)h->nown, nkey = 2 * (size_t)h->ntab + 2;
     size_t *start = (size_t *)calloc(n + 1, sizeof(size_t));
-    for (size_t i = 0; i < n; i++)
+    for (size_t i = 0; i < nown; i++) {
         for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++)
             start[i + 1]++, start[h->hb[p] + 1]++;
+        if (h->xb_start)
+            start[i + 1] += (size_t)(h->xb_start[i + 1] - h->xb_start[i]);
+    }
     *count = (int *)malloc((n + 1) * sizeof(int));
     int maxc = 0, used = 0;
     for (size_t i = 0; i < n; i++) {
@@ -532,21 +658,27 @@ static void sph_full_lists(const sph_body *h, int **count, int **nb, int **k, in
     }
     /* the rank of each key the pairs use, when there can be few (not one per pair) */
     int *slot_of = nkey <= 4 * (size_t)maxc + 4 ? (int *)calloc(nkey, sizeof(int)) : NULL;
-    for (size_t i = 0; slot_of && i < n; i++)
+    for (size_t i = 0; slot_of && i < nown; i++) {
         for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++)
             slot_of[2 * (size_t)h->hb_k[p]] = slot_of[2 * (size_t)h->hb_k[p] + 1] = 1;
+        for (int p = h->xb_start ? h->xb_start[i] : 0; h->xb_start && p < h->xb_start[i + 1]; p++)
+            slot_of[2 * (size_t)h->xb_k[p]] = 1;
+    }
     for (size_t key = 0; slot_of && key < nkey; key++)
         slot_of[key] = slot_of[key] ? used++ : -1;
     const int fixed = slot_of && used <= maxc + maxc / 2; /* holes: at most half the slots */
     uint64_t *packed = (uint64_t *)malloc((start[n] + 1) * sizeof(uint64_t));
     size_t *fill = (size_t *)malloc((n + 1) * sizeof(size_t));
     memcpy(fill, start, n * sizeof(size_t));
-    for (size_t i = 0; i < n; i++)
+    for (size_t i = 0; i < nown; i++) {
         for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++) {
             const uint64_t j = (uint64_t)h->hb[p], key = 2 * (uint64_t)h->hb_k[p];
             packed[fill[i]++] = key << 32 | j;
             packed[fill[j]++] = (key + 1) << 32 | i;
         }
+        for (int p = h->xb_start ? h->xb_start[i] : 0; h->xb_start && p < h->xb_start[i + 1]; p++)
+            packed[fill[i]++] = (2 * (uint64_t)h->xb_k[p]) << 32 | (uint64_t)h->xb[p];
+    }
     free(fill);
     *slots = fixed ? used : maxc;
     *nb = (int *)malloc(((size_t)*slots * n + 1) * sizeof(int));
@@ -593,6 +725,7 @@ static sph_body *sph_cuda_body(const sph_body *h)
 {
     const size_t n = (size_t)h->n, d = (size_t)h->dim, nt = (size_t)h->ntab;
     sph_cuda_sync_mode(); /* decided before the first pass */
+    sph_cuda_pick_device(h->par);
     sph_body *b;
     SPH_CUDA_CHECK(cudaMallocManaged(&b, sizeof *b));
     *b = *h;
@@ -602,7 +735,9 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->a = (double *)sph_dev_copy(h->a, n * d * sizeof(double));
     b->work = (double *)sph_dev_copy(h->work, n * d * sizeof(double));
     b->F = (double *)sph_dev_copy(h->F, n * 9 * sizeof(double));
-    b->L = (double *)sph_dev_copy(h->L, n * d * d * sizeof(double));
+    b->L = (double *)sph_dev_alloc(n * d * d * sizeof(double)); /* (own particles' only) */
+    SPH_CUDA_CHECK(cudaMemcpy(b->L, h->L, (size_t)h->nown * d * d * sizeof(double),
+                              cudaMemcpyHostToDevice));
     b->Q = (sph_real *)sph_dev_alloc(n * d * d * sizeof(sph_real)); /* each stress pass */
     b->Cv = (sph_real *)sph_dev_alloc(n * d * d * sizeof(sph_real)); /* writes them whole */
     b->lam2 = (double *)sph_dev_copy(h->lam2, n * sizeof(double)); /* NULL without crush */

@@ -422,6 +422,7 @@ struct sph_body {
     int *xb_start, *xb, *xb_k;
     const struct sph_par *par; /* the processes of the run (one, or MPI's) */
     void *halo;                /* the halo exchange's plan (the MPI runtime's) */
+    void *halo_dev;            /* device targets: the plan's lists and buffers on the device */
     double dx, h, vol, mass, rho0, c0, y_plane;
 
     double *X;          /* n*dim reference positions */
@@ -552,6 +553,13 @@ typedef struct sph_par {
      * exchange, wait ends it (the same fields); passes that need no halo value run between. */
     void (*post)(sph_body *b, const sph_field *f, int nf);
     void (*wait)(sph_body *b, const sph_field *f, int nf);
+    /* For device targets, which pack and unpack the values themselves: body b's halo plan,
+     * the own particles whose values go out (in this order) and, for each value that comes
+     * in, the halo particle it is of (0 .. n - nown - 1); 0 of each on one process.  Then the
+     * exchange itself of packed values, `bytes` per particle, blocking. */
+    void (*halo_lists)(const sph_body *b, const int **send, int *nsend, const int **recv,
+                       int *nrecv);
+    void (*exchange_packed)(sph_body *b, const void *out, void *in, size_t bytes);
     /* The bytes this process has sent in all exchanges so far, and the seconds it waited
      * for them (in wait). */
     double (*bytes_sent)(void);

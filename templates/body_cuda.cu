@@ -49,7 +49,20 @@ SPH_FN int @B@_pair(const sph_body *b, int i, size_t p, sph_real w[@DIM@], sph_r
 static void @B@_stress_pass(sph_body *b)
 {
     enum { D = @DIM@ };
-    SPH_FOR(i, b->n, {
+//@if MPI
+    /* on many processes the halo's u (v, s) first, staged through the host (sph_cuda.h) */
+    const sph_cuda_field halo_in[] = {
+        {b->u, sizeof *b->u, D, D, 1},
+//@if VISCOSITY
+        {b->v, sizeof *b->v, D, D, 1},
+//@endif
+//@if FRACTURE
+        {b->s, sizeof *b->s, 1, 1, 1},
+//@endif
+    };
+    sph_cuda_halo(b, halo_in, sizeof halo_in / sizeof *halo_in);
+//@endif
+    SPH_FOR(i, b->nown, {
         const double *u = b->u;
         double A[D * D] = {0};
 //@if FRACTURE
@@ -78,12 +91,25 @@ static void @B@_stress_pass(sph_body *b)
 static void @B@_momentum_pass(sph_body *b)
 {
     enum { D = @DIM@ };
+//@if MPI
+    /* the halo's Q (cof F, F), entry by entry on the device (SPH_TENSOR: stride n) */
+    const sph_cuda_field halo_in[] = {
+        {b->Q, sizeof *b->Q, D * D, 1, (size_t)b->n},
+//@if VISCOSITY
+        {b->Cv, sizeof *b->Cv, D * D, 1, (size_t)b->n},
+//@endif
+//@if HOURGLASS
+        {b->F, sizeof *b->F, 9, 9, 1},
+//@endif
+    };
+    sph_cuda_halo(b, halo_in, sizeof halo_in / sizeof *halo_in);
+//@endif
 //@if VISCOSITY
     sph_cuda_zero(b->red + SPH_RED_VISC_RATE, 1);
     /* each thread returns its particle's share of the viscous power: one atomic per block */
-    SPH_FOR_SUM(i, b->n, b->red + SPH_RED_VISC_RATE, {
+    SPH_FOR_SUM(i, b->nown, b->red + SPH_RED_VISC_RATE, {
 //@else
-    SPH_FOR(i, b->n, {
+    SPH_FOR(i, b->nown, {
 //@endif
         const sph_real inv_rho = (sph_real)(1.0 / b->rho0);
         const size_t n = (size_t)b->n, end = i + n * (size_t)b->fb_count[i];
@@ -167,7 +193,7 @@ SPH_FN double @B@_free_acc(const sph_body *b, int i, int k)
 static void @B@_predict(sph_body *b, sph_time dt)
 {
     enum { D = @DIM@ };
-    SPH_FOR(i, b->n, {
+    SPH_FOR(i, b->nown, {
         for (int k = 0; k < D; k++) {
             b->work[i * D + k] = b->v[i * D + k];
             b->u[i * D + k] += 0.5 * dt * b->v[i * D + k];
@@ -188,7 +214,7 @@ static void @B@_update(sph_body *b, sph_time dt)
 {
     enum { D = @DIM@ };
     sph_cuda_zero(b->red + SPH_RED_VMAX2, 3);
-    SPH_FOR_MAX3(i, b->n, b->red + SPH_RED_VMAX2, {
+    SPH_FOR_MAX3(i, b->nown, b->red + SPH_RED_VMAX2, {
 //@if SYMPLECTIC
         const double *vn = b->work, du = 0.5 * dt;
 //@else
@@ -232,7 +258,7 @@ static void @B@_monitor(sph_body *b)
 {
     enum { D = @DIM@ };
     sph_cuda_zero(b->red + SPH_RED_BAD, 4);
-    SPH_FOR_MAX3(i, b->n, b->red + SPH_RED_BAD, {
+    SPH_FOR_MAX3(i, b->nown, b->red + SPH_RED_BAD, {
         double v2 = 0, bad = 0;
         for (int k = 0; k < D; k++) {
             const double u = b->u[i * D + k], v = b->v[i * D + k], a = b->a[i * D + k];
@@ -250,7 +276,7 @@ static void @B@_monitor(sph_body *b)
 //@endif
         return sph_max3{bad, l2 < 1 ? 1 - l2 : 0.0, 0.0}; /* l2 <= 1: 1 - l2 >= 0 */
     });
-    SPH_FOR_SUM(i, b->n, b->red + SPH_RED_ENERGY, {
+    SPH_FOR_SUM(i, b->nown, b->red + SPH_RED_ENERGY, {
         double v2 = 0;
         for (int k = 0; k < D; k++)
             v2 += b->v[i * D + k] * b->v[i * D + k];

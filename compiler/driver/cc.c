@@ -76,18 +76,30 @@ static const char *find_nvcc(char *buf, size_t size)
     return find_on_path("nvcc", buf, size);
 }
 
-/* The MPI compiler wrapper: $MPICC, else mpicc (in buf); NULL after reporting when it is not
+/* An MPI compiler wrapper: $VAR, else `name` (in buf); NULL after reporting when it is not
  * there, so that the user reads what to install rather than execvp's "cannot run". */
-static const char *find_mpicc(char *buf, size_t size)
+static const char *find_mpi_wrapper(const char *var, const char *name, char *buf, size_t size)
 {
-    const char *mpicc = getenv("MPICC");
-    if (!mpicc || !*mpicc)
-        mpicc = "mpicc";
-    if (find_on_path(mpicc, buf, size))
+    const char *wrapper = getenv(var);
+    if (!wrapper || !*wrapper)
+        wrapper = name;
+    if (find_on_path(wrapper, buf, size))
         return buf;
     diag_fatal_noloc("--mpi needs %s (an MPI library: scripts/deps installs Open MPI), which "
-                     "is not on PATH", mpicc);
+                     "is not on PATH", wrapper);
     return NULL;
+}
+
+/* The CPU target's C compiler with MPI (mpicc), and the CUDA target's host compiler (mpicxx,
+ * nvcc's -ccbin: it compiles the host code and links with MPI's libraries). */
+static const char *find_mpicc(char *buf, size_t size)
+{
+    return find_mpi_wrapper("MPICC", "mpicc", buf, size);
+}
+
+static const char *find_mpicxx(char *buf, size_t size)
+{
+    return find_mpi_wrapper("MPICXX", "mpicxx", buf, size);
 }
 
 /* The processes' runtime (runtime/mpi/, sph_mpi_main), in the folder of libsphrt.a. */
@@ -105,7 +117,7 @@ static int mpi_ready(const Model *m, const Options *o, const Paths *paths)
     if (o->emit_only) /* the source alone needs neither MPI nor its runtime */
         return 0;
     char buf[4200];
-    if (!find_mpicc(buf, sizeof buf))
+    if (!(o->target == TARGET_CUDA ? find_mpicxx(buf, sizeof buf) : find_mpicc(buf, sizeof buf)))
         return -1;
     /* built only where cmake found an MPI library when sphc was built */
     snprintf(buf, sizeof buf, "%s/" MPI_RUNTIME, paths->lib);
@@ -135,9 +147,33 @@ static int compile_cuda(const Model *m, const Options *o, const char *src, const
                             "(--cuda-arch to choose)\n", m->name);
     }
     snprintf(arch, sizeof arch, "-arch=%s", a);
-    char *argv[] = {nvcc, "-std=c++20", "--extended-lambda", "-O3", arch,
-                    "-Xcompiler", "-fopenmp,-Wall,-Wextra", (char *)inc, (char *)src, (char *)lib,
-                    "-lgomp", "-lm", "-o", (char *)exe, NULL};
+    char host[4096], mpilib[4200];
+    char *argv[24];
+    int n = 0;
+    argv[n++] = nvcc;
+    if (o->mpi) { /* MPI's C++ wrapper as nvcc's host compiler, and the processes' runtime */
+        find_mpicxx(host, sizeof host);
+        argv[n++] = "-ccbin";
+        argv[n++] = host;
+    }
+    static const char *const flags[] = {"-std=c++20", "--extended-lambda", "-O3", NULL};
+    for (const char *const *f = flags; *f; f++)
+        argv[n++] = (char *)*f;
+    argv[n++] = arch;
+    argv[n++] = "-Xcompiler";
+    argv[n++] = "-fopenmp,-Wall,-Wextra";
+    argv[n++] = (char *)inc;
+    argv[n++] = (char *)src;
+    if (o->mpi) {
+        snprintf(mpilib, sizeof mpilib, "%.*s/" MPI_RUNTIME, (int)(strrchr(lib, '/') - lib), lib);
+        argv[n++] = mpilib;
+    }
+    argv[n++] = (char *)lib;
+    argv[n++] = "-lgomp";
+    argv[n++] = "-lm";
+    argv[n++] = "-o";
+    argv[n++] = (char *)exe;
+    argv[n] = NULL;
     return run_command(argv);
 }
 

@@ -149,13 +149,6 @@ int parse_options(int argc, char **argv, Options *o)
         diag_fatal_noloc("unknown target '%s' (expected cpu or cuda)", target);
         return -1;
     }
-    /* The processes exchange their halos through the CPU runtime's arrays (runtime/mpi/);
-     * the device keeps its own, which nothing exchanges yet. */
-    if (o->mpi && o->target == TARGET_CUDA) {
-        diag_fatal_noloc("--mpi with --target cuda is not supported yet (the CPU target runs on "
-                         "many processes)");
-        return -1;
-    }
     if (o->emit_only && !o->emit_dir) {
         diag_fatal_noloc("--emit-only needs --emit-c DIR");
         return -1;

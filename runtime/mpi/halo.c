@@ -207,6 +207,18 @@ void sph_halo_wait(sph_halo *h, const sph_field *f, int nf)
     }
 }
 
+int sph_halo_exchange_packed(sph_halo *h, const void *out, void *in, size_t bytes)
+{
+    if (reserve(h, bytes))
+        return -1;
+    post_messages(h, bytes);
+    memcpy(h->sbuf, out, (size_t)h->send_start[h->npeers] * bytes);
+    send_messages(h, bytes);
+    MPI_Waitall(2 * h->npeers, h->req, MPI_STATUSES_IGNORE);
+    memcpy(in, h->rbuf, (size_t)h->recv_start[h->npeers] * bytes);
+    return 0;
+}
+
 void sph_halo_begin(sph_halo *h, const double *own, int k)
 {
     const size_t bytes = (size_t)k * sizeof *own;

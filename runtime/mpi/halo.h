@@ -51,6 +51,11 @@ int sph_halo_post(sph_halo *h, const sph_field *f, int nf);
 /* Waits for it and writes the halo's values of the same fields. */
 void sph_halo_wait(sph_halo *h, const sph_field *f, int nf);
 
+/* The exchange of values packed by the caller, `bytes` per particle: out[] in the order of
+ * the send list (send[0 .. send_start[npeers]]), in[] gets one per halo value in the order of
+ * the receive list (recv[...]).  Blocking; 0, or -1 when memory runs out. */
+int sph_halo_exchange_packed(sph_halo *h, const void *out, void *in, size_t bytes);
+
 /* Posts the exchange of k doubles per particle (k <= kmax): own[] holds nown * k values. */
 void sph_halo_begin(sph_halo *h, const double *own, int k);
 /* Waits for it and writes the halo's values into halo[] (nhalo * k values). */

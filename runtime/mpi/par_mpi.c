@@ -203,6 +203,26 @@ static void wait_halo(sph_body *b, const sph_field *f, int nf)
     waited += MPI_Wtime() - t0;
 }
 
+static void halo_lists(const sph_body *b, const int **send, int *nsend, const int **recv,
+                       int *nrecv)
+{
+    const sph_halo *h = b->halo;
+    *send = h ? h->send : NULL, *recv = h ? h->recv : NULL;
+    *nsend = h ? h->send_start[h->npeers] : 0, *nrecv = h ? h->recv_start[h->npeers] : 0;
+}
+
+static void exchange_packed(sph_body *b, const void *out, void *in, size_t bytes)
+{
+    sph_halo *h = b->halo;
+    if (!h)
+        return;
+    const double t0 = MPI_Wtime();
+    if (sph_halo_exchange_packed(h, out, in, bytes))
+        out_of_memory();
+    sent_bytes += (double)h->send_start[h->npeers] * (double)bytes;
+    waited += MPI_Wtime() - t0;
+}
+
 static double bytes_sent(void) { return sent_bytes; }
 static double wait_seconds(void) { return waited; }
 
@@ -216,6 +236,7 @@ int sph_mpi_main(const sph_model *m, int argc, char **argv)
         .sum = par_sum, .min = par_min, .max = par_max, .agree = par_agree, .bcast = par_bcast,
         .allgather = par_allgather, .gather0 = par_gather0, .swap = par_swap,
         .body_ready = body_ready, .body_free = body_free, .post = post, .wait = wait_halo,
+        .halo_lists = halo_lists, .exchange_packed = exchange_packed,
         .bytes_sent = bytes_sent, .wait_seconds = wait_seconds,
     };
     MPI_Comm_rank(comm, &par.rank);

@@ -1,13 +1,19 @@
 # The CUDA target's generated code, checked without a GPU:
-#   -DSPHC= -DMODEL= -DNVCC= -DINCLUDE= -DWORKDIR= [-DDEFINE=NAME]
+#   -DSPHC= -DMODEL= -DNVCC= -DINCLUDE= -DWORKDIR= [-DDEFINE=NAME] [-DMPI=ON]
 # `sphc --target cuda --emit-only` writes model.cu, which nvcc must compile warning-free
 # (-Werror all-warnings; host code -Wall -Wextra) for sm_90 and sm_80, with the macro DEFINE
-# defined when it is given (SPH_CUDA_RECOMPUTE).  A model using what the
+# defined when it is given (SPH_CUDA_RECOMPUTE); with MPI, the program for many processes
+# (sphc --mpi: its halo exchanges staged through the host).  A model using what the
 # target does not run yet must be refused with a clear "does not support yet" error instead.
 get_filename_component(stem ${MODEL} NAME_WE)
 file(REMOVE_RECURSE ${WORKDIR})
 file(MAKE_DIRECTORY ${WORKDIR})
-execute_process(COMMAND ${SPHC} --target cuda --emit-c ${WORKDIR} --emit-only -o ${stem} ${MODEL}
+set(mpi "")
+if(MPI)
+  set(mpi --mpi)
+endif()
+execute_process(COMMAND ${SPHC} --target cuda ${mpi} --emit-c ${WORKDIR} --emit-only -o ${stem}
+                        ${MODEL}
                 RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   if(err MATCHES "not supported by the cuda target yet|which the cuda target does not support yet")

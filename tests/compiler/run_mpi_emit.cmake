@@ -1,6 +1,7 @@
 # run_mpi_emit.cmake — sphc --mpi: the program's main() enters the runtime for many processes
-# (sph_mpi_main), and the same model without --mpi holds nothing of MPI; --mpi with the CUDA
-# target is refused.  Only the source is written, so neither MPI nor its runtime is needed.
+# (sph_mpi_main), and the same model without --mpi holds nothing of MPI; with the CUDA target
+# its passes exchange the halo (sph_cuda_halo).  Only the source is written, so neither MPI
+# nor its runtime is needed.
 #
 #   cmake -DSPHC=sphc -DMODEL=model.sph -DWORKDIR=dir [-DCC=cc -DINCLUDE=runtime]
 #         -P run_mpi_emit.cmake
@@ -35,15 +36,19 @@ foreach(word sph_mpi_main MPI sph_halo)
   endif()
 endforeach()
 
-execute_process(COMMAND ${SPHC} --mpi --target cuda ${MODEL} WORKING_DIRECTORY ${WORKDIR}
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-string(CONCAT expected "--mpi with --target cuda is not supported yet (the CPU target runs on "
-                      "many processes)")
-string(FIND "${err}" "${expected}" at)
-if(rc EQUAL 0 OR at EQUAL -1)
-  message(FATAL_ERROR "sphc --mpi --target cuda: exit ${rc}, stderr '${err}'; expected a "
-                      "non-zero exit and '${expected}'")
+# the CUDA target for many processes: its passes stage the halo through the host
+execute_process(COMMAND ${SPHC} --mpi --target cuda --emit-c ${WORKDIR}/cuda --emit-only ${MODEL}
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "sphc --mpi --target cuda --emit-only failed (${rc}):\n${err}")
 endif()
+file(READ ${WORKDIR}/cuda/${stem}.cu cuda)
+foreach(word "sph_mpi_main(" "sph_cuda_halo(")
+  string(FIND "${cuda}" "${word}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "sphc --mpi --target cuda: no '${word}' in ${WORKDIR}/cuda/${stem}.cu")
+  endif()
+endforeach()
 
 if(CC)
   execute_process(COMMAND ${CC} -std=c11 -O1 -fopenmp -Wall -Wextra -Werror -I${INCLUDE}

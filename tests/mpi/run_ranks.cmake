@@ -1,13 +1,15 @@
 # A model run on 1, 2, 3 and 4 processes gives the serial program's results:
 #   -DSERIAL= -DPROGRAM= (the same model built with sphc --mpi) -DMPIEXEC= -DNPFLAG=
-#   -DMPIFLAGS= (;-list) -DSAME_CSV= -DOUT= -DEND= [-DARGS=...] [-DTOL=...]
+#   -DMPIFLAGS= (;-list) -DSAME_CSV= -DOUT= -DEND= [-DARGS=...] [-DTOL=...] [-DINEXACT=ON]
 # On one process the MPI program is the serial one: every output file the same, byte for
 # byte.  On 2 to 4 the particles are shared out and their sums taken in other orders:
 # energies.csv and every measurement file agree with the serial run within TOL of each
 # column's scale (same_csv.c: a column's largest value over the run, a vector's largest
 # component's; default 2e-9: the files print 10 significant digits, so this is the last digit
 # or two, and what round-off leaves after some thousand steps is below it: 1e-10 to 2e-10 of
-# the tip force of the beam, 0 in its energies' printed digits).
+# the tip force of the beam, 0 in its energies' printed digits).  INEXACT: a program of
+# another target (the CUDA target's, emulated), which sums in its own order on one process
+# too: compared like the others, on 1 to 3 processes.
 include(${CMAKE_CURRENT_LIST_DIR}/../physics/same_outputs.cmake)
 if(NOT TOL)
   set(TOL 2e-9)
@@ -22,16 +24,24 @@ function(run name)
   set(rc_${name} ${rc} PARENT_SCOPE)
 endfunction()
 run(serial ${SERIAL})
-foreach(np 1 2 3 4)
+set(nps 1 2 3 4)
+set(compared_nps 2 3 4)
+if(INEXACT)
+  set(nps 1 2 3)
+  set(compared_nps 1 2 3)
+endif()
+foreach(np ${nps})
   run(np${np} ${MPIEXEC} ${NPFLAG} ${np} ${MPIFLAGS} ${PROGRAM})
   if(NOT rc_np${np} EQUAL rc_serial)
     message(FATAL_ERROR "${np} processes: exit code ${rc_np${np}}, serial ${rc_serial}")
   endif()
 endforeach()
-same_outputs(${OUT}/serial ${OUT}/np1)
-message(STATUS "1 process: ${compared} files the same as the serial run's")
+if(NOT INEXACT)
+  same_outputs(${OUT}/serial ${OUT}/np1)
+  message(STATUS "1 process: ${compared} files the same as the serial run's")
+endif()
 file(GLOB csvs RELATIVE ${OUT}/serial ${OUT}/serial/*.csv)
-foreach(np 2 3 4)
+foreach(np ${compared_nps})
   foreach(f ${csvs})
     execute_process(COMMAND ${SAME_CSV} ${OUT}/serial/${f} ${OUT}/np${np}/${f} ${TOL}
                     RESULT_VARIABLE differ OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -40,6 +50,9 @@ foreach(np 2 3 4)
       message(FATAL_ERROR "${np} processes: ${f} differs from the serial run's\n${out}${err}")
     endif()
   endforeach()
+  if(np EQUAL 1)
+    continue() # (one process writes .vtu files, no pieces)
+  endif()
   file(GLOB pieces ${OUT}/np${np}/particles/*_p*.vtu)
   file(GLOB frames ${OUT}/np${np}/particles/*.pvtu)
   list(LENGTH pieces npieces)

@@ -1,0 +1,27 @@
+# The CUDA target on many processes, checked without a GPU: the model's model.cu for many
+# processes (sphc --mpi --target cuda) compiled by MPI's C++ wrapper with SPH_CUDA_EMULATE
+# (runtime/sph_cuda.h: the device passes run serially on host memory, cudaMemcpy a copy), so
+# that the device's halo exchange (packed on the device, staged through the host) and its
+# host-chosen time steps run as on GPUs; then run_ranks.cmake against the serial CPU program
+# on 1 to 3 processes.
+#   -DSPHC= -DMPICXX= -DMODEL= -DINCLUDE= -DLIBS= (;-list: libsphrt_mpi.a;libsphrt.a) and
+#   run_ranks.cmake's variables but PROGRAM
+get_filename_component(stem ${MODEL} NAME_WE)
+set(work ${OUT}_build)
+file(REMOVE_RECURSE ${work})
+file(MAKE_DIRECTORY ${work})
+execute_process(COMMAND ${SPHC} --mpi --target cuda --emit-c ${work} --emit-only ${MODEL}
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "sphc --mpi --target cuda failed:\n${err}")
+endif()
+set(PROGRAM ${work}/${stem}_emulated)
+execute_process(COMMAND ${MPICXX} -std=c++20 -O2 -DSPH_CUDA_EMULATE -fopenmp -Wall -Wextra
+                        -Werror -I${INCLUDE} -x c++ ${work}/${stem}.cu -x none ${LIBS} -lm
+                        -o ${PROGRAM}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the emulated build of ${stem}.cu for many processes failed:\n${log}\n${err}")
+endif()
+set(INEXACT ON)
+include(${CMAKE_CURRENT_LIST_DIR}/run_ranks.cmake)
