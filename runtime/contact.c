@@ -141,83 +141,33 @@ static int reserve(sph_contact *c, int n)
     return 0;
 }
 
-/* On many processes: the particles of other processes that may touch this one's, appended
- * to the contact set after the own ones (body, position, velocity), as partners whose forces
- * their own processes compute.  Each process sends every other one its particles within the
- * search's reach (largest contact distance + skin) of the box of that process's particles of
- * another body.  The set changes from step to step, so the candidates are built anew. */
+/* On many processes: the particles of other processes that may touch this one's
+ * (sph_contact_partners), appended to the contact set after the own ones, as partners whose
+ * forces their own processes compute.  The set changes from step to step, so the candidates
+ * are built anew. */
 static void add_partners(sph_contact *c, const sph_sim *s)
 {
-    const sph_par *par = s->par;
-    const int D = c->dim, nb = c->nbodies, np = par->size, rec = 1 + 2 * D;
+    const int D = c->dim, nb = c->nbodies, rec = 1 + 2 * D;
     double dcmax = 0;
     for (int k = 0; k < nb * nb; k++)
         dcmax = fmax(dcmax, c->dc[k]);
-    const double reach = dcmax + c->search.skin;
-    double *box = malloc(2 * 3 * (size_t)nb * sizeof *box);          /* this process's */
-    double *boxes = malloc(2 * 3 * (size_t)nb * (size_t)np * sizeof *boxes); /* everyone's */
-    double **out = calloc((size_t)np, sizeof *out);
-    size_t *bytes = calloc(2 * (size_t)np, sizeof *bytes), *got = bytes + np;
-    if (!box || !boxes || !out || !bytes) {
-        sph_error("out of memory for contact between processes");
-        exit(SPH_EXIT_SETUP);
-    }
-    for (int i = 0; i < nb; i++)
-        for (int k = 0; k < 3; k++)
-            box[6 * i + k] = k < D ? INFINITY : 0, box[6 * i + 3 + k] = k < D ? -INFINITY : 0;
-    for (int p = 0; p < c->nown; p++)
-        for (int k = 0; k < D; k++) {
-            double *b = box + 6 * c->body[p], x = c->x[(size_t)p * D + k];
-            b[k] = fmin(b[k], x), b[3 + k] = fmax(b[3 + k], x);
-        }
-    par->allgather(box, boxes, (int)(6 * (size_t)nb * sizeof *box));
-    for (int q = 0; q < np; q++) {
-        out[q] = malloc(((size_t)c->nown * rec + 1) * sizeof **out);
-        if (!out[q]) {
-            sph_error("out of memory for contact between processes");
-            exit(SPH_EXIT_SETUP);
-        }
-        int count = 0;
-        for (int p = 0; q != par->rank && p < c->nown; p++) {
-            const double *x = c->x + (size_t)p * D;
-            int near = 0;
-            for (int j = 0; j < nb && !near; j++) { /* (another body's box of process q) */
-                const double *b = boxes + 6 * ((size_t)q * nb + j);
-                double d2 = 0;
-                for (int k = 0; k < D; k++) {
-                    const double d = fmax(fmax(b[k] - x[k], x[k] - b[3 + k]), 0.0);
-                    d2 += d * d;
-                }
-                near = j != c->body[p] && b[0] <= b[3] && d2 <= reach * reach;
-            }
-            if (!near)
-                continue;
-            double *r = out[q] + (size_t)count++ * rec;
-            r[0] = c->body[p];
-            memcpy(r + 1, x, (size_t)D * sizeof *x);
-            memcpy(r + 1 + D, c->v + (size_t)p * D, (size_t)D * sizeof *x);
-        }
-        bytes[q] = (size_t)count * rec * sizeof **out;
-    }
-    void *in;
-    par->swap((const void *const *)out, bytes, &in, got);
-    size_t total = 0;
-    for (int q = 0; q < np; q++)
-        total += got[q] / (rec * sizeof(double)), free(out[q]);
-    if (reserve(c, c->nown + (int)total)) {
+    double *in;
+    const int total = sph_contact_partners(s->par, D, nb, c->nown, c->body, c->x, c->v,
+                                           dcmax + c->search.skin, &in);
+    if (reserve(c, c->nown + total)) {
         sph_error("out of memory for contact between processes");
         exit(SPH_EXIT_SETUP);
     }
     const double *r = in;
-    for (size_t g = 0; g < total; g++, r += rec) {
-        const size_t at = (size_t)c->nown + g;
+    for (int g = 0; g < total; g++, r += rec) {
+        const size_t at = (size_t)c->nown + (size_t)g;
         c->body[at] = (int)r[0];
         memcpy(c->x + at * D, r + 1, (size_t)D * sizeof *r);
         memcpy(c->v + at * D, r + 1 + D, (size_t)D * sizeof *r);
     }
-    c->n = c->nown + (int)total;
+    c->n = c->nown + total;
     sph_csearch_reset(&c->search, c->n, c->body);
-    free(in), free(box), free(boxes), free(out), free(bytes);
+    free(in);
 }
 
 /* Contact force on particle i (global gi) from j (global gj), contact_law.h. */

@@ -125,6 +125,12 @@ void sph_contact_set(sph_sim *s, double stored, double dissipated, double w2max,
 double sph_contact_level(const sph_sim *s);
 /* The closeness of the closest pair at the last step (the level before the first). */
 double sph_contact_close(const sph_sim *s);
+/* On many processes (contact_partners.c): the particles of other processes within `reach` of
+ * the box of this process's n particles (bodies body[], positions x, velocities v; D values
+ * each) of another body, as records of 1 + 2 D doubles (body, position, velocity) in
+ * *partners (malloc'd; free it); returns how many.  Collective. */
+int sph_contact_partners(const sph_par *par, int D, int nbodies, int n, const int *body,
+                         const double *x, const double *v, double reach, double **partners);
 #ifdef __cplusplus
 }
 #endif

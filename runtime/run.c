@@ -868,18 +868,6 @@ static int refuse_used_folder(const run_state *r)
     return 1;
 }
 
-/* What a run on many processes cannot do yet (docs/mpi.md): 0, or 1 after a message. */
-static int beyond_many(const run_state *r)
-{
-    if (r->sim.par->size == 1)
-        return 0;
-    const char *what = r->m->advance && r->m->contact ? "contact on a device target" : NULL;
-    if (what)
-        sph_error("%s on many processes is not supported yet: run the model on one process "
-                  "(without mpirun, or mpirun -np 1)", what);
-    return what != NULL;
-}
-
 int sph_main(const sph_model *m, int argc, char **argv)
 {
     return sph_main_par(m, argc, argv, &sph_par_one);
@@ -913,7 +901,7 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
     r.t_out = r.opt.t_out > 0 ? r.opt.t_out : m->t_out;
     r.t_frames = r.opt.t_frames > 0 ? r.opt.t_frames : r.t_out;
     r.t_checkpoint = r.opt.t_checkpoint > 0 ? r.opt.t_checkpoint : m->t_checkpoint;
-    if (too_many_outputs(&r) || beyond_many(&r))
+    if (too_many_outputs(&r))
         return SPH_EXIT_OPTIONS;
     if (par->agree(!r.opt.restart && refuse_used_folder(&r)))
         return SPH_EXIT_SETUP;

@@ -14,7 +14,9 @@
  *      stored energy, dissipated power and largest omega^2 summed into c->sum;
  *   4. the contact accelerations added to each body's a.
  * sph_cuda_contact_to_host hands the sums to the host runtime (sph_contact_set), for the
- * time step and the energies. */
+ * time step and the energies.  On many processes (docs/mpi.md) the particles are this
+ * process's own, then the partners other processes send for the step (sph_contact_partners,
+ * through the host), and only the own particles' forces are summed. */
 #ifndef SPH_CUDA_CONTACT_H
 #define SPH_CUDA_CONTACT_H
 
@@ -29,7 +31,9 @@
 
 typedef struct {
     int n, dim, nbodies;
+    int nown, cap;        /* the own particles (first), and the particles the arrays hold */
     int *base;            /* host, nbodies + 1: first global index of each body */
+    int *hbody;           /* host, nown: body of each own particle (many processes) */
     int *body;            /* n: body of each global particle */
     double *mass;         /* nbodies: particle mass of each body */
     sph_pair_law *law;    /* nbodies^2 */
@@ -63,6 +67,54 @@ SPH_HD static inline unsigned sph_contact_bucket(const long long c[3], unsigned 
     return (unsigned)((h ^ (h >> 29)) & mask);
 }
 
+/* Room for n particles in the arrays of the search (buckets: at least 2n, a power of two);
+ * the own particles' bodies and indices are kept. */
+static void sph_cuda_contact_reserve(sph_cuda_contact *c, int n)
+{
+    if (n <= c->cap)
+        return;
+    const int cap = c->cap ? n + n / 2 : n, D = c->dim;
+    int *body = (int *)sph_dev_alloc((size_t)cap * sizeof(int));
+    double *x = (double *)sph_dev_alloc((size_t)cap * D * sizeof(double));
+    double *v = (double *)sph_dev_alloc((size_t)cap * D * sizeof(double));
+    if (c->body) { /* (the own particles' bodies, and their positions of this step) */
+        SPH_CUDA_CHECK(cudaMemcpy(body, c->body, (size_t)c->nown * sizeof(int),
+                                  cudaMemcpyDeviceToDevice));
+        SPH_CUDA_CHECK(cudaMemcpy(x, c->x, (size_t)c->nown * D * sizeof(double),
+                                  cudaMemcpyDeviceToDevice));
+        SPH_CUDA_CHECK(cudaMemcpy(v, c->v, (size_t)c->nown * D * sizeof(double),
+                                  cudaMemcpyDeviceToDevice));
+        for (void *p : {(void *)c->body, (void *)c->x, (void *)c->v, (void *)c->acc,
+                        (void *)c->key, (void *)c->skey, (void *)c->idx, (void *)c->order,
+                        (void *)c->bstart, c->tmp})
+            if (p)
+                SPH_CUDA_CHECK(cudaFree(p));
+    }
+    c->body = body, c->x = x, c->v = v;
+    c->acc = (double *)sph_dev_alloc((size_t)cap * D * sizeof(double));
+    size_t buckets = 1;
+    c->bits = 0;
+    while (buckets < 2 * (size_t)cap)
+        buckets <<= 1, c->bits++;
+    c->mask = (unsigned)(buckets - 1);
+    c->key = (unsigned *)sph_dev_alloc((size_t)cap * sizeof(unsigned));
+    c->skey = (unsigned *)sph_dev_alloc((size_t)cap * sizeof(unsigned));
+    std::vector<int> idx((size_t)cap + 1);
+    for (int g = 0; g < cap; g++)
+        idx[g] = g;
+    c->idx = (int *)sph_dev_copy(idx.data(), (size_t)cap * sizeof(int));
+    c->order = (int *)sph_dev_alloc((size_t)cap * sizeof(int));
+    c->bstart = (int *)sph_dev_alloc(2 * buckets * sizeof(int)); /* bend follows: one memset */
+    c->bend = c->bstart + buckets;
+    c->tmp = NULL, c->tmp_bytes = 0;
+#ifndef SPH_CUDA_EMULATE
+    SPH_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(NULL, c->tmp_bytes, c->key, c->skey, c->idx,
+                                                   c->order, cap, 0, c->bits));
+    c->tmp = sph_dev_alloc(c->tmp_bytes);
+#endif
+    c->cap = cap;
+}
+
 /* The device contact state of scene s: its pair laws, buckets and sums. */
 static void sph_cuda_contact_init(sph_cuda_contact *c, sph_sim *s)
 {
@@ -70,14 +122,14 @@ static void sph_cuda_contact_init(sph_cuda_contact *c, sph_sim *s)
     c->dim = D, c->nbodies = nb;
     c->base = (int *)calloc((size_t)nb + 1, sizeof(int));
     for (int i = 0; i < nb; i++)
-        c->base[i + 1] = c->base[i] + s->bodies[i].n;
-    const int n = c->n = c->base[nb];
-    std::vector<int> body((size_t)n + 1);
+        c->base[i + 1] = c->base[i] + s->bodies[i].nown;
+    const int n = c->n = c->nown = c->base[nb];
+    c->hbody = (int *)malloc(((size_t)n + 1) * sizeof(int));
     std::vector<double> mass((size_t)nb);
     for (int i = 0; i < nb; i++) {
         mass[i] = s->bodies[i].mass;
         for (int p = c->base[i]; p < c->base[i + 1]; p++)
-            body[p] = i;
+            c->hbody[p] = i;
     }
     const sph_pair_law *law = sph_contact_laws(s);
     double dcmax = 0, dxmax = 0;
@@ -95,36 +147,48 @@ static void sph_cuda_contact_init(sph_cuda_contact *c, sph_sim *s)
     const double skin = 0.5 * dxmax;
     c->cell = dcmax + skin;
     c->level = 0.5 * skin;
-    c->body = (int *)sph_dev_copy(body.data(), (size_t)n * sizeof(int));
     c->mass = (double *)sph_dev_copy(mass.data(), (size_t)nb * sizeof(double));
     c->law = (sph_pair_law *)sph_dev_copy(law, (size_t)nb * nb * sizeof *law);
-    c->x = (double *)sph_dev_alloc((size_t)n * D * sizeof(double));
-    c->v = (double *)sph_dev_alloc((size_t)n * D * sizeof(double));
-    c->acc = (double *)sph_dev_alloc((size_t)n * D * sizeof(double));
-    size_t buckets = 1;
-    c->bits = 0;
-    while (buckets < 2 * (size_t)n)
-        buckets <<= 1, c->bits++;
-    c->mask = (unsigned)(buckets - 1);
-    c->key = (unsigned *)sph_dev_alloc((size_t)n * sizeof(unsigned));
-    c->skey = (unsigned *)sph_dev_alloc((size_t)n * sizeof(unsigned));
-    std::vector<int> idx((size_t)n + 1);
-    for (int g = 0; g < n; g++)
-        idx[g] = g;
-    c->idx = (int *)sph_dev_copy(idx.data(), (size_t)n * sizeof(int));
-    c->order = (int *)sph_dev_alloc((size_t)n * sizeof(int));
-    c->bstart = (int *)sph_dev_alloc(2 * buckets * sizeof(int)); /* bend follows: one memset */
-    c->bend = c->bstart + buckets;
-    c->tmp = NULL, c->tmp_bytes = 0;
-#ifndef SPH_CUDA_EMULATE
-    SPH_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(NULL, c->tmp_bytes, c->key, c->skey, c->idx,
-                                                   c->order, n, 0, c->bits));
-    c->tmp = sph_dev_alloc(c->tmp_bytes);
-#endif
+    c->cap = 0;
+    c->body = NULL;
+    sph_cuda_contact_reserve(c, n);
+    SPH_CUDA_CHECK(cudaMemcpy(c->body, c->hbody, (size_t)n * sizeof(int), cudaMemcpyHostToDevice));
     double sum[SPH_NCSUM] = {0};
     sum[SPH_CSUM_CLOSE] = c->level; /* before the first step's pairs: as if touching */
     sum[SPH_CSUM_LEVEL] = c->level;
     c->sum = (double *)sph_dev_copy(sum, sizeof sum);
+}
+
+/* On many processes: the partners of this step from the other processes (through the host),
+ * after the own particles; c->n becomes the own particles and the partners. */
+static void sph_cuda_contact_partners(sph_cuda_contact *c, const sph_par *par)
+{
+    const int D = c->dim, nown = c->nown, rec = 1 + 2 * D;
+    std::vector<double> x((size_t)nown * D + 1), v((size_t)nown * D + 1);
+    SPH_CUDA_CHECK(cudaMemcpy(x.data(), c->x, (size_t)nown * D * sizeof(double),
+                              cudaMemcpyDeviceToHost));
+    SPH_CUDA_CHECK(cudaMemcpy(v.data(), c->v, (size_t)nown * D * sizeof(double),
+                              cudaMemcpyDeviceToHost));
+    double *in;
+    const int total = sph_contact_partners(par, D, c->nbodies, nown, c->hbody, x.data(),
+                                           v.data(), c->cell, &in);
+    sph_cuda_contact_reserve(c, nown + total);
+    std::vector<int> body((size_t)total + 1);
+    std::vector<double> px((size_t)total * D + 1), pv((size_t)total * D + 1);
+    for (int g = 0; g < total; g++) {
+        const double *r = in + (size_t)g * rec;
+        body[g] = (int)r[0];
+        memcpy(&px[(size_t)g * D], r + 1, (size_t)D * sizeof(double));
+        memcpy(&pv[(size_t)g * D], r + 1 + D, (size_t)D * sizeof(double));
+    }
+    free(in);
+    SPH_CUDA_CHECK(cudaMemcpy(c->body + nown, body.data(), (size_t)total * sizeof(int),
+                              cudaMemcpyHostToDevice));
+    SPH_CUDA_CHECK(cudaMemcpy(c->x + (size_t)nown * D, px.data(),
+                              (size_t)total * D * sizeof(double), cudaMemcpyHostToDevice));
+    SPH_CUDA_CHECK(cudaMemcpy(c->v + (size_t)nown * D, pv.data(),
+                              (size_t)total * D * sizeof(double), cudaMemcpyHostToDevice));
+    c->n = nown + total;
 }
 
 /* Step 2: the particles sorted by bucket, and each bucket's range. */
@@ -174,7 +238,7 @@ static void sph_cuda_contact_pairs(sph_cuda_contact *c, sph_time dt)
     const unsigned mask = c->mask;
     double *acc = c->acc, *sum = c->sum;
     sph_cuda_zero(sum, SPH_CSUM_POWER + 1); /* stored, w2, close, power */
-    SPH_FOR(g, c->n, {
+    SPH_FOR(g, c->nown, { /* (the partners' forces are their processes') */
         const int bg = body[g];
         const double *xg = x + (size_t)g * D;
         long long cg[3];
@@ -223,19 +287,23 @@ static void sph_cuda_contact_forces(sph_cuda_contact *c, sph_body *const *dev, s
     for (int i = 0; i < c->nbodies; i++) { /* step 1 */
         const sph_body *b = dev[i];
         const size_t base = (size_t)c->base[i] * D;
-        SPH_FOR(p, b->n, {
+        SPH_FOR(p, b->nown, {
             for (int k = 0; k < D; k++) {
                 x[base + (size_t)p * D + k] = b->X[(size_t)p * D + k] + b->u[(size_t)p * D + k];
                 v[base + (size_t)p * D + k] = b->v[(size_t)p * D + k];
             }
         });
     }
+    if (dev[0]->par && dev[0]->par->size > 1) {
+        sph_cuda_contact_partners(c, dev[0]->par);
+        x = c->x, v = c->v, acc = c->acc; /* (the arrays may have grown) */
+    }
     sph_cuda_contact_sort(c);
     sph_cuda_contact_pairs(c, dt);
     for (int i = 0; i < c->nbodies; i++) { /* step 4 */
         const sph_body *b = dev[i];
         const size_t base = (size_t)c->base[i] * D;
-        SPH_FOR(p, b->n, {
+        SPH_FOR(p, b->nown, {
             for (int k = 0; k < D; k++)
                 b->a[(size_t)p * D + k] += acc[base + (size_t)p * D + k];
         });
@@ -266,6 +334,11 @@ static void sph_cuda_contact_to_host(const sph_cuda_contact *c, sph_sim *s)
     double sum[SPH_NCSUM];
     SPH_CUDA_CHECK(cudaMemcpy(sum, c->sum, sizeof sum, cudaMemcpyDeviceToHost));
     sph_cuda_profile_collect(); /* (the host has waited) */
+    if (s->par->size > 1) { /* the time step's: over all processes (energies: summed at outputs) */
+        double most[2] = {sum[SPH_CSUM_W2], sum[SPH_CSUM_CLOSE]};
+        s->par->max(most, 2);
+        sum[SPH_CSUM_W2] = most[0], sum[SPH_CSUM_CLOSE] = most[1];
+    }
     sph_contact_set(s, sum[SPH_CSUM_STORED], sum[SPH_CSUM_DISSIPATED], sum[SPH_CSUM_W2],
                     sum[SPH_CSUM_CLOSE]);
 }
