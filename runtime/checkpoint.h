@@ -19,10 +19,12 @@ int sph_ckpt_create(sph_ckpt_writer *w, const char *path);
 void sph_ckpt_put(sph_ckpt_writer *w, const char *name, const void *data, size_t bytes);
 int sph_ckpt_commit(sph_ckpt_writer *w);
 
-/* Reading: the whole file, checked (format, machine, complete); -1 after reporting. */
+/* Reading: the whole file, checked (format, machine, complete); -1 after reporting.  The file
+ * is mapped, not copied: the processes of a run on many processes that read the same
+ * checkpoint on one machine share its pages (each takes only its own particles' records). */
 typedef struct {
     const char *path;
-    unsigned char *buf;
+    const unsigned char *buf;
     size_t len;
 } sph_ckpt;
 int sph_ckpt_read(sph_ckpt *c, const char *path);
