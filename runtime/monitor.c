@@ -78,7 +78,7 @@ static int fastest(const sph_body *b, double *speed)
 }
 
 /* "step S, t = T s, body 'B', particle P (reference position ...)" at the start of msg. */
-static int where(char *msg, size_t len, const sph_sim *s, const sph_body *b, int particle)
+int sph_monitor_where(char *msg, size_t len, const sph_sim *s, const sph_body *b, int particle)
 {
     const double *X = b->X + (size_t)particle * b->dim;
     char id[48]; /* on many processes the global id (partition.h), the same on any number */
@@ -93,7 +93,7 @@ static int where(char *msg, size_t len, const sph_sim *s, const sph_body *b, int
 
 /* On many processes: the lowest process where `found`, whose msg every process then gets;
  * 1 when there is one.  On one process: found. */
-static int shared(const sph_sim *s, int found, char *msg, size_t len)
+int sph_monitor_share(const sph_sim *s, int found, char *msg, size_t len)
 {
     const sph_par *par = s->par;
     if (par->size == 1)
@@ -113,7 +113,7 @@ static int shared(const sph_sim *s, int found, char *msg, size_t len)
 /* A finding as msg: where, what, and its value. */
 static void report(char *msg, size_t len, const sph_sim *s, const sph_body *b, const finding *f)
 {
-    const int n = where(msg, len, s, b, f->particle);
+    const int n = sph_monitor_where(msg, len, s, b, f->particle);
     if (n >= 0 && (size_t)n < len)
         snprintf(msg + n, len - (size_t)n, ": %s (value %g)", f->what,
                  isnan(f->value) ? fabs(f->value) : f->value); /* "nan", not "-nan" */
@@ -127,7 +127,7 @@ int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len)
         if ((found = scan_body(&s->bodies[ib], &f)))
             report(msg, len, s, &s->bodies[ib], &f);
     }
-    if (shared(s, found, msg, len))
+    if (sph_monitor_share(s, found, msg, len))
         return 1;
     double e_total = 0, e_most = -1, *e = calloc((size_t)s->nbodies + 1, sizeof *e);
     int most = 0;
@@ -153,14 +153,14 @@ int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len)
         const int i = fastest(b, &speed);
         top = speed;
         s->par->max(&top, 1);
-        int n = where(msg, len, s, b, i);
+        int n = sph_monitor_where(msg, len, s, b, i);
         if (n >= 0 && (size_t)n < len)
             snprintf(msg + n, len - (size_t)n,
                      ": total energy %g grew more than a millionfold since the last check (%g): "
                      "energy runaway (value: speed %g of the fastest particle of the body with "
                      "the most energy)",
                      e_total, mon->e_ref, speed);
-        shared(s, speed == top, msg, len);
+        sph_monitor_share(s, speed == top, msg, len);
         return 1;
     }
     if (e_total > mon->e_ref)
@@ -177,19 +177,35 @@ int sph_monitor_finite(const sph_sim *s, char *msg, size_t len)
             if ((found = not_finite(&s->bodies[ib], i, &f)))
                 report(msg, len, s, &s->bodies[ib], &f);
         }
-    return shared(s, found, msg, len);
+    return sph_monitor_share(s, found, msg, len);
 }
 
 int sph_monitor_glance(sph_monitor *mon, const sph_sim *s, const sph_monitor_sums *sums,
                        double *stretch)
 {
-    double e_total = 0, l2 = 1.0;
+    double e_total = 0, l2 = 1.0, most[2] = {0, -1.0}; /* (a check failed; -stretch^2) */
     for (int ib = 0; ib < s->nbodies; ib++) {
-        if (sums[ib].bad)
-            return 1;
+        most[0] = fmax(most[0], sums[ib].bad);
         e_total += sums[ib].energy;
         l2 = fmin(l2, sums[ib].stretch2);
     }
+    if (s->par->size > 1) { /* (every process's sums; the energy body by body, in order) */
+        most[1] = -l2;
+        s->par->max(most, 2);
+        l2 = -most[1];
+        double *e = malloc(((size_t)s->nbodies + 1) * sizeof *e);
+        for (int ib = 0; e && ib < s->nbodies; ib++)
+            e[ib] = sums[ib].energy;
+        if (e) {
+            s->par->sum(e, s->nbodies);
+            e_total = 0;
+            for (int ib = 0; ib < s->nbodies; ib++)
+                e_total += e[ib];
+        }
+        free(e);
+    }
+    if (most[0] > 0)
+        return 1;
     if (!isfinite(e_total) || (mon->e_ref > 0 && e_total > 1e6 * mon->e_ref))
         return 1;
     if (e_total > mon->e_ref)

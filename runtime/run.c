@@ -610,13 +610,6 @@ static int glance(run_state *r)
     sph_monitor_sums *sums = calloc((size_t)r->sim.nbodies, sizeof *sums);
     double stretch = 1.0;
     r->m->monitor(&r->sim, sums);
-    const sph_par *par = r->sim.par;
-    for (int i = 0; i < r->sim.nbodies && par->size > 1; i++) { /* (all processes' sums) */
-        double most[2] = {sums[i].bad, -sums[i].stretch2}, energy = sums[i].energy;
-        par->max(most, 2);
-        par->sum(&energy, 1);
-        sums[i].bad = most[0] > 0, sums[i].stretch2 = -most[1], sums[i].energy = energy;
-    }
     const int look = sph_monitor_glance(&r->mon, &r->sim, sums, &stretch);
     free(sums);
     if (!look)
@@ -670,10 +663,8 @@ static void dt_collapse_report(run_state *r, double dt, double floor_dt)
                 lowest = own, body = ib, particle = i, by_speed = dtv < dta, value = what;
         }
     }
-    /* on many processes: the process whose particle is lowest names it */
-    double least = lowest;
+    double least = lowest; /* (on many processes: the process whose particle is lowest) */
     s->par->min(&least, 1);
-    const int mine = lowest == least;
     const double contact = sph_contact_dt(s, dt);
     if (contact < least) { /* the stiffest contact between bodies set it */
         snprintf(r->unstable, sizeof r->unstable,
@@ -683,8 +674,6 @@ static void dt_collapse_report(run_state *r, double dt, double floor_dt)
                  s->step, s->t, dt, floor_dt, contact);
         return;
     }
-    const sph_body *b = &s->bodies[body];
-    const double *X = b->X + (size_t)particle * b->dim;
     char crushed[96] = "";
     if (s->dt_factor < 1) /* the bound followed a compression: factor lambda / lambda_on */
         snprintf(crushed, sizeof crushed, "; compressed to a principal stretch of %.3g",
@@ -695,21 +684,13 @@ static void dt_collapse_report(run_state *r, double dt, double floor_dt)
     else
         snprintf(what, sizeof what, "time step collapsed to %g s, below dtmin = %g s", dt,
                  floor_dt);
-    char id[48];
-    if (b->gid)
-        snprintf(id, sizeof id, "global id %lld", (long long)b->gid[particle]);
-    else
-        snprintf(id, sizeof id, "%d", particle);
-    snprintf(r->unstable, sizeof r->unstable,
-             "step %ld, t = %.6g s, body '%s', particle %s (reference position x = %g, %s = %g): "
-             "%s (%s %g %s%s)",
-             s->step, s->t, b->desc->name, id, X[0], b->dim == 2 ? "z" : "y", X[1], what,
-             by_speed ? "speed" : "acceleration", value, by_speed ? "m/s" : "m/s^2", crushed);
-    if (s->par->size == 1)
-        return;
-    double first = mine ? s->par->rank : s->par->size;
-    s->par->min(&first, 1);
-    s->par->bcast(r->unstable, sizeof r->unstable, first < s->par->size ? (int)first : 0);
+    char *msg = r->unstable;
+    const size_t len = sizeof r->unstable;
+    const int n = sph_monitor_where(msg, len, s, &s->bodies[body], particle);
+    if (n >= 0 && (size_t)n < len)
+        snprintf(msg + n, len - (size_t)n, ": %s (%s %g %s%s)", what,
+                 by_speed ? "speed" : "acceleration", value, by_speed ? "m/s" : "m/s^2", crushed);
+    sph_monitor_share(s, lowest == least, msg, len);
 }
 
 /* Runs until t_end or instability; returns 0, or 1 when the monitor stopped it. */
