@@ -10,6 +10,52 @@
  * (SPH_VECTOR, rows and columns padded with zeros to SPH_ROW(D) entries): a pair's outer
  * product is D vector multiply-adds.  Written entry by entry, the compiler keeps every entry
  * scalar, and the 3D plate's step took 1.7 times as long. */
+//@if MPI
+/* On many processes, after the pass over the half lists: each own particle's pairs with the
+ * halo, i's share only (the other process computes j's); nothing where there is no halo. */
+static void @B@_gradient_halo_pairs(sph_body *b)
+{
+    enum { D = @DIM@, R = SPH_ROW(D) };
+    SPH_VECTOR(vec, R);
+    const int *restrict xs = b->xb_start, *restrict xb = b->xb, *restrict xk = b->xb_k;
+    if (!xs)
+        return;
+    const vec *restrict wtab = (const vec *)b->wtab;
+    const double *restrict u = b->u;
+    vec *restrict A = (vec *)b->A;
+//@if FRACTURE
+    const double *restrict sf = b->s;
+    const sph_real *restrict ltab = b->ltab;
+    double *restrict lap = b->lap;
+//@endif
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < b->nown; i++) {
+        if (xs[i] == xs[i + 1])
+            continue;
+        vec Ai[D];
+        for (int r = 0; r < D; r++)
+            Ai[r] = (vec){0};
+//@if FRACTURE
+        double lapi = 0;
+//@endif
+        for (int p = xs[i]; p < xs[i + 1]; p++) {
+            const int j = xb[p];
+            const vec w = wtab[xk[p]];
+//@if FRACTURE
+            lapi += ltab[xk[p]] * (sf[i] - sf[j]);
+//@endif
+            for (int r = 0; r < D; r++)
+                Ai[r] += (sph_real)(u[j * D + r] - u[i * D + r]) * w;
+        }
+        for (int r = 0; r < D; r++)
+            A[(size_t)i * D + r] += Ai[r];
+//@if FRACTURE
+        lap[i] += lapi;
+//@endif
+    }
+}
+
+//@endif
 static void @B@_gradient_pass(sph_body *b)
 {
     enum { D = @DIM@, R = SPH_ROW(D) };
@@ -74,28 +120,8 @@ static void @B@_gradient_pass(sph_body *b)
             }
     }
 //@if MPI
-    /* the pairs with the halo: i's share only (the other process computes j's) */
     b->par->wait(b, halo_in, nhalo_in);
-    const int *restrict xs = b->xb_start, *restrict xb = b->xb, *restrict xk = b->xb_k;
-#pragma omp parallel for schedule(static) if (xs)
-    for (int i = 0; i < (xs ? b->nown : 0); i++) {
-        if (xs[i] == xs[i + 1])
-            continue;
-        vec Ai[D];
-        for (int r = 0; r < D; r++)
-            Ai[r] = (vec){0};
-        for (int p = xs[i]; p < xs[i + 1]; p++) {
-            const int j = xb[p];
-            const vec w = wtab[xk[p]];
-//@if FRACTURE
-            lap[i] += ltab[xk[p]] * (sf[i] - sf[j]);
-//@endif
-            for (int r = 0; r < D; r++)
-                Ai[r] += (sph_real)(u[j * D + r] - u[i * D + r]) * w;
-        }
-        for (int r = 0; r < D; r++)
-            A[(size_t)i * D + r] += Ai[r];
-    }
+    @B@_gradient_halo_pairs(b);
 //@endif
 }
 
@@ -124,10 +150,10 @@ static void @B@_stress_pass(sph_body *b)
  * plus artificial viscosity (eq. 57-60) symmetrised the same way.  Each pair force is added
  * to i and subtracted from j, so linear momentum is conserved to round-off.
  * The pairs p0 .. p1 - 1 of particle i (neighbour hb[p], table entry hk[p]): their forces on
- * i into *force (a pointer, not a returned vector: that would change the ABI), and with `both` (the half lists, a pair visited once) each pair's force on
- * j is subtracted from acc; without (pairs with the halo of a run on many processes) only i's
- * share is computed, the other process computing j's.  *power gets the pairs' f_visc . (v_i -
- * v_j), half of it without `both`. */
+ * i into *force (a pointer: a returned vector would change the ABI), and with `both` (the
+ * half lists, each pair visited once) each pair's force on j subtracted from acc; without
+ * (pairs with the halo of a run on many processes) only i's share, the other process
+ * computing j's.  *power gets the pairs' f_visc . (v_i - v_j), half of it without `both`. */
 SPH_VECTOR(@B@_vec, SPH_ROW(@DIM@));
 static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
                                       const int *restrict hb, const int *restrict hk, int both,
@@ -202,6 +228,34 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
     *force = fi;
 }
 
+//@if MPI
+/* On many processes, after the half lists: each own particle's pairs with the halo, i's
+ * share only, in the stripes of i (the viscous power too); nothing where there is no halo. */
+static void @B@_momentum_halo_pairs(sph_body *b)
+{
+    enum { D = @DIM@ };
+    typedef @B@_vec vec;
+    const int *restrict xs = b->xb_start, *restrict xb = b->xb, *restrict xk = b->xb_k;
+    if (!xs)
+        return;
+    double *restrict acc = b->a;
+#pragma omp parallel for schedule(static)
+    for (int s = 0; s < b->nstripes; s++)
+        for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
+            if (xs[i] == xs[i + 1])
+                continue;
+            sph_real pv;
+            vec fi;
+            @B@_momentum_pairs(b, i, xs[i], xs[i + 1], xb, xk, 0, acc, &fi, &pv);
+            for (int r = 0; r < D; r++)
+                acc[i * D + r] += fi[r];
+//@if VISCOSITY
+            b->stripe_sum[s] += pv;
+//@endif
+        }
+}
+
+//@endif
 static void @B@_momentum_pass(sph_body *b)
 {
     enum { D = @DIM@ };
@@ -254,23 +308,8 @@ static void @B@_momentum_pass(sph_body *b)
         }
     }
 //@if MPI
-    /* the pairs with the halo: i's share only, in the stripes of i (the power too) */
     b->par->wait(b, halo_in, nhalo_in);
-    const int *restrict xs = b->xb_start, *restrict xb = b->xb, *restrict xk = b->xb_k;
-#pragma omp parallel for schedule(static) if (xs)
-    for (int s = 0; s < (xs ? b->nstripes : 0); s++)
-        for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
-            if (xs[i] == xs[i + 1])
-                continue;
-            sph_real pv;
-            vec fi;
-            @B@_momentum_pairs(b, i, xs[i], xs[i + 1], xb, xk, 0, acc, &fi, &pv);
-            for (int r = 0; r < D; r++)
-                acc[i * D + r] += fi[r];
-//@if VISCOSITY
-            b->stripe_sum[s] += pv;
-//@endif
-        }
+    @B@_momentum_halo_pairs(b);
 //@endif
 //@if VISCOSITY
     double visc_power = 0; /* the viscous work rate, in stripe order (any number of threads) */
