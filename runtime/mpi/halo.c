@@ -133,16 +133,6 @@ int sph_halo_plan_ids(sph_halo *h, int nown, const int64_t *own_id, int nhalo,
     return 0;
 }
 
-int sph_halo_plan(sph_halo *h, const sph_rcb_local_set *s, int kmax, MPI_Comm comm)
-{
-    if (sph_halo_plan_ids(h, s->nown, s->own_id, s->nhalo, s->halo_id, s->halo_part, comm))
-        return -1;
-    if (reserve(h, (size_t)kmax * sizeof(double)) == 0)
-        return 0;
-    fprintf(stderr, "error: out of memory for a halo\n");
-    return -1;
-}
-
 /* Receives posted, then each peer's values packed and sent; `bytes` per particle. */
 static void post_messages(sph_halo *h, size_t bytes)
 {
@@ -217,24 +207,6 @@ int sph_halo_exchange_packed(sph_halo *h, const void *out, void *in, size_t byte
     MPI_Waitall(2 * h->npeers, h->req, MPI_STATUSES_IGNORE);
     memcpy(in, h->rbuf, (size_t)h->recv_start[h->npeers] * bytes);
     return 0;
-}
-
-void sph_halo_begin(sph_halo *h, const double *own, int k)
-{
-    const size_t bytes = (size_t)k * sizeof *own;
-    post_messages(h, bytes);
-    const int nsend = h->send_start[h->npeers];
-    for (int i = 0; i < nsend; i++)
-        memcpy(h->sbuf + (size_t)i * bytes, own + (size_t)h->send[i] * k, bytes);
-    send_messages(h, bytes);
-}
-
-void sph_halo_end(sph_halo *h, double *halo, int k)
-{
-    const size_t bytes = (size_t)k * sizeof *halo;
-    MPI_Waitall(2 * h->npeers, h->req, MPI_STATUSES_IGNORE);
-    for (int i = 0; i < h->recv_start[h->npeers]; i++)
-        memcpy(halo + (size_t)h->recv[i] * k, h->rbuf + (size_t)i * bytes, bytes);
 }
 
 void sph_halo_free(sph_halo *h)

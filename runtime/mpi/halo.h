@@ -11,9 +11,8 @@
  * non-blocking messages: a post starts the exchange, work on the particles that need no halo
  * can go on, a wait ends it and puts the halo's values in place.
  *
- * Two forms of the values: k doubles per particle in separate arrays of own and halo
- * particles (sph_halo_begin/end), or any fields of a body's arrays, which hold the own
- * particles first and the halo after them (sph_halo_post/wait, sph_field of sphrt.h). */
+ * The values are fields of arrays that hold the own particles first and the halo after them
+ * (a body's: sph_field of sphrt.h), or packed by the caller (a device target's). */
 #ifndef SPH_MPI_HALO_H
 #define SPH_MPI_HALO_H
 
@@ -42,8 +41,6 @@ typedef struct {
  * for that this part does not own: the parts disagree; or memory ran out). */
 int sph_halo_plan_ids(sph_halo *h, int nown, const int64_t *own_id, int nhalo,
                       const int64_t *halo_id, const int *halo_part, MPI_Comm comm);
-/* The same for a part's set s (sph_rcb_local), for up to kmax doubles per particle. */
-int sph_halo_plan(sph_halo *h, const sph_rcb_local_set *s, int kmax, MPI_Comm comm);
 
 /* Posts the exchange of nf fields; own particle i at f->base + i size, halo particle k at
  * f->base + (nown + k) size.  0, or -1 when memory for the buffers runs out. */
@@ -56,10 +53,6 @@ void sph_halo_wait(sph_halo *h, const sph_field *f, int nf);
  * the receive list (recv[...]).  Blocking; 0, or -1 when memory runs out. */
 int sph_halo_exchange_packed(sph_halo *h, const void *out, void *in, size_t bytes);
 
-/* Posts the exchange of k doubles per particle (k <= kmax): own[] holds nown * k values. */
-void sph_halo_begin(sph_halo *h, const double *own, int k);
-/* Waits for it and writes the halo's values into halo[] (nhalo * k values). */
-void sph_halo_end(sph_halo *h, double *halo, int k);
 void sph_halo_free(sph_halo *h);
 
 #endif
