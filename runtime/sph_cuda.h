@@ -577,6 +577,10 @@ static inline sph_cuda_halo_lists *sph_cuda_halo_prepare(sph_body *b, int width)
         x->recv = (int *)sph_dev_copy(recv, (size_t)nrecv * sizeof(int));
         b->halo_dev = x; /* (host memory: read on the host only) */
     }
+    if (x->out) { /* (a wider exchange than the ones before) */
+        SPH_CUDA_CHECK(cudaFree(x->out));
+        SPH_CUDA_CHECK(cudaFree(x->in));
+    }
     x->width = width;
     x->out = (double *)sph_dev_alloc(((size_t)nsend * width + 1) * sizeof(double));
     x->in = (double *)sph_dev_alloc(((size_t)nrecv * width + 1) * sizeof(double));
