@@ -367,10 +367,14 @@ static void half_lists(sph_body *b)
     /* The passes use only the half lists; the full ones are not kept. */
     free(b->nb_start), free(b->nb), free(b->nb_k);
     b->nb_start = b->nb = b->nb_k = NULL;
-    /* Stripes of at least `reach` particles; fewer than 4 stripes: one, run serially. */
+    /* Stripes of at least `reach` particles; fewer than 4 stripes: one, run serially.  A
+     * multiple of 4 stripes (of 8 from 8 on), so that each colour's split evenly among 2
+     * threads (and 4), which a pass of few stripes feels: with 27 stripes, one of two threads
+     * idled through a seventh of the odd colour.  The count depends on the body alone, never
+     * on the threads: the order of the sums, and so their bits, are the same on any number
+     * of threads. */
     int ns = n / reach;
-    if (ns < 4)
-        ns = 1;
+    ns = ns < 4 ? 1 : ns < 8 ? 4 : ns / 8 * 8;
     b->nstripes = ns;
     b->stripe = zalloc((size_t)ns + 1, sizeof(int));
     b->stripe_sum = zalloc((size_t)ns, sizeof(double));

@@ -31,15 +31,13 @@
 
 #include <math.h>
 
-#include "sphrt.h" /* SPH_HD: these run on the device too (CUDA target) */
+#include "sphrt.h" /* SPH_HD: these run on the device too (CUDA target); sph_max, sph_min */
 
 /* Off-diagonal entries at or below this (relative to the largest entry) count as zero. */
 #define SPH_EIG_TOL 1e-18
 /* Upper bound on the Jacobi sweeps (never reached in practice: quadratic convergence). */
 #define SPH_EIG_MAX_SWEEPS 32
 
-SPH_HD static inline double sph_max(double a, double b) { return a > b ? a : b; }
-SPH_HD static inline double sph_min(double a, double b) { return a < b ? a : b; }
 SPH_HD static inline double sph_absmax(double a, double b) { return sph_max(fabs(a), fabs(b)); }
 
 /* (a + b) / 2, exactly a when a == b (also for subnormals) and free of overflow. */

@@ -682,6 +682,14 @@ void sph_contact_free(sph_sim *s);
 /* Component k (0..dim-1) of a compact vector -> 3D axis (0 = x, 1 = y, 2 = z). */
 SPH_HD static inline int sph_axis(int dim, int k) { return dim == 2 ? 2 * k : k; }
 
+/* max and min of the model language (material laws, expressions): the larger or smaller of a
+ * and b, and not a number where either is, so that a state gone wrong stays visible to the
+ * stability checks.  Comparisons the compiler makes branch-free: C's fmax and fmin return the
+ * other operand of a NaN, and on x86-64 they are library calls, which cost a fracture law's
+ * stress pass a tenth of its time. */
+SPH_HD static inline double sph_max(double a, double b) { return a > b || a != a ? a : b; }
+SPH_HD static inline double sph_min(double a, double b) { return a < b || a != a ? a : b; }
+
 /* ------------------------------------------------------------------ the time step
  * One source for the host (sim.c, run.c) and a device target's own choice (sph_cuda.h). */
 
@@ -756,6 +764,31 @@ SPH_HD static inline double sph_det3(const double F[9])
            F[2] * sph_cofactor(F, 0, 2);
 }
 
+/* cos(acos(r)/3 + 2 pi/3) for r in [-1, 1]: the smallest root t of 4 t^3 - 3 t = r, in
+ * [-1, -1/2].  As a function of v = sqrt(1 - r) in [0, sqrt 2] it is smooth at both ends (at
+ * r = 1 the root is double and t = -1/2 - v/sqrt 6 + ...), so a polynomial of degree 13 in v
+ * (Chebyshev interpolation, in powers of v) gives it to 6e-13, for a square root and 13
+ * multiply-adds where acos and cos took a tenth of a 3D J2 step. */
+SPH_HD static inline double sph_cubic_smallest_root(double r)
+{
+    const double v = sqrt(1.0 - r);
+    double t = -5.0499436039345169e-07; /* Horner, from the highest power (no table: device code too) */
+    t = t * v + 5.8193484437651875e-06;
+    t = t * v + -3.1639447787630489e-05;
+    t = t * v + 0.00010999046411598091;
+    t = t * v + -0.00028284931836711972;
+    t = t * v + 0.00059839020369508908;
+    t = t * v + -0.0011417008712306207;
+    t = t * v + 0.002119189610894948;
+    t = t * v + -0.0040388736219674473;
+    t = t * v + 0.0082298344043034172;
+    t = t * v + -0.018900321412135129;
+    t = t * v + 0.05555555224484722;
+    t = t * v + -0.40824829039446131;
+    t = t * v + -0.50000000000023759;
+    return t;
+}
+
 /* The square of the smallest principal stretch of F: the smallest eigenvalue of C = F^T F.
  * In 2D (plane strain, F_yy = 1) the in-plane pair in closed form, with the out-of-plane 1;
  * in 3D the trigonometric solution of the characteristic cubic, to about 1e-9 relative (a few
@@ -783,7 +816,7 @@ SPH_HD static inline double sph_stretch2_min(const double F[9], int dim)
     double r = 0.5 * (b0 * (b1 * b2 - b12 * b12) - b01 * (b01 * b2 - b12 * b02) +
                       b02 * (b01 * b12 - b1 * b02));
     r = r < -1.0 ? -1.0 : r > 1.0 ? 1.0 : r;
-    return q + 2.0 * p * cos(acos(r) / 3.0 + 2.0943951023931957); /* + 2 pi / 3 */
+    return q + 2.0 * p * sph_cubic_smallest_root(r); /* cos(acos(r) / 3 + 2 pi / 3) */
 }
 
 /* C = A B */

@@ -197,13 +197,16 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
         sph_real vw = 0;
         for (int r = 0; r < D; r++)
             vw += (sph_real)(v[i * D + r] - v[j * D + r]) * fv[r];
-        const sph_real G = gtab[k] * (sph_real)0.5 * vw;
-        sph_real pi = (sph_real)(-@BETA1@ * @C0@) * G; /* eq. 58, times rho0 */
+        /* g = 2 G, and hpi = pi / 2 of eq. 58 (times rho0): pi = -beta1 c0 G + beta2 min(G, 0)^2,
+         * the constant factors folded, so that the pair's chain of products is short */
+        const sph_real g = gtab[k] * vw;
 //@if BETA2
-        const sph_real Gc = G < 0 ? G : 0; /* min(G, 0): beta2 acts on approach */
-        pi += (sph_real)@BETA2@ * Gc * Gc;
+        const sph_real gc = g < 0 ? g : 0; /* beta2 acts on approach */
+        const sph_real hpi = g * (sph_real)(-0.25 * @BETA1@ * @C0@) +
+                             gc * gc * (sph_real)(0.125 * @BETA2@);
+//@else
+        const sph_real hpi = g * (sph_real)(-0.25 * @BETA1@ * @C0@);
 //@endif
-        const sph_real hpi = (sph_real)0.5 * pi;
         f -= hpi * fv;
         pv -= hpi * vw;
 //@endif

@@ -51,7 +51,7 @@ SPH_FN void @B@_particle_stress(sph_body *b, int i, const double *A)
             F[k] = k % 4 == 0;
     double ep;
     @B@_material(F, b->s[i], S, &e, &ep);
-    b->H[i] = fmax(b->H[i], ep);
+    b->H[i] = sph_max(b->H[i], ep);
     /* eq. 61 without its damping term: s'' + gamma s' = c^2/(2 eps0) (2 eps0 lap s +
      * (1 - s)/(2 eps0) - 2 s H/Gc), c = c0; gamma s' is integrated by the update */
     b->sdd[i] = @PF_A@ * (2 * @EPS0@ * b->lap[i] + (1 - b->s[i]) * (0.5 / @EPS0@) -

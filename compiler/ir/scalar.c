@@ -363,8 +363,8 @@ static void emit_node(const SGraph *g, int id, FILE *out)
     case SN_NEG: fputs("-", out); sg_ref(g, s->a, out); return;
     case SN_NOT: fputs("!", out); sg_ref(g, s->a, out); return;
     case SN_POW: fputs("pow(", out); break;
-    case SN_MIN: fputs("fmin(", out); break;
-    case SN_MAX: fputs("fmax(", out); break;
+    case SN_MIN: fputs("sph_min(", out); break;
+    case SN_MAX: fputs("sph_max(", out); break;
     case SN_CALL:
         fprintf(out, "%s(", BUILTIN_FUNCTION[s->fn].c);
         arg_ref(g, s->a, out);

@@ -11,8 +11,8 @@ double arith_binary(ArithOp op, double x, double y)
     case AR_MUL: return x * y;
     case AR_DIV: return x / y;
     case AR_POW: return pow(x, y);
-    case AR_MIN: return fmin(x, y);
-    case AR_MAX: return fmax(x, y);
+    case AR_MIN: return x < y || isnan(x) ? x : y; /* NaN wins, as in the programs (sph_min) */
+    case AR_MAX: return x > y || isnan(x) ? x : y;
     case AR_LT: return x < y;
     case AR_LE: return x <= y;
     case AR_GT: return x > y;

@@ -40,8 +40,8 @@ typedef enum {
     X(exp,  1, BF_CALL,  "exp",   exp(a[0]))                                       \
     X(abs,  1, BF_CALL,  "fabs",  fabs(a[0]))                                      \
     X(pow,  2, BF_POW,   "pow",   arith_binary(AR_POW, a[0], a[1]))                \
-    X(min,  2, BF_MIN,   "fmin",  arith_binary(AR_MIN, a[0], a[1]))                \
-    X(max,  2, BF_MAX,   "fmax",  arith_binary(AR_MAX, a[0], a[1]))                \
+    X(min,  2, BF_MIN,   "sph_min", arith_binary(AR_MIN, a[0], a[1]))                \
+    X(max,  2, BF_MAX,   "sph_max", arith_binary(AR_MAX, a[0], a[1]))                \
     X(if,   3, BF_IF,    NULL,    a[0] != 0.0 ? a[1] : a[2])
 
 /* Their indices: BI_sin, BI_cos, ... */
