@@ -6,23 +6,75 @@
  * particle loops (stress, update) give it, so what one pass writes is in the cache of the
  * thread that reads it next (docs/architecture.md: with dynamic scheduling a step of crack
  * branching took 1.8 times as long on two threads).
- * The pair loops hold a row of A, a column of Q or Cv and a table entry in one short vector
+ * The pair loops hold a table entry, a column of Q or Cv, and A's rows in short vectors
  * (SPH_VECTOR, rows and columns padded with zeros to SPH_ROW(D) entries): a pair's outer
- * product is D vector multiply-adds.  Written entry by entry, the compiler keeps every entry
- * scalar, and the 3D plate's step took 1.7 times as long. */
+ * product is one or two vector multiplies (@B@_pair_tensor).  Written entry by entry, the
+ * compiler keeps every entry scalar, and the 3D plate's step took 1.7 times as long. */
+SPH_VECTOR(@B@_vec, SPH_ROW(@DIM@));
+/* A pair's term of the gradient pass, (u_j - u_i) (x) w_ij, all D x R entries of it at once
+ * (@B@_tensor): entry (r, c) is the product of row r's difference, repeated R times, and
+ * the table entry w, repeated D times.  In 2D one vector of 4 (the two rows side by side), in
+ * 3D rows 0 and 1 in a vector of 8 and row 2 in one of 4, where a row at a time took D
+ * multiplies and D additions to each of A_i and A_j (the flyer plates' whole step: 4 % more
+ * time).  An A_i in memory is its D x R entries from A + i D R. */
+//@if DIM3
+SPH_VECTOR(@B@_vec8, 8);
+typedef struct {
+    @B@_vec8 r01; /* rows 0 and 1 */
+    @B@_vec r2;
+} @B@_tensor;
+static inline void @B@_pair_tensor(const double *restrict u, int i, int j, @B@_vec w,
+                                   @B@_tensor *t)
+{
+    const sph_real d0 = (sph_real)(u[j * 3] - u[i * 3]), d1 = (sph_real)(u[j * 3 + 1] - u[i * 3 + 1]),
+                   d2 = (sph_real)(u[j * 3 + 2] - u[i * 3 + 2]);
+    t->r01 = (@B@_vec8){d0, d0, d0, d0, d1, d1, d1, d1} *
+             (@B@_vec8){w[0], w[1], w[2], w[3], w[0], w[1], w[2], w[3]};
+    t->r2 = d2 * w;
+}
+static inline void @B@_tensor_add(@B@_tensor *to, const @B@_tensor *t)
+{
+    to->r01 += t->r01;
+    to->r2 += t->r2;
+}
+static inline void @B@_tensor_add_to(sph_real *to, const @B@_tensor *t)
+{
+    *(@B@_vec8 *)to += t->r01;
+    *(@B@_vec *)(to + 8) += t->r2;
+}
+//@else
+SPH_VECTOR(@B@_vec4, 4);
+typedef struct {
+    @B@_vec4 r01; /* rows 0 and 1 */
+} @B@_tensor;
+static inline void @B@_pair_tensor(const double *restrict u, int i, int j, @B@_vec w,
+                                   @B@_tensor *t)
+{
+    const sph_real d0 = (sph_real)(u[j * 2] - u[i * 2]), d1 = (sph_real)(u[j * 2 + 1] - u[i * 2 + 1]);
+    t->r01 = (@B@_vec4){d0, d0, d1, d1} * (@B@_vec4){w[0], w[1], w[0], w[1]};
+}
+static inline void @B@_tensor_add(@B@_tensor *to, const @B@_tensor *t)
+{
+    to->r01 += t->r01;
+}
+static inline void @B@_tensor_add_to(sph_real *to, const @B@_tensor *t)
+{
+    *(@B@_vec4 *)to += t->r01;
+}
+//@endif
+
 //@if MPI
 /* On many processes, after the pass over the half lists: each own particle's pairs with the
  * halo, i's share only (the other process computes j's); nothing where there is no halo. */
 static void @B@_gradient_halo_pairs(sph_body *b)
 {
     enum { D = @DIM@, R = SPH_ROW(D) };
-    SPH_VECTOR(vec, R);
     const int *restrict xs = b->xb_start, *restrict xb = b->xb, *restrict xk = b->xb_k;
     if (!xs)
         return;
-    const vec *restrict wtab = (const vec *)b->wtab;
+    const @B@_vec *restrict wtab = (const @B@_vec *)b->wtab;
     const double *restrict u = b->u;
-    vec *restrict A = (vec *)b->A;
+    sph_real *restrict A = b->A;
 //@if FRACTURE
     const double *restrict sf = b->s;
     const sph_real *restrict ltab = b->ltab;
@@ -32,23 +84,19 @@ static void @B@_gradient_halo_pairs(sph_body *b)
     for (int i = 0; i < b->nown; i++) {
         if (xs[i] == xs[i + 1])
             continue;
-        vec Ai[D];
-        for (int r = 0; r < D; r++)
-            Ai[r] = (vec){0};
+        @B@_tensor Ai = {0}, t;
 //@if FRACTURE
         double lapi = 0;
 //@endif
         for (int p = xs[i]; p < xs[i + 1]; p++) {
             const int j = xb[p];
-            const vec w = wtab[xk[p]];
 //@if FRACTURE
             lapi += ltab[xk[p]] * (sf[i] - sf[j]);
 //@endif
-            for (int r = 0; r < D; r++)
-                Ai[r] += (sph_real)(u[j * D + r] - u[i * D + r]) * w;
+            @B@_pair_tensor(u, i, j, wtab[xk[p]], &t);
+            @B@_tensor_add(&Ai, &t);
         }
-        for (int r = 0; r < D; r++)
-            A[(size_t)i * D + r] += Ai[r];
+        @B@_tensor_add_to(A + (size_t)i * D * R, &Ai);
 //@if FRACTURE
         lap[i] += lapi;
 //@endif
@@ -59,12 +107,11 @@ static void @B@_gradient_halo_pairs(sph_body *b)
 static void @B@_gradient_pass(sph_body *b)
 {
     enum { D = @DIM@, R = SPH_ROW(D) };
-    SPH_VECTOR(vec, R);
     const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
-    const vec *restrict wtab = (const vec *)b->wtab;
+    const @B@_vec *restrict wtab = (const @B@_vec *)b->wtab;
     const double *restrict u = b->u;
-    vec *restrict A = (vec *)b->A; /* row r of A_i at A[i*D + r]; zero on entry: the stress
-                                    * pass clears what it read */
+    sph_real *restrict A = b->A; /* A_i from A + i D R, row by row; zero on entry: the stress
+                                  * pass clears what it read */
 //@if FRACTURE
     /* the Laplacian of the phase field (eq. 62), a symmetric pair sum, rides along */
     const double *restrict sf = b->s;
@@ -92,28 +139,22 @@ static void @B@_gradient_pass(sph_body *b)
 #pragma omp parallel for schedule(static)
         for (int s = colour; s < b->nstripes; s += 2)
             for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
-                vec Ai[D];
-                for (int r = 0; r < D; r++)
-                    Ai[r] = (vec){0};
+                @B@_tensor Ai = {0}, t;
 //@if FRACTURE
                 double lapi = 0;
 //@endif
                 for (int p = hs[i]; p < hs[i + 1]; p++) {
                     const int j = hb[p];
-                    const vec w = wtab[hk[p]];
 //@if FRACTURE
                     const double lij = ltab[hk[p]] * (sf[i] - sf[j]);
                     lapi += lij;
                     lap[j] -= lij;
 //@endif
-                    for (int r = 0; r < D; r++) {
-                        const vec t = (sph_real)(u[j * D + r] - u[i * D + r]) * w;
-                        Ai[r] += t;
-                        A[(size_t)j * D + r] += t;
-                    }
+                    @B@_pair_tensor(u, i, j, wtab[hk[p]], &t);
+                    @B@_tensor_add(&Ai, &t);
+                    @B@_tensor_add_to(A + (size_t)j * D * R, &t);
                 }
-                for (int r = 0; r < D; r++)
-                    A[(size_t)i * D + r] += Ai[r];
+                @B@_tensor_add_to(A + (size_t)i * D * R, &Ai);
 //@if FRACTURE
                 lap[i] += lapi;
 //@endif
@@ -154,7 +195,6 @@ static void @B@_stress_pass(sph_body *b)
  * half lists, each pair visited once) each pair's force on j subtracted from acc; without
  * (pairs with the halo of a run on many processes) only i's share, the other process
  * computing j's.  *power gets the pairs' f_visc . (v_i - v_j), half of it without `both`. */
-SPH_VECTOR(@B@_vec, SPH_ROW(@DIM@));
 static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
                                       const int *restrict hb, const int *restrict hk, int both,
                                       double *restrict acc, @B@_vec *force, sph_real *power)
