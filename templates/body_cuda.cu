@@ -145,13 +145,13 @@ static void @B@_momentum_pass(sph_body *b)
                     fv[r] += (Ci[r * D + c] + b->Cv[SPH_TENSOR(j, r, c, D, n)]) * w[c];
                 vw += (sph_real)(b->v[i * D + r] - b->v[j * D + r]) * fv[r];
             }
-            const sph_real g2 = g * vw; /* 2 G; hpi = pi / 2, the factors folded */
-//@if BETA2
+            const sph_real g2 = g * vw; /* 2 G; hpi = pi / 2 on approach, the factors folded */
             const sph_real gc = g2 < 0 ? g2 : 0;
-            const sph_real hpi = g2 * (sph_real)(-0.25 * @BETA1@ * @C0@) +
+//@if BETA2
+            const sph_real hpi = gc * (sph_real)(-0.25 * @BETA1@ * @C0@) +
                                  gc * gc * (sph_real)(0.125 * @BETA2@);
 //@else
-            const sph_real hpi = g2 * (sph_real)(-0.25 * @BETA1@ * @C0@);
+            const sph_real hpi = gc * (sph_real)(-0.25 * @BETA1@ * @C0@);
 //@endif
             for (int r = 0; r < D; r++)
                 f[r] -= hpi * fv[r];

@@ -237,15 +237,15 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
         sph_real vw = 0;
         for (int r = 0; r < D; r++)
             vw += (sph_real)(v[i * D + r] - v[j * D + r]) * fv[r];
-        /* g = 2 G, and hpi = pi / 2 of eq. 58 (times rho0): pi = -beta1 c0 G + beta2 min(G, 0)^2,
-         * the constant factors folded, so that the pair's chain of products is short */
-        const sph_real g = gtab[k] * vw;
+        /* g = 2 G, and hpi = pi / 2 of eq. 58 (times rho0) on approach (G < 0), zero as the
+         * pair separates (Monaghan and Gingold's viscosity, the paper's [61]):
+         * pi = -beta1 c0 G + beta2 G^2, the constant factors folded */
+        const sph_real g = gtab[k] * vw, gc = g < 0 ? g : 0;
 //@if BETA2
-        const sph_real gc = g < 0 ? g : 0; /* beta2 acts on approach */
-        const sph_real hpi = g * (sph_real)(-0.25 * @BETA1@ * @C0@) +
+        const sph_real hpi = gc * (sph_real)(-0.25 * @BETA1@ * @C0@) +
                              gc * gc * (sph_real)(0.125 * @BETA2@);
 //@else
-        const sph_real hpi = g * (sph_real)(-0.25 * @BETA1@ * @C0@);
+        const sph_real hpi = gc * (sph_real)(-0.25 * @BETA1@ * @C0@);
 //@endif
         f -= hpi * fv;
         pv -= hpi * vw;
