@@ -465,6 +465,9 @@ static void processes_summary(sph_json *j, const run_state *r, const double *x)
     const int n = r->sim.par->size;
     sph_json_key_object(j, "processes");
     sph_json_int(j, "count", n);
+    /* 1 where the MPI library takes device memory: a device target's halo then goes from
+     * device to device, not through the host */
+    sph_json_int(j, "device_buffers", r->sim.par->device_buffers);
     for (int c = 0; c < 4; c++) {
         sph_json_key_array(j, names[c]);
         for (int k = 0; k < n; k++)

@@ -627,9 +627,16 @@ static inline void sph_cuda_halo(sph_body *b, const sph_cuda_field *f, int nf)
                 *o++ = ((const double *)fs.f[k].base)[i * fs.f[k].pstride + e * fs.f[k].estride];
     });
     const size_t bytes = (size_t)width * sizeof(double);
-    SPH_CUDA_CHECK(cudaMemcpy(x->host_out, out, (size_t)x->nsend * bytes, cudaMemcpyDeviceToHost));
-    b->par->exchange_packed(b, x->host_out, x->host_in, bytes);
-    SPH_CUDA_CHECK(cudaMemcpy(in, x->host_in, (size_t)x->nrecv * bytes, cudaMemcpyHostToDevice));
+    if (b->par->device_buffers) { /* the library reads and writes the device's buffers */
+        SPH_CUDA_CHECK(cudaDeviceSynchronize()); /* (the packing done first) */
+        b->par->exchange_packed(b, out, in, bytes);
+    } else {
+        SPH_CUDA_CHECK(cudaMemcpy(x->host_out, out, (size_t)x->nsend * bytes,
+                                  cudaMemcpyDeviceToHost));
+        b->par->exchange_packed(b, x->host_out, x->host_in, bytes);
+        SPH_CUDA_CHECK(cudaMemcpy(in, x->host_in, (size_t)x->nrecv * bytes,
+                                  cudaMemcpyHostToDevice));
+    }
     sph_for(x->nrecv, "halo: unpack", [=] __device__(int q) {
         const double *v = in + (size_t)q * width;
         const size_t i = (size_t)nown + (size_t)recv[q];

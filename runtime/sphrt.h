@@ -560,6 +560,10 @@ typedef struct sph_par {
     void (*halo_lists)(const sph_body *b, const int **send, int *nsend, const int **recv,
                        int *nrecv);
     void (*exchange_packed)(sph_body *b, const void *out, void *in, size_t bytes);
+    /* 1: exchange_packed takes device memory (an MPI library that reads and writes a
+     * device's memory itself, CUDA-aware), so a device target's halo goes from device buffer
+     * to device buffer; 0: through host buffers. */
+    int device_buffers;
     /* The bytes this process has sent in all exchanges so far, and the seconds it waited
      * for them (in wait). */
     double (*bytes_sent)(void);

@@ -9,6 +9,12 @@
 
 #include "halo.h"
 
+#if defined(__has_include)
+#if __has_include(<mpi-ext.h>)
+#include <mpi-ext.h> /* Open MPI's extensions: MPIX_Query_cuda_support */
+#endif
+#endif
+
 static MPI_Comm comm = MPI_COMM_NULL;
 static double sent_bytes, waited;
 
@@ -226,6 +232,26 @@ static void exchange_packed(sph_body *b, const void *out, void *in, size_t bytes
 static double bytes_sent(void) { return sent_bytes; }
 static double wait_seconds(void) { return waited; }
 
+/* Whether the MPI library takes device memory in its calls (CUDA-aware): $SPH_MPI_DEVICE_BUFFERS
+ * (0 or 1) where it is set, else Open MPI's answer at run time (its cuda extension: a build
+ * whose headers say 0 may still load the support), else no.  Every process asks the same
+ * library, and they agree all the same (the lowest answer), since a device target's halo
+ * must go the same way on both ends. */
+static int device_buffers(void)
+{
+    const char *e = getenv("SPH_MPI_DEVICE_BUFFERS");
+    int yes = 0;
+    if (e && *e)
+        yes = strcmp(e, "0") != 0;
+#if defined(OMPI_HAVE_MPI_EXT_CUDA) && OMPI_HAVE_MPI_EXT_CUDA
+    else
+        yes = MPIX_Query_cuda_support() == 1;
+#endif
+    int all = yes;
+    MPI_Allreduce(&yes, &all, 1, MPI_INT, MPI_MIN, comm);
+    return all;
+}
+
 int sph_mpi_main(const sph_model *m, int argc, char **argv)
 {
     int provided;
@@ -241,6 +267,7 @@ int sph_mpi_main(const sph_model *m, int argc, char **argv)
     };
     MPI_Comm_rank(comm, &par.rank);
     MPI_Comm_size(comm, &par.size);
+    par.device_buffers = device_buffers();
     if (par.rank != 0) {
         /* messages and progress come from process 0 (sph_par agree reports the others') */
         sph_message_keep(1);

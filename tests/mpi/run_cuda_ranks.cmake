@@ -5,7 +5,8 @@
 # host-chosen time steps run as on GPUs; then run_ranks.cmake against the serial CPU program
 # on 1 to 3 processes.
 #   -DSPHC= -DMPICXX= -DMODEL= -DINCLUDE= -DLIBS= (;-list: libsphrt_mpi.a;libsphrt.a) and
-#   run_ranks.cmake's variables but PROGRAM
+#   run_ranks.cmake's variables but PROGRAM; -DDEVICE_BUFFERS=ON: the MPI library given the
+#   device's buffers (SPH_MPI_DEVICE_BUFFERS=1, as a CUDA-aware one would be)
 get_filename_component(stem ${MODEL} NAME_WE)
 set(work ${OUT}_build)
 file(REMOVE_RECURSE ${work})
@@ -24,4 +25,15 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the emulated build of ${stem}.cu for many processes failed:\n${log}\n${err}")
 endif()
 set(INEXACT ON)
+if(DEVICE_BUFFERS)
+  set(ENV{SPH_MPI_DEVICE_BUFFERS} 1) # (the emulated device's buffers are host memory)
+endif()
 include(${CMAKE_CURRENT_LIST_DIR}/run_ranks.cmake)
+if(DEVICE_BUFFERS) # the halo went from "device" buffer to "device" buffer
+  file(READ ${OUT}/np2/summary.json summary)
+  if(NOT summary MATCHES "\"device_buffers\": 1")
+    message(FATAL_ERROR "2 processes with SPH_MPI_DEVICE_BUFFERS=1: the summary does not say "
+                        "device_buffers 1")
+  endif()
+  message(STATUS "2 processes: the halo exchanged from the device's buffers")
+endif()
