@@ -19,15 +19,16 @@ int sph_ckpt_create(sph_ckpt_writer *w, const char *path);
 void sph_ckpt_put(sph_ckpt_writer *w, const char *name, const void *data, size_t bytes);
 int sph_ckpt_commit(sph_ckpt_writer *w);
 
-/* Reading: the whole file, checked (format, machine, complete); -1 after reporting.  The file
- * is mapped, not copied: the processes of a run on many processes that read the same
- * checkpoint on one machine share its pages (each takes only its own particles' records). */
+/* Reading: the whole file, checked (format, machine, complete, and with check_hash the hash
+ * of every byte); -1 after reporting.  The file is mapped, not copied: the processes of a run
+ * on many processes that read the same checkpoint on one machine share its pages (each takes
+ * only its own particles' records), and one of them checks the hash for all (run.c). */
 typedef struct {
     const char *path;
     const unsigned char *buf;
     size_t len;
 } sph_ckpt;
-int sph_ckpt_read(sph_ckpt *c, const char *path);
+int sph_ckpt_read(sph_ckpt *c, const char *path, int check_hash);
 /* The record called name (*bytes long), or NULL. */
 const void *sph_ckpt_find(const sph_ckpt *c, const char *name, size_t *bytes);
 /* The record called name into data, which it must fill exactly; -1 after reporting. */

@@ -894,8 +894,8 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
     r.wall0 = sph_wall_time();
     r.next_out = r.t_out;
     r.next_checkpoint = r.t_checkpoint;
-    sph_ckpt ckpt;
-    if (par->agree(r.opt.restart && sph_ckpt_read(&ckpt, r.opt.restart)))
+    sph_ckpt ckpt; /* (process 0 hashes the whole file; agree spreads its verdict) */
+    if (par->agree(r.opt.restart && sph_ckpt_read(&ckpt, r.opt.restart, par->rank == 0)))
         return SPH_EXIT_SETUP;
     if (setup(&r))
         return SPH_EXIT_SETUP;

@@ -35,6 +35,25 @@ execute_process(COMMAND head -c ${keep} ${OUT}/damaged/checkpoint.bin
 expect_failure("a damaged checkpoint on 3 processes" 4 "cannot restart|damaged|incomplete|hash"
                ${MPIEXEC} ${NPFLAG} 3 ${MPIFLAGS} ${PROGRAM} --quiet --end 0.004
                --restart ${OUT}/damaged/cut.bin)
+# one byte in the middle changed: well formed, only its hash (which process 0 alone checks)
+# tells; every process must refuse it all the same
+math(EXPR at "${size} / 2")
+file(READ ${OUT}/damaged/checkpoint.bin byte OFFSET ${at} LIMIT 1 HEX)
+if(byte STREQUAL "5a") # (written in octal for printf: 0xa5, else 0x5a)
+  set(octal 245)
+else()
+  set(octal 132)
+endif()
+execute_process(COMMAND sh -c "cp ${OUT}/damaged/checkpoint.bin ${OUT}/damaged/flipped.bin && \
+printf '\\${octal}' | dd of=${OUT}/damaged/flipped.bin bs=1 seek=${at} count=1 conv=notrunc \
+2> /dev/null" RESULT_VARIABLE rc)
+file(READ ${OUT}/damaged/flipped.bin changed OFFSET ${at} LIMIT 1 HEX)
+if(NOT rc EQUAL 0 OR changed STREQUAL byte)
+  message(FATAL_ERROR "could not change byte ${at} of the checkpoint (${byte} -> ${changed})")
+endif()
+expect_failure("a checkpoint with one byte changed, on 3 processes" 4 "cut short or damaged"
+               ${MPIEXEC} ${NPFLAG} 3 ${MPIFLAGS} ${PROGRAM} --quiet --end 0.004
+               --restart ${OUT}/damaged/flipped.bin)
 
 # A process that dies: the last process kills itself with SIGKILL a second into the run.
 file(WRITE ${OUT}/die.sh "#!/bin/sh\nrank=\${OMPI_COMM_WORLD_RANK:-\${PMI_RANK:-0}}\n"
