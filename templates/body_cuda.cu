@@ -145,13 +145,13 @@ static void @B@_momentum_pass(sph_body *b)
                     fv[r] += (Ci[r * D + c] + b->Cv[SPH_TENSOR(j, r, c, D, n)]) * w[c];
                 vw += (sph_real)(b->v[i * D + r] - b->v[j * D + r]) * fv[r];
             }
-            const sph_real g2 = g * vw; /* 2 G; hpi = pi / 2 on approach, the factors folded */
-            const sph_real gc = g2 < 0 ? g2 : 0;
+            /* hpi = pi / 2 on approach, the factors folded (templates/body_forces.c) */
 //@if BETA2
-            const sph_real hpi = gc * (sph_real)(-0.25 * @BETA1@ * @C0@) +
-                                 gc * gc * (sph_real)(0.125 * @BETA2@);
+            const sph_real g2 = g * vw, d = g2 - fabs(g2); /* 4 min(G, 0) */
+            const sph_real hpi = d * ((sph_real)(-0.125 * @BETA1@ * @C0@) + d * (sph_real)(0.03125 * @BETA2@));
 //@else
-            const sph_real hpi = gc * (sph_real)(-0.25 * @BETA1@ * @C0@);
+            const sph_real x = g * (sph_real)(-0.25 * @BETA1@ * @C0@) * vw;
+            const sph_real hpi = x > 0 ? x : 0;
 //@endif
             for (int r = 0; r < D; r++)
                 f[r] -= hpi * fv[r];

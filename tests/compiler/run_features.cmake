@@ -16,7 +16,7 @@ file(READ ${WORKDIR}/${stem}.c code)
 # no square brackets: CMake lists treat them specially
 set(marks
   "viscosity=Cv + (size_t)j"
-  "beta2=gc * gc"
+  "beta2=d * (sph_real)(0.03125"
   "gravity=@B@_gravity"
   "velocity_bcs=@B@_velocity_bcs(sph_body"
   "force_bcs=@B@_force_bcs(sph_body"
