@@ -559,7 +559,8 @@ struct sph_cuda_halo_lists {
     int nsend, nrecv, width; /* width: the doubles of the buffers per particle */
     int *send, *recv;        /* device copies of the plan's lists */
     double *out, *in;        /* device buffers */
-    double *host_out, *host_in;
+    double *host_out, *host_in; /* host buffers the halo is staged through (NULL where
+                                 * the MPI library takes device memory, sph_par) */
 };
 
 static inline sph_cuda_halo_lists *sph_cuda_halo_prepare(sph_body *b, int width)
@@ -584,6 +585,8 @@ static inline sph_cuda_halo_lists *sph_cuda_halo_prepare(sph_body *b, int width)
     x->width = width;
     x->out = (double *)sph_dev_alloc(((size_t)nsend * width + 1) * sizeof(double));
     x->in = (double *)sph_dev_alloc(((size_t)nrecv * width + 1) * sizeof(double));
+    if (b->par->device_buffers) /* the library takes the device's buffers: none on the host */
+        return x;
     x->host_out = (double *)realloc(x->host_out, ((size_t)nsend * width + 1) * sizeof(double));
     x->host_in = (double *)realloc(x->host_in, ((size_t)nrecv * width + 1) * sizeof(double));
     if (!x->host_out || !x->host_in) {

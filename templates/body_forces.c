@@ -23,11 +23,11 @@ typedef struct {
     @B@_vec8 r01; /* rows 0 and 1 */
     @B@_vec r2;
 } @B@_tensor;
-static inline void @B@_pair_tensor(const double *restrict u, int i, int j, @B@_vec w,
+static inline void @B@_pair_tensor(const double *restrict uj, const double ui[3], @B@_vec w,
                                    @B@_tensor *t)
 {
-    const sph_real d0 = (sph_real)(u[j * 3] - u[i * 3]), d1 = (sph_real)(u[j * 3 + 1] - u[i * 3 + 1]),
-                   d2 = (sph_real)(u[j * 3 + 2] - u[i * 3 + 2]);
+    const sph_real d0 = (sph_real)(uj[0] - ui[0]), d1 = (sph_real)(uj[1] - ui[1]),
+                   d2 = (sph_real)(uj[2] - ui[2]);
     t->r01 = (@B@_vec8){d0, d0, d0, d0, d1, d1, d1, d1} *
              (@B@_vec8){w[0], w[1], w[2], w[3], w[0], w[1], w[2], w[3]};
     t->r2 = d2 * w;
@@ -47,10 +47,10 @@ SPH_VECTOR(@B@_vec4, 4);
 typedef struct {
     @B@_vec4 r01; /* rows 0 and 1 */
 } @B@_tensor;
-static inline void @B@_pair_tensor(const double *restrict u, int i, int j, @B@_vec w,
+static inline void @B@_pair_tensor(const double *restrict uj, const double ui[2], @B@_vec w,
                                    @B@_tensor *t)
 {
-    const sph_real d0 = (sph_real)(u[j * 2] - u[i * 2]), d1 = (sph_real)(u[j * 2 + 1] - u[i * 2 + 1]);
+    const sph_real d0 = (sph_real)(uj[0] - ui[0]), d1 = (sph_real)(uj[1] - ui[1]);
     t->r01 = (@B@_vec4){d0, d0, d1, d1} * (@B@_vec4){w[0], w[1], w[0], w[1]};
 }
 static inline void @B@_tensor_add(@B@_tensor *to, const @B@_tensor *t)
@@ -85,6 +85,9 @@ static void @B@_gradient_halo_pairs(sph_body *b)
         if (xs[i] == xs[i + 1])
             continue;
         @B@_tensor Ai = {0}, t;
+        double ui[D]; /* (read once for all of i's pairs) */
+        for (int r = 0; r < D; r++)
+            ui[r] = u[(size_t)i * D + r];
 //@if FRACTURE
         double lapi = 0;
 //@endif
@@ -93,7 +96,7 @@ static void @B@_gradient_halo_pairs(sph_body *b)
 //@if FRACTURE
             lapi += ltab[xk[p]] * (sf[i] - sf[j]);
 //@endif
-            @B@_pair_tensor(u, i, j, wtab[xk[p]], &t);
+            @B@_pair_tensor(u + (size_t)j * D, ui, wtab[xk[p]], &t);
             @B@_tensor_add(&Ai, &t);
         }
         @B@_tensor_add_to(A + (size_t)i * D * R, &Ai);
@@ -140,6 +143,9 @@ static void @B@_gradient_pass(sph_body *b)
         for (int s = colour; s < b->nstripes; s += 2)
             for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
                 @B@_tensor Ai = {0}, t;
+                double ui[D]; /* (read once for all of i's pairs) */
+                for (int r = 0; r < D; r++)
+                    ui[r] = u[(size_t)i * D + r];
 //@if FRACTURE
                 double lapi = 0;
 //@endif
@@ -150,7 +156,7 @@ static void @B@_gradient_pass(sph_body *b)
                     lapi += lij;
                     lap[j] -= lij;
 //@endif
-                    @B@_pair_tensor(u, i, j, wtab[hk[p]], &t);
+                    @B@_pair_tensor(u + (size_t)j * D, ui, wtab[hk[p]], &t);
                     @B@_tensor_add(&Ai, &t);
                     @B@_tensor_add_to(A + (size_t)j * D * R, &t);
                 }
