@@ -133,7 +133,9 @@ elseif(CASE STREQUAL "killed")
   message(STATUS "killed after ${nframes} frames, each whole")
 elseif(CASE STREQUAL "stopped")
   set(dir ${OUT}/stopped)
-  execute_process(COMMAND timeout --preserve-status -s TERM 2 ${run} --quiet --end 10
+  # (4 s: a signal during the set-up ends a run without checkpoints at once, exit 143, and a
+  # loaded machine has taken more than 2 s to start the beam)
+  execute_process(COMMAND timeout --preserve-status -s TERM 4 ${run} --quiet --end 10
                           --out ${dir}
                   RESULT_VARIABLE rc ERROR_VARIABLE err)
   if(NOT rc EQUAL 7 OR NOT err MATCHES "error: stopped by SIGTERM at t = [0-9.e-]+ s \\(step [0-9]+\\); its outputs up to then are in ")
