@@ -24,7 +24,8 @@
  * tensors, hence 1-Lipschitz: its error is the backward error of the decomposition, a few
  * ulps of the norm, even where eigenvalues (nearly) coincide or straddle zero.
  *
- * Method (2×2): closed form, eigenvalues m ± r, m = (axx+azz)/2, r = hypot((axx−azz)/2, axz).
+ * Method (2×2): closed form, eigenvalues m ± r, m = (axx+azz)/2, r = hypot((axx−azz)/2, axz),
+ * without branches.
  */
 #ifndef SPH_TENSOR_H
 #define SPH_TENSOR_H
@@ -163,26 +164,25 @@ SPH_HD static inline void sph_sym_pos3(const double A[9], double Ap[9])
 }
 
 /* Positive part of the symmetric 2×2 tensor {{axx, axz}, {axz, azz}} (x–z plane, plane
- * strain), closed form; out = {pxx, pxz, pzz}. The negative part is A − out. */
+ * strain), closed form; out = {pxx, pxz, pzz}. The negative part is A − out.
+ * Without branches: the three cases (A, 0, the mixed form) are selects, so that a loop
+ * over particles that calls it can be vectorised (the fracture laws' stress pass).
+ * With eigenvalues l1 >= l2: positive semidefinite (l2 >= 0): Ap = A; negative
+ * semidefinite (l1 <= 0): Ap = 0; across zero: Ap = l1 q1 q1ᵀ = w (A − l2 I),
+ * w = l1 / (l1 − l2) in (0, 1).  NaN in gives NaN out. */
 SPH_HD static inline void sph_sym_pos2(double axx, double axz, double azz, double out[3])
 {
     double m = 0.5 * axx + 0.5 * azz, dh = 0.5 * axx - 0.5 * azz, r2 = dh * dh + axz * axz;
-    /* r = hypot(dh, axz); sqrt is several times faster, hypot only where r2 could have
-     * over- or underflowed (and for r2 = 0, e.g. A = c·I). */
-    double r = r2 < 0x1p1000 && r2 > 0x1p-1000 ? sqrt(r2) : hypot(dh, axz);
-    double l1 = m + r, l2 = m - r; /* eigenvalues, l1 >= l2 */
-    if (l2 >= 0.0) { /* positive semidefinite: Ap = A */
-        out[0] = axx, out[1] = axz, out[2] = azz;
-        return;
-    }
-    if (l1 <= 0.0) { /* negative semidefinite: Ap = 0 */
-        out[0] = out[1] = out[2] = 0.0;
-        return;
-    }
-    /* l1 > 0 > l2: Ap = l1 q1 q1ᵀ = l1 (A − l2 I) / (l1 − l2), where l1 − l2 > 0 and the
-     * weight l1 / (l1 − l2) lies in (0, 1). */
-    double wt = l1 / (l1 - l2);
-    out[0] = wt * (axx - l2), out[1] = wt * axz, out[2] = wt * (azz - l2);
+    /* r = hypot(dh, axz): where r2 could have over- or underflowed (and for r2 = 0) the
+     * square root of the sum scaled by a power of two, exact, otherwise scale 1. */
+    const double up = r2 > 0x1p1000 ? 0x1p-600 : r2 < 0x1p-1000 ? 0x1p600 : 1.0;
+    const double sx = dh * up, sz = axz * up;
+    double r = sqrt(sx * sx + sz * sz) * (r2 > 0x1p1000 ? 0x1p600 : r2 < 0x1p-1000 ? 0x1p-600 : 1.0);
+    double l1 = m + r, l2 = m - r;        /* eigenvalues, l1 >= l2 */
+    const double w = l1 / (l1 - l2);      /* (not finite for r = 0: then not selected) */
+    const double a = l2 >= 0.0 ? 1.0 : l1 <= 0.0 ? 0.0 : w; /* A, 0 or the mixed form */
+    const double shift = l2 >= 0.0 ? 0.0 : l2;
+    out[0] = a * (axx - shift), out[1] = a * axz, out[2] = a * (azz - shift);
 }
 
 /* ------------------------------------------------------------------ derivatives

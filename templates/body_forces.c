@@ -172,23 +172,32 @@ static void @B@_gradient_pass(sph_body *b)
 //@endif
 }
 
-/* Pass 2, per particle: F, the law, P L and cof(F) (@B@_particle_stress). */
+/* Pass 2, per particle: F, the law, P L and cof(F) (@B@_particle_stress).  Particle i reads
+ * and writes entry i of each array alone, and the arrays never overlap: no iteration depends
+ * on another (ivdep), so where the law and its helpers have no branches (selects instead),
+ * the compiler does several particles in one vector instruction: crack branching's pass
+ * took 0.55 of its time once vectorised.  The threads take blocks of particles in order
+ * (static), the runs the pair passes' stripes give them. */
 static void @B@_stress_pass(sph_body *b)
 {
-    enum { D = @DIM@, R = SPH_ROW(D) };
+    enum { D = @DIM@, R = SPH_ROW(D), BLOCK = 64 };
     const int n = b->nown;
     sph_real *restrict Ac = b->A;
     @B@_gradient_pass(b);
 #pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; i++) {
-        sph_real *Ai = Ac + (size_t)i * D * R;
-        double A[D * D];
-        for (int r = 0; r < D; r++)
-            for (int c = 0; c < D; c++)
-                A[r * D + c] = Ai[r * R + c];
-        for (int k = 0; k < D * R; k++)
-            Ai[k] = 0; /* ready for the next step's gradient pass */
-        @B@_particle_stress(b, i, A);
+    for (int i0 = 0; i0 < n; i0 += BLOCK) {
+        const int i1 = n - i0 < BLOCK ? n : i0 + BLOCK;
+#pragma GCC ivdep
+        for (int i = i0; i < i1; i++) {
+            sph_real *Ai = Ac + (size_t)i * D * R;
+            double A[D * D];
+            for (int r = 0; r < D; r++)
+                for (int c = 0; c < D; c++)
+                    A[r * D + c] = Ai[r * R + c];
+            for (int k = 0; k < D * R; k++)
+                Ai[k] = 0; /* ready for the next step's gradient pass */
+            @B@_particle_stress(b, i, A);
+        }
     }
 }
 

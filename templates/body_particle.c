@@ -46,9 +46,11 @@ SPH_FN void @B@_particle_stress(sph_body *b, int i, const double *A)
         }
     double S[9], e;
 //@if FRACTURE
-    if (b->s[i] <= @SLIMIT@) /* eq. 63: a broken particle carries no deformation */
-        for (int k = 0; k < 9; k++)
-            F[k] = k % 4 == 0;
+    /* eq. 63: a broken particle carries no deformation (a select, not a branch: the
+     * stress pass's loop over particles is vectorised where the law has no branches) */
+    const int broken = b->s[i] <= @SLIMIT@;
+    for (int k = 0; k < 9; k++)
+        F[k] = broken ? (double)(k % 4 == 0) : F[k];
     double ep;
     @B@_material(F, b->s[i], S, &e, &ep);
     b->H[i] = sph_max(b->H[i], ep);
