@@ -42,6 +42,26 @@ extern "C" {
 #define SPH_HD
 #endif
 #define SPH_FN SPH_HD static inline
+/* SPH_FLAT marks the generated functions of a particle's stress (the material law, its
+ * caller): the CPU's stress pass inlines them into its loop over a block of particles,
+ * whatever their size, so that the loop can be vectorised (templates/body_forces.c). */
+#ifdef __CUDACC__
+#define SPH_FLAT SPH_FN
+#else
+#define SPH_FLAT static inline __attribute__((always_inline))
+#endif
+/* glibc's vector math library (libmvec, which -lm links where it is used) has 2-, 4- and
+ * 8-wide forms of these on x86-64; declared so, they let GCC vectorise the stress pass's
+ * loop over a law that calls them (glibc's own headers declare them only under
+ * -ffast-math).  Within 4 ulp, where the scalar ones are within 1. */
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__CUDACC__) && defined(__x86_64__) &&  \
+    defined(__GLIBC__) && !defined(__FAST_MATH__)
+__attribute__((__simd__("notinbranch"))) double exp(double);
+__attribute__((__simd__("notinbranch"))) double log(double);
+__attribute__((__simd__("notinbranch"))) double pow(double, double);
+__attribute__((__simd__("notinbranch"))) double sin(double);
+__attribute__((__simd__("notinbranch"))) double cos(double);
+#endif
 
 /* The exit codes of a generated program (README): a declared expectation failed, bad
  * options, the run went unstable, set-up or output failed, a CUDA call or kernel failed, a
@@ -813,14 +833,16 @@ SPH_HD static inline double sph_stretch2_min(const double F[9], int dim)
     const double q = (C[0] + C[4] + C[8]) / 3.0;
     const double d0 = C[0] - q, d1 = C[4] - q, d2 = C[8] - q;
     const double p = sqrt((d0 * d0 + d1 * d1 + d2 * d2 + 2.0 * off) / 6.0);
-    if (p <= 1e-14 * fabs(q))
-        return q; /* a multiple of I */
-    const double b0 = d0 / p, b1 = d1 / p, b2 = d2 / p, b01 = C[1] / p, b02 = C[2] / p,
-                 b12 = C[5] / p;
+    /* a multiple of I: q (a select, as the clamp below: no branch, so that a loop over
+     * particles calling this can be vectorised) */
+    const int iso = p <= 1e-14 * fabs(q);
+    const double ip = iso ? 0.0 : 1.0 / p;
+    const double b0 = d0 * ip, b1 = d1 * ip, b2 = d2 * ip, b01 = C[1] * ip, b02 = C[2] * ip,
+                 b12 = C[5] * ip;
     double r = 0.5 * (b0 * (b1 * b2 - b12 * b12) - b01 * (b01 * b2 - b12 * b02) +
                       b02 * (b01 * b12 - b1 * b02));
     r = r < -1.0 ? -1.0 : r > 1.0 ? 1.0 : r;
-    return q + 2.0 * p * sph_cubic_smallest_root(r); /* cos(acos(r) / 3 + 2 pi / 3) */
+    return iso ? q : q + 2.0 * p * sph_cubic_smallest_root(r); /* cos(acos(r) / 3 + 2 pi / 3) */
 }
 
 /* C = A B */

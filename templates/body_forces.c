@@ -172,22 +172,142 @@ static void @B@_gradient_pass(sph_body *b)
 //@endif
 }
 
-/* Pass 2, per particle: F, the law, P L and cof(F) (@B@_particle_stress).  Particle i reads
- * and writes entry i of each array alone, and the arrays never overlap: no iteration depends
- * on another (ivdep), so where the law and its helpers have no branches (selects instead),
- * the compiler does several particles in one vector instruction: crack branching's pass
- * took 0.55 of its time once vectorised.  The threads take blocks of particles in order
- * (static), the runs the pair passes' stripes give them. */
+/* Pass 2, per particle: F, the law, P L and cof(F) (@B@_stress_of), in blocks of particles
+ * the threads take in order (static: the runs of particles the pair passes' stripes give
+ * them).  Within a block no particle depends on another, and where the loop over its
+ * particles has no branches (the law and its helpers use selects) and only unit-stride
+ * runs or short groups of values a particle, the compiler does several particles in one
+ * vector instruction: crack branching's stress pass took 0.55 of its time so. */
+//@if STAGED
+/* This body's law calls exp, log or pow, but its particles' values come in runs of 9, 11 or
+ * 12 (3D tensors, the law's state), which the compiler does not vectorise in place: the
+ * block's values are first copied entry by entry (entry k of its particle q at [k][q]) into
+ * arrays on the stack, the loop over the block's particles reads and writes those alone,
+ * and the results go back (compiler/lower/lower.c, stress_staged). */
+enum { @B@_BLOCK = 32 };
+static void @B@_stress_block(sph_body *b, int i0, int m)
+{
+    enum { D = @DIM@, R = SPH_ROW(D), T = D * D, N = @B@_BLOCK };
+    double A[T][N], L[T][N], psi[N], F[T][N], Q[T][N];
+    sph_real *restrict Ab = b->A + (size_t)i0 * D * R;
+    const double *restrict Lb = b->L + (size_t)i0 * T;
+//@if VISCOSITY
+    double Cv[T][N];
+//@endif
+//@if FRACTURE
+    double s[N], lap[N], H[N], sdd[N];
+//@endif
+//@if STATE
+    enum { NS = @NSTATE@ };
+    double st[NS][N], st_new[NS][N];
+    double *restrict stb = b->state + (size_t)i0 * NS;
+//@endif
+    for (int q = 0; q < m; q++) {
+        for (int r = 0; r < D; r++)
+            for (int c = 0; c < D; c++)
+                A[r * D + c][q] = Ab[q * D * R + r * R + c];
+        for (int k = 0; k < D * R; k++)
+            Ab[q * D * R + k] = 0; /* ready for the next step's gradient pass */
+        for (int k = 0; k < T; k++)
+            L[k][q] = Lb[q * T + k];
+//@if FRACTURE
+        s[q] = b->s[i0 + q], lap[q] = b->lap[i0 + q], H[q] = b->H[i0 + q];
+        b->lap[i0 + q] = 0; /* ready for the next step's gradient pass */
+//@endif
+//@if STATE
+        for (int k = 0; k < NS; k++)
+            st[k][q] = stb[q * NS + k];
+//@endif
+    }
+//@if CRUSH
+    double lam2[N];
+//@endif
+    for (int q = 0; q < m; q++) {
+        double a[T], l[T], f[T], qq[T];
+        for (int k = 0; k < T; k++)
+            a[k] = A[k][q], l[k] = L[k][q];
+//@if VISCOSITY
+        double cv[T];
+//@endif
+//@if STATE
+        double sq[NS], snq[NS];
+        for (int k = 0; k < NS; k++)
+            sq[k] = st[k][q];
+//@endif
+        @B@_stress_of(a, l,
+//@if FRACTURE
+                      s[q], lap[q], &H[q], &sdd[q],
+//@endif
+//@if STATE
+                      sq, snq,
+//@endif
+//@if CRUSH
+                      &lam2[q],
+//@endif
+//@if VISCOSITY
+                      &psi[q], f, qq, cv);
+//@else
+                      &psi[q], f, qq);
+//@endif
+        for (int k = 0; k < T; k++) {
+            F[k][q] = f[k], Q[k][q] = qq[k];
+//@if VISCOSITY
+            Cv[k][q] = cv[k];
+//@endif
+        }
+//@if STATE
+        for (int k = 0; k < NS; k++)
+            st_new[k][q] = snq[k];
+//@endif
+    }
+    double *restrict Fb = b->F + (size_t)i0 * 9;
+    sph_real *restrict Qb = b->Q;
+//@if VISCOSITY
+    sph_real *restrict Cb = b->Cv;
+//@endif
+    for (int q = 0; q < m; q++) {
+        const size_t i = (size_t)(i0 + q);
+        for (int r = 0; r < D; r++)
+            for (int c = 0; c < D; c++) {
+                Fb[q * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] = F[r * D + c][q];
+                Qb[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)Q[r * D + c][q];
+//@if VISCOSITY
+                Cb[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)Cv[r * D + c][q];
+//@endif
+            }
+        b->psi[i] = psi[q];
+//@if FRACTURE
+        b->H[i] = H[q], b->sdd[i] = sdd[q];
+//@endif
+//@if CRUSH
+        b->lam2[i] = lam2[q];
+//@endif
+//@if STATE
+        for (int k = 0; k < NS; k++)
+            stb[q * NS + k] = st_new[k][q];
+//@endif
+    }
+}
+
 static void @B@_stress_pass(sph_body *b)
 {
-    enum { D = @DIM@, R = SPH_ROW(D), BLOCK = 64 };
+    const int n = b->nown;
+    @B@_gradient_pass(b);
+#pragma omp parallel for schedule(static)
+    for (int i0 = 0; i0 < n; i0 += @B@_BLOCK)
+        @B@_stress_block(b, i0, n - i0 < @B@_BLOCK ? n - i0 : @B@_BLOCK);
+}
+//@else
+static void @B@_stress_pass(sph_body *b)
+{
+    enum { D = @DIM@, R = SPH_ROW(D), BLOCK = 32 };
     const int n = b->nown;
     sph_real *restrict Ac = b->A;
     @B@_gradient_pass(b);
 #pragma omp parallel for schedule(static)
     for (int i0 = 0; i0 < n; i0 += BLOCK) {
         const int i1 = n - i0 < BLOCK ? n : i0 + BLOCK;
-#pragma GCC ivdep
+#pragma GCC ivdep /* particle i reads and writes entry i of arrays that never overlap */
         for (int i = i0; i < i1; i++) {
             sph_real *Ai = Ac + (size_t)i * D * R;
             double A[D * D];
@@ -200,6 +320,7 @@ static void @B@_stress_pass(sph_body *b)
         }
     }
 }
+//@endif
 
 /* Pass 3, over pairs (each once): momentum balance (eq. 55) in the symmetric corrected form
  *   rho0 dv_i/dt = sum_j V_j (P_i L_i + P_j L_j) grad W_ij

@@ -23,78 +23,92 @@ SPH_FN void @B@_phase_move(double *s, double *sd, double h)
 //@endif
 
 /* ---- body @B@: one particle's stress ---------------------------------------------------
- * From A_i = sum_j V_j (u_j - u_i) (x) grad W_ij: F = I + A L^T (eq. 53 with the corrected
- * gradient), the material law (S, psi), P = F S (eq. 2), and what the momentum pass needs of
- * each particle: Q = P L and, for artificial viscosity, Cv = cof(F) = J F^-T.  Shared by
- * the CPU passes (body_forces.c) and the CUDA ones (body_cuda.cu).
+ * From A_i = sum_j V_j (u_j - u_i) (x) grad W_ij and the particle's correction L_i: F = I +
+ * A L^T (eq. 53 with the corrected gradient), the material law (S, psi), P = F S (eq. 2), and
+ * what the momentum pass needs of each particle: Q = P L and, for artificial viscosity,
+ * Cv = cof(F) = J F^-T.  Arithmetic on its arguments alone (no array of the body's), so that
+ * the CPU's stress pass can run it on several particles in one vector instruction
+ * (body_forces.c); @B@_particle_stress below calls it for particle i of the body.  D x D
+ * tensors row by row; Fp gets F's in-plane block (the out-of-plane entries of a 2D F never
+ * change).
 //@if FRACTURE
  * With fracture: F = I where s <= s_l (eq. 63), the stress degraded by s (eq. 18), the
- * history H = max(H, psi+) (eq. 8) and the phase-field acceleration of eq. 61.
+ * history H = max(H, psi+) (eq. 8) and the phase-field acceleration sdd of eq. 61 from the
+ * Laplacian lap of eq. 62.
+//@endif
+//@if STATE
+ * The law's state st (plasticity) advances once per step, here: st_new.
 //@endif
  */
-SPH_FN void @B@_particle_stress(sph_body *b, int i, const double *A)
+SPH_FLAT void @B@_stress_of(const double *A, const double *L,
+//@if FRACTURE
+                            double s, double lap, double *H, double *sdd,
+//@endif
+//@if STATE
+                            const double *st, double *st_new,
+//@endif
+//@if CRUSH
+                            double *lam2,
+//@endif
+                            double *psi, double *Fp, double *Q
+//@if VISCOSITY
+                            , double *Cv
+//@endif
+                            )
 {
     enum { D = @DIM@ };
-    const double *L = b->L + (size_t)i * D * D;
     double F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
     for (int r = 0; r < D; r++)
         for (int c = 0; c < D; c++) {
-            double s = 0;
+            double a = 0;
             for (int k = 0; k < D; k++)
-                s += A[r * D + k] * L[c * D + k];
-            F[sph_axis(D, r) * 3 + sph_axis(D, c)] += s;
+                a += A[r * D + k] * L[c * D + k];
+            F[sph_axis(D, r) * 3 + sph_axis(D, c)] += a;
         }
     double S[9], e;
 //@if FRACTURE
-    /* eq. 63: a broken particle carries no deformation (a select, not a branch: the
-     * stress pass's loop over particles is vectorised where the law has no branches) */
-    const int broken = b->s[i] <= @SLIMIT@;
+    /* eq. 63: a broken particle carries no deformation (a select, not a branch, like
+     * everything here: a branch would keep the compiler from vectorising the CPU's loop) */
+    const int broken = s <= @SLIMIT@;
     for (int k = 0; k < 9; k++)
         F[k] = broken ? (double)(k % 4 == 0) : F[k];
     double ep;
-    @B@_material(F, b->s[i], S, &e, &ep);
-    b->H[i] = sph_max(b->H[i], ep);
+    @B@_material(F, s, S, &e, &ep);
+    *H = sph_max(*H, ep);
     /* eq. 61 without its damping term: s'' + gamma s' = c^2/(2 eps0) (2 eps0 lap s +
      * (1 - s)/(2 eps0) - 2 s H/Gc), c = c0; gamma s' is integrated by the update */
-    b->sdd[i] = @PF_A@ * (2 * @EPS0@ * b->lap[i] + (1 - b->s[i]) * (0.5 / @EPS0@) -
-                       2 * b->s[i] * b->H[i] * (1.0 / @GC@));
-    b->lap[i] = 0; /* ready for the next step's gradient pass */
+    *sdd = @PF_A@ * (2 * @EPS0@ * lap + (1 - s) * (0.5 / @EPS0@) - 2 * s * *H * (1.0 / @GC@));
 //@else
 //@if STATE
-    /* the law's state (plasticity) advances once per step, here */
-    double *st = b->state + (size_t)i * @NSTATE@, st_new[@NSTATE@];
     @B@_material(F, st, st_new, S, &e);
-    for (int k = 0; k < @NSTATE@; k++)
-        st[k] = st_new[k];
 //@else
     @B@_material(F, S, &e);
 //@endif
 //@endif
-    b->psi[i] = e;
-    for (int r = 0; r < D; r++) /* the out-of-plane entries of a 2D F never change */
+    *psi = e;
+    for (int r = 0; r < D; r++)
         for (int c = 0; c < D; c++)
-            b->F[(size_t)i * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] =
-                F[sph_axis(D, r) * 3 + sph_axis(D, c)];
+            Fp[r * D + c] = F[sph_axis(D, r) * 3 + sph_axis(D, c)];
 //@if CRUSH
     /* the smallest principal stretch squared, for the time step where the body is
      * compressed (timestep auto: eq. 65 on the current spacing; runtime/sim.c) */
-    b->lam2[i] = sph_stretch2_min(F, D);
+    *lam2 = sph_stretch2_min(F, D);
 //@endif
     /* P = F S (eq. 2), in-plane block, then Q = P L */
     double P[D * D];
     for (int r = 0; r < D; r++)
         for (int c = 0; c < D; c++) {
-            double s = 0;
+            double a = 0;
             for (int k = 0; k < 3; k++)
-                s += F[sph_axis(D, r) * 3 + k] * S[k * 3 + sph_axis(D, c)];
-            P[r * D + c] = s;
+                a += F[sph_axis(D, r) * 3 + k] * S[k * 3 + sph_axis(D, c)];
+            P[r * D + c] = a;
         }
     for (int r = 0; r < D; r++)
         for (int c = 0; c < D; c++) {
-            double s = 0;
+            double a = 0;
             for (int k = 0; k < D; k++)
-                s += P[r * D + k] * L[k * D + c];
-            b->Q[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)s;
+                a += P[r * D + k] * L[k * D + c];
+            Q[r * D + c] = a;
         }
 //@if VISCOSITY
     /* cof(F) = J F^-T: the Piola transform of the viscous pressure (eq. 57), without the
@@ -103,19 +117,62 @@ SPH_FN void @B@_particle_stress(sph_body *b, int i, const double *A)
 //@if FRACTURE
     /* degraded like the elastic stress, so that a crack does not carry viscous stress
      * either (its faces would otherwise be held back as they separate) */
-    const double vdeg = b->s[i] * b->s[i];
+    const double vdeg = s * s;
+//@else
+    const double vdeg = 1;
+//@endif
+    for (int r = 0; r < D; r++)
+        for (int c = 0; c < D; c++)
+            Cv[r * D + c] = sph_cofactor(F, sph_axis(D, r), sph_axis(D, c)) * vdeg;
+//@endif
+}
+
+//@if ONE_PARTICLE
+/* One particle's stress (@B@_stress_of) from A_i and the body's arrays, the results into
+ * them: the CUDA target's thread of a particle, and the CPU's stress pass where it runs over
+ * the body's arrays themselves (body_forces.c). */
+SPH_FLAT void @B@_particle_stress(sph_body *b, int i, const double *A)
+{
+    enum { D = @DIM@ };
+    double F[D * D], Q[D * D];
+//@if VISCOSITY
+    double Cv[D * D];
+//@endif
+//@if STATE
+    double *st = b->state + (size_t)i * @NSTATE@, st_new[@NSTATE@];
+//@endif
+    @B@_stress_of(A, b->L + (size_t)i * D * D,
+//@if FRACTURE
+                  b->s[i], b->lap[i], &b->H[i], &b->sdd[i],
+//@endif
+//@if STATE
+                  st, st_new,
+//@endif
+//@if CRUSH
+                  &b->lam2[i],
+//@endif
+//@if VISCOSITY
+                  &b->psi[i], F, Q, Cv);
+//@else
+                  &b->psi[i], F, Q);
+//@endif
+//@if STATE
+    for (int k = 0; k < @NSTATE@; k++)
+        st[k] = st_new[k];
+//@endif
+//@if FRACTURE
+    b->lap[i] = 0;
 //@endif
     for (int r = 0; r < D; r++)
         for (int c = 0; c < D; c++) {
-            const double s = sph_cofactor(F, sph_axis(D, r), sph_axis(D, c));
-//@if FRACTURE
-            b->Cv[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)(s * vdeg);
-//@else
-            b->Cv[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)s;
+            b->F[(size_t)i * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] = F[r * D + c];
+            b->Q[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)Q[r * D + c];
+//@if VISCOSITY
+            b->Cv[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)Cv[r * D + c];
 //@endif
         }
-//@endif
 }
+//@endif
 
 //@if HOURGLASS
 /* Hourglass control (Ganzenmueller 2015) of the pair (i, j) with offset table entry k: the

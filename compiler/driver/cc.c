@@ -195,8 +195,14 @@ static int compile_c(const Model *m, const Options *o, const char *src, const ch
     char *argv[24];
     int n = 0;
     argv[n++] = compiler;
-    static const char *const flags[] = {"-std=c11", "-O3", "-march=native", "-ffp-contract=fast",
-                                        "-fno-math-errno", "-fopenmp", "-Wall", "-Wextra", NULL};
+    /* -fno-trapping-math: the program never reads or traps floating-point exceptions, so the
+     * compiler may evaluate both sides of a select (a division, a comparison) where only one
+     * is used, which vectorising the stress pass needs on a machine without AVX-512 masks */
+    static const char *const flags[] = {"-std=c11",        "-O3",
+                                        "-march=native",    "-ffp-contract=fast",
+                                        "-fno-math-errno",  "-fno-trapping-math",
+                                        "-fopenmp",         "-Wall",
+                                        "-Wextra",          NULL};
     for (const char *const *f = flags; *f; f++)
         argv[n++] = (char *)*f;
     argv[n++] = (char *)inc;

@@ -17,6 +17,9 @@ int emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyPl
     /* Declared for every template, on or off, since an undeclared switch is an error: the
      * parts a program on many processes adds (//@if MPI). */
     tpl_switch(&env, "MPI", E->mpi);
+    /* whether the code takes one particle's stress from the body's arrays (B_particle_stress):
+     * the device's threads always, the CPU unless its stress pass goes by blocks (STAGED) */
+    tpl_switch(&env, "ONE_PARTICLE", E->target == emit_target(TARGET_CUDA) || !p->staged);
     tpl_set(&env, "NSTATE", "%d", p->nstate);
     int k = 0;
 #define PLAN_KEY(member, key, value, when)                                                    \

@@ -13,7 +13,7 @@ void emit_fracture_material(FILE *out, const BodyModel *b, const BodyPlan *p)
     fprintf(out, ".\n * In: deformation gradient F (3x3), phase field s. Out: degraded second "
                  "Piola-Kirchhoff stress\n * S = s^2 S+ + S- (eq. 18), degraded strain energy "
                  "density psi = s^2 psi+ + psi- (eq. 7),\n * tensile energy psi+ (eq. 11/20). */\n");
-    fprintf(out, "SPH_FN void %s_material(const double F[9], double s, double S[9], "
+    fprintf(out, "SPH_FLAT void %s_material(const double F[9], double s, double S[9], "
                  "double *psi, double *psip)\n{\n",
             b->name);
     fputs("    (void)F;\n    (void)s;\n", out);

@@ -89,13 +89,13 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
             fprintf(out, " %s%s", r->states[k].name, r->states[k].size == 9 ? "[9]" : "");
         fprintf(out, ").\n * Out: second Piola-Kirchhoff stress S, strain energy density psi, "
                      "the state at the end of the step st_new. */\n");
-        fprintf(out, "SPH_FN void %s_material(const double F[9], const double *st, "
+        fprintf(out, "SPH_FLAT void %s_material(const double F[9], const double *st, "
                      "double *st_new, double S[9],\n                                   double *psi)\n{\n",
                 b->name);
     } else {
         fprintf(out, ".\n * In: deformation gradient F (3x3). Out: second Piola-Kirchhoff stress S, "
                      "strain energy density psi. */\n");
-        fprintf(out, "SPH_FN void %s_material(const double F[9], double S[9], double *psi)\n{\n",
+        fprintf(out, "SPH_FLAT void %s_material(const double F[9], double S[9], double *psi)\n{\n",
                 b->name);
     }
     fputs(p->nstate ? "    (void)F;\n    (void)st;\n" : "    (void)F;\n", out);

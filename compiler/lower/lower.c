@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "plan.h"
+#include "lang/builtins.h"
 #include "util/diag.h"
 
 /* The body's BCs of that kind that set something (in 2D, not only out-of-plane components). */
@@ -15,6 +16,28 @@ static int bcs_applied(const BodyModel *b, BcKind kind)
     for (int k = 0; k < b->nbcs; k++)
         n += b->bcs[k].kind == kind && b->bcs[k].comps;
     return n;
+}
+
+/* Whether the CPU's stress pass copies a block of particles' values entry by entry before
+ * the law runs on them (templates/body_forces.c, STAGED), rather than reading the body's
+ * arrays in the loop over particles.  Read in place, the compiler vectorises that loop for a
+ * 2D law without state; it cannot for 3D tensors or a law's state (runs of 9, 11 or 12
+ * values a particle).  The copies pay where the law calls exp, log or pow (their vector
+ * forms replace several scalar calls): the 3D column's step took 0.89 of its time so, the
+ * Taylor bar's 0.93; for a law of sums and products alone they cost more than they save (the
+ * 3D plate: 1.04), and a runtime routine (the 3D spectral split) is not vectorised at all. */
+static int stress_staged(const Model *m, const LawRoots *r, const SGraph *law)
+{
+    if (m->dim == 2 && r->nslots == 0)
+        return 0;
+    int calls = 0;
+    for (int id = 0; id < law->n; id++) {
+        const SNode *nd = &law->nodes[id];
+        if (nd->op == SN_EXT)
+            return 0;
+        calls |= (nd->op == SN_CALL && nd->fn != BI_sqrt) || nd->op == SN_POW;
+    }
+    return calls;
 }
 
 /* Each row of PLAN_FEATURES (plan.h) for body b of model m, with its law's roots r. */

@@ -3,6 +3,8 @@
 #   -DFRAGMENT=file                      the file's text must appear verbatim in it
 #   -DABSENT="a;b"  -DPRESENT="c;d"      words that must not / must appear
 #   -DCC= -DINCLUDE=                     compile it with -Wall -Wextra -Werror
+#   -DVECTORISED=ON (with CC, INCLUDE)   GCC, x86-64: the stress pass's loop over particles
+#                                        must be vectorised (AVX2, sphc's other flags)
 get_filename_component(stem ${MODEL} NAME_WE)
 file(REMOVE_RECURSE ${WORKDIR})
 file(MAKE_DIRECTORY ${WORKDIR})
@@ -41,4 +43,36 @@ if(CC)
     message(FATAL_ERROR "generated code of ${stem} does not compile warning-free:\n${err}")
   endif()
   message(STATUS "${stem}.c compiles with -Wall -Wextra -Werror")
+endif()
+if(VECTORISED)
+  # The loop over particles: after `#pragma GCC ivdep` where the pass reads the body's
+  # arrays in place, the loop around B_stress_of where it copies blocks (STAGED).
+  string(FIND "${code}" "#pragma GCC ivdep" at)
+  set(after 2) # the loop is the line after the pragma
+  if(at EQUAL -1)
+    string(FIND "${code}" "double a[T], l[T], f[T], qq[T];" at)
+    set(after 0) # the loop is the line before its first statement
+  endif()
+  set(loop 0)
+  if(NOT at EQUAL -1)
+    string(SUBSTRING "${code}" 0 ${at} before)
+    string(REGEX MATCHALL "\n" newlines "${before}")
+    list(LENGTH newlines count)
+    math(EXPR loop "${count} + ${after}")
+  endif()
+  if(loop EQUAL 0)
+    message(FATAL_ERROR "no stress loop found in the code generated for ${stem}")
+  endif()
+  execute_process(COMMAND ${CC} -std=c11 -O3 -march=x86-64-v3 -ffp-contract=fast
+                          -fno-math-errno -fno-trapping-math -fopenmp -fopt-info-vec-optimized
+                          -I${INCLUDE} -c ${WORKDIR}/${stem}.c -o ${WORKDIR}/${stem}_v.o
+                  RESULT_VARIABLE rc ERROR_VARIABLE report OUTPUT_VARIABLE out)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "generated code of ${stem} does not compile:\n${report}")
+  endif()
+  string(FIND "${report}${out}" "${stem}.c:${loop}:" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "the stress loop of ${stem} (line ${loop}) is not vectorised:\n${report}")
+  endif()
+  message(STATUS "${stem}.c:${loop}: the stress loop is vectorised")
 endif()

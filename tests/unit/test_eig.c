@@ -343,6 +343,14 @@ static void test_pos2(void)
         worst = fmax(worst, pos2_vs_pos3(s * srand1(), s * srand1(), s * srand1(), &finite));
     }
     check(finite && worst < TOL, "pos2 vs pos3 embedded, random (4000)", worst, TOL);
+    /* Where the squares of the entries over- or underflow (|A| ~ 1e150 and beyond, 1e-150 and
+     * below), mixed signs mostly: pos2 scales its radius by a power of two. */
+    worst = 0.0;
+    for (int n = 0; n < 2000; n++) {
+        double s = pow(10.0, (n % 2 ? 1.0 : -1.0) * (150.0 + 150.0 * urand()));
+        worst = fmax(worst, pos2_vs_pos3(s * srand1(), s * srand1(), s * srand1(), &finite));
+    }
+    check(finite && worst < TOL, "pos2 vs pos3 at |A| 1e150..1e300 and 1e-300..1e-150", worst, TOL);
     /* Repeated eigenvalues, zero, one zero eigenvalue, graded, rotated diag(a, -a). */
     const double cs[] = {0.0, 1.0, -1.0, 1e-300, -1e300, 4.9e-324, 3e-3};
     worst = 0.0;
