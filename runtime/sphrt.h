@@ -50,6 +50,17 @@ extern "C" {
 #else
 #define SPH_FLAT static inline __attribute__((always_inline))
 #endif
+/* SPH_IVDEP, before a loop: no iteration depends on another (GCC's ivdep, Clang's
+ * assume_safety), so the compiler need not prove that the arrays it touches never overlap. */
+#if defined(__clang__)
+#define SPH_IVDEP _Pragma("clang loop vectorize(assume_safety)")
+/* (Clang says where such a loop stays scalar anyway: a law with a branch, 3D strides) */
+#pragma clang diagnostic ignored "-Wpass-failed"
+#elif defined(__GNUC__)
+#define SPH_IVDEP _Pragma("GCC ivdep")
+#else
+#define SPH_IVDEP
+#endif
 /* glibc's vector math library (libmvec, which -lm links where it is used) has 2-, 4- and
  * 8-wide forms of these on x86-64; declared so, they let GCC vectorise the stress pass's
  * loop over a law that calls them (glibc's own headers declare them only under

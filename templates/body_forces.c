@@ -307,7 +307,7 @@ static void @B@_stress_pass(sph_body *b)
 #pragma omp parallel for schedule(static)
     for (int i0 = 0; i0 < n; i0 += BLOCK) {
         const int i1 = n - i0 < BLOCK ? n : i0 + BLOCK;
-#pragma GCC ivdep /* particle i reads and writes entry i of arrays that never overlap */
+SPH_IVDEP /* particle i reads and writes entry i of arrays that never overlap */
         for (int i = i0; i < i1; i++) {
             sph_real *Ai = Ac + (size_t)i * D * R;
             double A[D * D];

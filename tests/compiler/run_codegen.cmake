@@ -45,10 +45,10 @@ if(CC)
   message(STATUS "${stem}.c compiles with -Wall -Wextra -Werror")
 endif()
 if(VECTORISED)
-  # The loop over particles: after `#pragma GCC ivdep` where the pass reads the body's
+  # The loop over particles: after SPH_IVDEP where the pass reads the body's
   # arrays in place, the loop around B_stress_of where it copies blocks (STAGED).
-  string(FIND "${code}" "#pragma GCC ivdep" at)
-  set(after 2) # the loop is the line after the pragma
+  string(FIND "${code}" "SPH_IVDEP" at)
+  set(after 2) # the loop is the line after SPH_IVDEP
   if(at EQUAL -1)
     string(FIND "${code}" "double a[T], l[T], f[T], qq[T];" at)
     set(after 0) # the loop is the line before its first statement
