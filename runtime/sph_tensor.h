@@ -173,11 +173,13 @@ SPH_HD static inline void sph_sym_pos3(const double A[9], double Ap[9])
 SPH_HD static inline void sph_sym_pos2(double axx, double axz, double azz, double out[3])
 {
     double m = 0.5 * axx + 0.5 * azz, dh = 0.5 * axx - 0.5 * azz, r2 = dh * dh + axz * axz;
-    /* r = hypot(dh, axz): where r2 could have over- or underflowed (and for r2 = 0) the
-     * square root of the sum scaled by a power of two, exact, otherwise scale 1. */
-    const double up = r2 > 0x1p1000 ? 0x1p-600 : r2 < 0x1p-1000 ? 0x1p600 : 1.0;
+    /* r = hypot(dh, axz): where r2 could have over- or underflowed (and for r2 = 0) from dh
+     * and axz scaled by a power of two (exact), and scaled back */
+    const int big = r2 > 0x1p1000, small = r2 < 0x1p-1000;
+    const double up = big ? 0x1p-600 : small ? 0x1p600 : 1.0;
+    const double down = big ? 0x1p600 : small ? 0x1p-600 : 1.0;
     const double sx = dh * up, sz = axz * up;
-    double r = sqrt(sx * sx + sz * sz) * (r2 > 0x1p1000 ? 0x1p600 : r2 < 0x1p-1000 ? 0x1p-600 : 1.0);
+    double r = sqrt(sx * sx + sz * sz) * down;
     double l1 = m + r, l2 = m - r;        /* eigenvalues, l1 >= l2 */
     const double w = l1 / (l1 - l2);      /* (not finite for r = 0: then not selected) */
     const double a = l2 >= 0.0 ? 1.0 : l1 <= 0.0 ? 0.0 : w; /* A, 0 or the mixed form */

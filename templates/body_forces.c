@@ -178,13 +178,13 @@ static void @B@_gradient_pass(sph_body *b)
  * particles has no branches (the law and its helpers use selects) and only unit-stride
  * runs or short groups of values a particle, the compiler does several particles in one
  * vector instruction: crack branching's stress pass took 0.55 of its time so. */
+enum { @B@_BLOCK = 32 };
 //@if STAGED
 /* This body's law calls exp, log or pow, but its particles' values come in runs of 9, 11 or
  * 12 (3D tensors, the law's state), which the compiler does not vectorise in place: the
  * block's values are first copied entry by entry (entry k of its particle q at [k][q]) into
  * arrays on the stack, the loop over the block's particles reads and writes those alone,
  * and the results go back (compiler/lower/lower.c, stress_staged). */
-enum { @B@_BLOCK = 32 };
 static void @B@_stress_block(sph_body *b, int i0, int m)
 {
     enum { D = @DIM@, R = SPH_ROW(D), T = D * D, N = @B@_BLOCK };
@@ -300,13 +300,13 @@ static void @B@_stress_pass(sph_body *b)
 //@else
 static void @B@_stress_pass(sph_body *b)
 {
-    enum { D = @DIM@, R = SPH_ROW(D), BLOCK = 32 };
+    enum { D = @DIM@, R = SPH_ROW(D) };
     const int n = b->nown;
     sph_real *restrict Ac = b->A;
     @B@_gradient_pass(b);
 #pragma omp parallel for schedule(static)
-    for (int i0 = 0; i0 < n; i0 += BLOCK) {
-        const int i1 = n - i0 < BLOCK ? n : i0 + BLOCK;
+    for (int i0 = 0; i0 < n; i0 += @B@_BLOCK) {
+        const int i1 = n - i0 < @B@_BLOCK ? n : i0 + @B@_BLOCK;
 SPH_IVDEP /* particle i reads and writes entry i of arrays that never overlap */
         for (int i = i0; i < i1; i++) {
             sph_real *Ai = Ac + (size_t)i * D * R;
