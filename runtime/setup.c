@@ -115,6 +115,7 @@ static void allocate(sph_body *b)
     b->Q = zalloc_lines(n * SPH_TENSOR_SIZE(D), sizeof *b->Q);
     b->A = zalloc_lines(n * SPH_TENSOR_SIZE(D), sizeof *b->A);
     b->Cv = zalloc_lines(n * SPH_TENSOR_SIZE(D), sizeof *b->Cv);
+    b->Cs = zalloc(n, sizeof *b->Cs);
     b->psi = zalloc(n, sizeof(double));
     b->sigma = zalloc(n * 6, sizeof(double));
     b->fix = zalloc(n, 1);
@@ -635,7 +636,7 @@ void sph_body_free(sph_body *b)
         free(b->ms_list[k]);
     free(b->bc_list), free(b->bc_count), free(b->ms_list), free(b->ms_count);
     free(b->X), free(b->u), free(b->v), free(b->a), free(b->work), free(b->F), free(b->L);
-    free(b->Q), free(b->Cv), free(b->lam2), free(b->psi), free(b->sigma), free(b->fix);
+    free(b->Q), free(b->Cv), free(b->Cs), free(b->lam2), free(b->psi), free(b->sigma), free(b->fix);
     free(b->nb_start), free(b->nb), free(b->nb_k), free(b->wtab), free(b->gtab), free(b->htab);
     free(b->hb_start), free(b->hb), free(b->hb_k), free(b->stripe), free(b->stripe_sum), free(b->A);
     free(b->s), free(b->sd), free(b->sdd), free(b->H), free(b->lap), free(b->sd_n);

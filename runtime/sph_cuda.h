@@ -760,6 +760,7 @@ static sph_body *sph_cuda_body(const sph_body *h)
                               cudaMemcpyHostToDevice));
     b->Q = (sph_real *)sph_dev_alloc(n * d * d * sizeof(sph_real)); /* each stress pass */
     b->Cv = (sph_real *)sph_dev_alloc(n * d * d * sizeof(sph_real)); /* writes them whole */
+    b->Cs = (sph_real *)sph_dev_alloc(n * sizeof(sph_real));
     b->lam2 = (double *)sph_dev_copy(h->lam2, n * sizeof(double)); /* NULL without crush */
     b->psi = (double *)sph_dev_copy(h->psi, n * sizeof(double));
     b->fix = (uint8_t *)sph_dev_copy(h->fix, n);

@@ -462,6 +462,7 @@ struct sph_body {
     double *L;          /* n*dim*dim correction */
     sph_real *Q;        /* P·L (first Piola–Kirchhoff times correction), SPH_TENSOR */
     sph_real *Cv;       /* cof(F) = J F^-T for artificial viscosity, SPH_TENSOR */
+    sph_real *Cs;       /* 1 / cof(F)'s largest singular value (sph_viscous_scale) */
     double *psi;        /* n strain energy density */
     double *sigma;      /* n*6 Cauchy stress, filled at output */
     double *work;       /* n*dim scratch for integrators (symplectic: v at n) */
@@ -825,11 +826,10 @@ SPH_HD static inline double sph_cubic_smallest_root(double r)
 }
 
 /* The square of the smallest principal stretch of F: the smallest eigenvalue of C = F^T F.
- * In 2D (plane strain, F_yy = 1) the in-plane pair in closed form, with the out-of-plane 1;
- * in 3D the trigonometric solution of the characteristic cubic, to about 1e-9 relative (a few
- * 1e-7 where two stretches coincide; tests/unit/test_stretch.c).  A time-step bound uses it,
- * which does not feel that. */
-SPH_HD static inline double sph_stretch2_min(const double F[9], int dim)
+ * In 2D (plane strain, F_yy = 1) of the in-plane block, in closed form; in 3D the
+ * trigonometric solution of the characteristic cubic, to about 1e-9 relative (a few 1e-7
+ * where two stretches coincide; tests/unit/test_stretch.c). */
+SPH_HD static inline double sph_stretch2_least(const double F[9], int dim)
 {
     double C[9];
     for (int r = 0; r < 3; r++)
@@ -837,8 +837,7 @@ SPH_HD static inline double sph_stretch2_min(const double F[9], int dim)
             C[3 * r + c] = F[r] * F[c] + F[3 + r] * F[3 + c] + F[6 + r] * F[6 + c];
     if (dim == 2) {
         const double m = 0.5 * (C[0] + C[8]), d = 0.5 * (C[0] - C[8]);
-        const double l2 = m - sqrt(d * d + C[2] * C[2]);
-        return l2 < 1.0 ? l2 : 1.0;
+        return m - sqrt(d * d + C[2] * C[2]);
     }
     const double off = C[1] * C[1] + C[2] * C[2] + C[5] * C[5];
     const double q = (C[0] + C[4] + C[8]) / 3.0;
@@ -854,6 +853,24 @@ SPH_HD static inline double sph_stretch2_min(const double F[9], int dim)
                       b02 * (b01 * b12 - b1 * b02));
     r = r < -1.0 ? -1.0 : r > 1.0 ? 1.0 : r;
     return iso ? q : q + 2.0 * p * sph_cubic_smallest_root(r); /* cos(acos(r) / 3 + 2 pi / 3) */
+}
+
+/* The same with the out-of-plane stretch 1 of plane strain counted in 2D.  A time-step bound
+ * uses it, which does not feel the 1e-7. */
+SPH_HD static inline double sph_stretch2_min(const double F[9], int dim)
+{
+    const double l2 = sph_stretch2_least(F, dim);
+    return dim == 2 && l2 > 1.0 ? 1.0 : l2;
+}
+
+/* 1 / the largest singular value of cof F = J F^-T (in 2D of its in-plane block), which is
+ * lambda_min / J: what the artificial viscosity scales its pair's approach rate by to measure
+ * it in the pair's reference length as eq. 60 does (templates/body_forces.c).  1 for F = I
+ * and for any rotation; 0 for a degenerate F. */
+SPH_HD static inline double sph_viscous_scale(const double F[9], int dim)
+{
+    const double l2 = sph_stretch2_least(F, dim), J = fabs(sph_det3(F));
+    return sqrt(l2 > 0.0 ? l2 : 0.0) / (J > 1e-300 ? J : 1e-300);
 }
 
 /* C = A B */

@@ -92,11 +92,12 @@ static void @B@_momentum_pass(sph_body *b)
 {
     enum { D = @DIM@ };
 //@if MPI
-    /* the halo's Q (cof F, F), entry by entry on the device (SPH_TENSOR: stride n) */
+    /* the halo's Q (cof F and Cs, F), entry by entry on the device (SPH_TENSOR: stride n) */
     const sph_cuda_field halo_in[] = {
         {b->Q, sizeof *b->Q, D * D, 1, (size_t)b->n},
 //@if VISCOSITY
         {b->Cv, sizeof *b->Cv, D * D, 1, (size_t)b->n},
+        {b->Cs, sizeof *b->Cs, 1, 1, 1},
 //@endif
 //@if HOURGLASS
         {b->F, sizeof *b->F, 9, 9, 1},
@@ -136,8 +137,8 @@ static void @B@_momentum_pass(sph_body *b)
                 f[r] = s2 * inv_rho;
             }
 //@if VISCOSITY
-            /* G_ij along the viscous direction fv = (cof F_i + cof F_j) w, as in
-             * templates/body_forces.c */
+            /* G_ij along the viscous direction fv = (cof F_i + cof F_j) w, scaled by the
+             * pair's mean Cs, as in templates/body_forces.c */
             sph_real fv[D], vw = 0;
             for (int r = 0; r < D; r++) {
                 fv[r] = 0;
@@ -147,10 +148,12 @@ static void @B@_momentum_pass(sph_body *b)
             }
             /* hpi = pi / 2 on approach, the factors folded (templates/body_forces.c) */
 //@if BETA2
-            const sph_real g2 = g * vw, d = g2 - fabs(g2); /* 4 min(G, 0) */
+            const sph_real g2 = g * vw * (sph_real)0.5 * (b->Cs[i] + b->Cs[j]);
+            const sph_real d = g2 - fabs(g2); /* 4 min(G, 0) */
             const sph_real hpi = d * ((sph_real)(-0.125 * @BETA1@ * @C0@) + d * (sph_real)(0.03125 * @BETA2@));
 //@else
-            const sph_real x = g * (sph_real)(-0.25 * @BETA1@ * @C0@) * vw;
+            const sph_real cs = b->Cs[i] + b->Cs[j];
+            const sph_real x = g * (sph_real)(-0.125 * @BETA1@ * @C0@) * vw * cs;
             const sph_real hpi = x > 0 ? x : 0;
 //@endif
             for (int r = 0; r < D; r++)

@@ -172,6 +172,18 @@ static void @B@_gradient_pass(sph_body *b)
 //@endif
 }
 
+//@if VISCOSITY
+/* Cs_i also in the padding entry of cof F_i's first column where the columns have one (3D:
+ * four entries for three), which the momentum pass loads with the column: read from b->Cs,
+ * it would be one more cache line a pair, and cost the 3D pass a third of its time. */
+static inline void @B@_spare_Cs(sph_body *b, int i)
+{
+    enum { D = @DIM@, R = SPH_ROW(D) };
+    if (R > D)
+        b->Cv[SPH_TENSOR(i, R - 1, 0, D, b->n)] = b->Cs[i];
+}
+
+//@endif
 /* Pass 2, per particle: F, the law, P L and cof(F) (@B@_stress_of), in blocks of particles
  * the threads take in order (static: the runs of particles the pair passes' stripes give
  * them).  Within a block no particle depends on another, and where the loop over its
@@ -192,7 +204,7 @@ static void @B@_stress_block(sph_body *b, int i0, int m)
     sph_real *restrict Ab = b->A + (size_t)i0 * D * R;
     const double *restrict Lb = b->L + (size_t)i0 * T;
 //@if VISCOSITY
-    double Cv[T][N];
+    double Cv[T][N], Cs[N];
 //@endif
 //@if FRACTURE
     double s[N], lap[N], H[N], sdd[N];
@@ -245,7 +257,7 @@ static void @B@_stress_block(sph_body *b, int i0, int m)
                       &lam2[q],
 //@endif
 //@if VISCOSITY
-                      &psi[q], f, qq, cv);
+                      &psi[q], f, qq, cv, &Cs[q]);
 //@else
                       &psi[q], f, qq);
 //@endif
@@ -276,6 +288,10 @@ static void @B@_stress_block(sph_body *b, int i0, int m)
 //@endif
             }
         b->psi[i] = psi[q];
+//@if VISCOSITY
+        b->Cs[i] = (sph_real)Cs[q];
+        @B@_spare_Cs(b, (int)i);
+//@endif
 //@if FRACTURE
         b->H[i] = H[q], b->sdd[i] = sdd[q];
 //@endif
@@ -317,6 +333,9 @@ SPH_IVDEP /* particle i reads and writes entry i of arrays that never overlap */
             for (int k = 0; k < D * R; k++)
                 Ai[k] = 0; /* ready for the next step's gradient pass */
             @B@_particle_stress(b, i, A);
+//@if VISCOSITY
+            @B@_spare_Cs(b, i);
+//@endif
         }
     }
 }
@@ -344,8 +363,9 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
 //@if VISCOSITY
     const double *restrict v = b->v;
     const vec *restrict Cv = (const vec *)b->Cv;
-    const sph_real *restrict gtab = b->gtab;
+    const sph_real *restrict gtab = b->gtab, *restrict Cs = b->Cs;
     const vec *Ci = Cv + (size_t)i * D;
+    const sph_real Csi = Cs[i];
     sph_real pv = 0;
 //@endif
     vec fi = {0};
@@ -360,12 +380,15 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
 //@if VISCOSITY
         /* The direction the viscous pressure acts along, fv = (J F^-T)_i w + (J F^-T)_j w
          * (eq. 57 from both sides, without the correction L), and G_ij of eq. 60 measured
-         * along it (gtab holds h / (r^2 + 0.001 h^2) in the units of w).  In the reference
-         * configuration fv/2 is w, parallel to X_i - X_j, so this is eq. 60; fv turns with the
-         * pair, so a rigid rotation gives G = 0 at any angle, and the viscous power pi G is
-         * never positive (eq. 60 taken along X_i - X_j feeds energy in once a pair has turned
-         * by more than 90 degrees, and L in fv lets a boundary pair's G see a rigid rotation;
-         * docs/stability.md). */
+         * along it (gtab holds h / (r^2 + 0.001 h^2) in the units of w) and scaled by the mean
+         * of the pair's Cs = lambda_min / J.  In the reference configuration fv/2 is w,
+         * parallel to X_i - X_j, and Cs is 1, so this is eq. 60; fv turns with the pair, so a
+         * rigid rotation gives G = 0 at any angle, and the viscous power pi G is never
+         * positive (eq. 60 taken along X_i - X_j feeds energy in once a pair has turned by
+         * more than 90 degrees, and L in fv lets a boundary pair's G see a rigid rotation).
+         * fv/2 is longer than w by up to 1 / Cs, where the body is compressed along the pair:
+         * Cs takes that out, so that G is the approach rate in the pair's reference length,
+         * as in eq. 60, not in its current, shorter one (docs/stability.md). */
         const vec *Cj = Cv + (size_t)j * D;
         vec fv = {0};
         for (int c = 0; c < D; c++)
@@ -373,17 +396,24 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
         sph_real vw = 0;
         for (int r = 0; r < D; r++)
             vw += (sph_real)(v[i * D + r] - v[j * D + r]) * fv[r];
+        /* Cs_i + Cs_j, in 3D from the columns' padding entries (@B@_spare_Cs; fv's padding
+         * entry, and so f's, is not a number anything reads) */
+        const sph_real cs = R > D ? (Ci[0] + Cj[0])[R - 1] : Csi + Cs[j];
         /* hpi = pi / 2 of eq. 58 (times rho0) on approach (G < 0), zero as the pair separates
          * (Monaghan and Gingold's viscosity, the paper's [61]): pi = -beta1 c0 G + beta2 G^2,
-         * G = gtab vw / 2, the constant factors folded.  The table entry times its constant
-         * does not wait for vw, and the select picks between two values, not two products,
-         * which the compiler makes a compare-and-move: a branch there (taken for about every
-         * other pair, at random) cost the 3D column's momentum pass a quarter of its time. */
+         * G = gtab vw (Cs_i + Cs_j) / 4, the constant factors folded.  What does not wait for
+         * vw is multiplied first: the pass is as slow as its longest chain of dependent
+         * operations, and one product more on the way from vw to hpi cost the 3D cases' pass
+         * a third.  The select picks between two values, not two products, which the compiler
+         * makes a compare-and-move: a branch there (taken for about every other pair, at
+         * random) cost the 3D column's momentum pass a quarter of its time. */
 //@if BETA2
-        const sph_real g = gtab[k] * vw, d = g - fabs(g); /* 2 G - 2 |G| = 4 min(G, 0) */
+        const sph_real g = gtab[k] * (sph_real)0.5 * cs * vw;
+        const sph_real d = g - fabs(g); /* 2 G - 2 |G| = 4 min(G, 0) */
         const sph_real hpi = d * ((sph_real)(-0.125 * @BETA1@ * @C0@) + d * (sph_real)(0.03125 * @BETA2@));
 //@else
-        const sph_real x = gtab[k] * (sph_real)(-0.25 * @BETA1@ * @C0@) * vw; /* hpi, either way */
+        const sph_real gc = gtab[k] * (sph_real)(-0.125 * @BETA1@ * @C0@) * cs;
+        const sph_real x = gc * vw; /* hpi, either way */
         const sph_real hpi = x > 0 ? x : 0;
 //@endif
         f -= hpi * fv;
@@ -446,12 +476,13 @@ static void @B@_momentum_pass(sph_body *b)
     double *restrict acc = b->a;
 //@if MPI
     /* The halo's values of what the pairs read of a neighbour besides u and v: Q, and cof F
-     * for the viscosity, F for the hourglass control; on their way during the pairs of own
+     * and Cs for the viscosity, F for the hourglass control; on their way during the pairs of own
      * particles (docs/mpi.md). */
     const sph_field halo_in[] = {
         {b->Q, SPH_TENSOR_SIZE(D) * sizeof *b->Q},
 //@if VISCOSITY
         {b->Cv, SPH_TENSOR_SIZE(D) * sizeof *b->Cv},
+        SPH_FIELD(b->Cs, 1),
 //@endif
 //@if HOURGLASS
         SPH_FIELD(b->F, 9),

@@ -26,11 +26,11 @@ SPH_FN void @B@_phase_move(double *s, double *sd, double h)
  * From A_i = sum_j V_j (u_j - u_i) (x) grad W_ij and the particle's correction L_i: F = I +
  * A L^T (eq. 53 with the corrected gradient), the material law (S, psi), P = F S (eq. 2), and
  * what the momentum pass needs of each particle: Q = P L and, for artificial viscosity,
- * Cv = cof(F) = J F^-T.  Arithmetic on its arguments alone (no array of the body's), so that
- * the CPU's stress pass can run it on several particles in one vector instruction
- * (body_forces.c); @B@_particle_stress below calls it for particle i of the body.  D x D
- * tensors row by row; Fp gets F's in-plane block (the out-of-plane entries of a 2D F never
- * change).
+ * Cv = cof(F) = J F^-T and Cs = 1 / its largest singular value.  Arithmetic on its arguments
+ * alone (no array of the body's), so that the CPU's stress pass can run it on several
+ * particles in one vector instruction (body_forces.c); @B@_particle_stress below calls it for
+ * particle i of the body.  D x D tensors row by row; Fp gets F's in-plane block (the
+ * out-of-plane entries of a 2D F never change).
 //@if FRACTURE
  * With fracture: F = I where s <= s_l (eq. 63), the stress degraded by s (eq. 18), the
  * history H = max(H, psi+) (eq. 8) and the phase-field acceleration sdd of eq. 61 from the
@@ -52,7 +52,7 @@ SPH_FLAT void @B@_stress_of(const double *A, const double *L,
 //@endif
                             double *psi, double *Fp, double *Q
 //@if VISCOSITY
-                            , double *Cv
+                            , double *Cv, double *Cs
 //@endif
                             )
 {
@@ -124,6 +124,9 @@ SPH_FLAT void @B@_stress_of(const double *A, const double *L,
     for (int r = 0; r < D; r++)
         for (int c = 0; c < D; c++)
             Cv[r * D + c] = sph_cofactor(F, sph_axis(D, r), sph_axis(D, c)) * vdeg;
+    /* lambda_min / J: a pair's approach rate along (cof F_i + cof F_j) grad W, times this,
+     * is in the pair's reference length, as eq. 60 takes it (body_forces.c) */
+    *Cs = sph_viscous_scale(F, D);
 //@endif
 }
 
@@ -136,7 +139,7 @@ SPH_FLAT void @B@_particle_stress(sph_body *b, int i, const double *A)
     enum { D = @DIM@ };
     double F[D * D], Q[D * D];
 //@if VISCOSITY
-    double Cv[D * D];
+    double Cv[D * D], Cs;
 //@endif
 //@if STATE
     double *st = b->state + (size_t)i * @NSTATE@, st_new[@NSTATE@];
@@ -152,7 +155,7 @@ SPH_FLAT void @B@_particle_stress(sph_body *b, int i, const double *A)
                   &b->lam2[i],
 //@endif
 //@if VISCOSITY
-                  &b->psi[i], F, Q, Cv);
+                  &b->psi[i], F, Q, Cv, &Cs);
 //@else
                   &b->psi[i], F, Q);
 //@endif
@@ -171,6 +174,9 @@ SPH_FLAT void @B@_particle_stress(sph_body *b, int i, const double *A)
             b->Cv[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)Cv[r * D + c];
 //@endif
         }
+//@if VISCOSITY
+    b->Cs[i] = (sph_real)Cs;
+//@endif
 }
 //@endif
 

@@ -2,7 +2,9 @@
  * (sph_stretch2_min, sphrt.h) against the Jacobi eigenvalues of C = F^T F (sph_tensor.h):
  * random deformation gradients in 3D and in plane strain, rotations (which must not change
  * it), repeated and nearly repeated stretches, the identity, and a body crushed to 1/50 along
- * one direction. */
+ * one direction.  And the artificial viscosity's scale lambda_min / J (sph_viscous_scale: 1 /
+ * the largest singular value of cof F) against the stretches F was made of, in 3D and in the
+ * plane, where it must not count the out-of-plane 1. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -59,7 +61,8 @@ int main(void)
         const double e = fabs(sph_stretch2_min(I, dim) - 1);
         check(e < 1e-15, dim == 2 ? "identity, 2D: 1" : "identity, 3D: 1", e, 1e-15);
     }
-    double worst3 = 0, worst2 = 0, worst_rep = 0, worst_crush = 0;
+    double worst3 = 0, worst2 = 0, worst_rep = 0, worst_crush = 0, worst_vs3 = 0, worst_vs2 = 0;
+    double worst_rot = 0;
     for (int t = 0; t < 20000; t++) {
         double u[3] = {0.05 + 2 * urand(), 0.05 + 2 * urand(), 0.05 + 2 * urand()}, F[9];
         make_F(u, F, 3);
@@ -80,6 +83,15 @@ int main(void)
         double uc[3] = {0.02, 1 + urand(), 1 + urand()}, Fc[9];
         make_F(uc, Fc, 3);
         worst_crush = fmax(worst_crush, fabs(sph_stretch2_min(Fc, 3) / (0.02 * 0.02) - 1));
+        /* the viscosity's scale: lambda_min / J of the stretches F was made of */
+        const double vs3 = fmin(u[0], fmin(u[1], u[2])) / (u[0] * u[1] * u[2]);
+        worst_vs3 = fmax(worst_vs3, fabs(sph_viscous_scale(F, 3) / vs3 - 1));
+        const double vs2 = fmin(u2[0], u2[2]) / (u2[0] * u2[2]);
+        worst_vs2 = fmax(worst_vs2, fabs(sph_viscous_scale(F2, 2) / vs2 - 1));
+        const double one[3] = {1, 1, 1};
+        double Rot[9];
+        make_F(one, Rot, 2 + t % 2);
+        worst_rot = fmax(worst_rot, fabs(sph_viscous_scale(Rot, 2 + t % 2) - 1));
     }
     check(worst3 < 1e-8, "3D, random R U: relative error of lambda_min^2", worst3, 1e-8);
     check(worst2 < 1e-10, "2D plane strain, random R U: relative error", worst2, 1e-10);
@@ -87,6 +99,9 @@ int main(void)
      * a few 1e-7, which a time-step bound does not feel */
     check(worst_rep < 1e-6, "repeated stretches: relative error", worst_rep, 1e-6);
     check(worst_crush < 1e-6, "crushed to 0.02: lambda_min^2 / 0.0004 - 1", worst_crush, 1e-6);
+    check(worst_vs3 < 1e-8, "viscous scale, 3D: relative error of lambda_min / J", worst_vs3, 1e-8);
+    check(worst_vs2 < 1e-10, "viscous scale, plane strain: relative error", worst_vs2, 1e-10);
+    check(worst_rot < 1e-6, "viscous scale of a rotation: 1", worst_rot, 1e-6);
     printf(failures ? "%d check(s) FAILED\n" : "all checks passed\n", failures);
     return failures ? 1 : 0;
 }
