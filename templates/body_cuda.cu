@@ -123,6 +123,7 @@ static void @B@_momentum_pass(sph_body *b)
         for (int r = 0; r < D; r++)
             for (int c = 0; c < D; c++)
                 Ci[r * D + c] = b->Cv[SPH_TENSOR(i, r, c, D, n)];
+        const sph_real Csi = b->Cs[i];
         sph_real pv = 0;
 //@endif
         sph_real fi[D] = {0};
@@ -146,14 +147,14 @@ static void @B@_momentum_pass(sph_body *b)
                     fv[r] += (Ci[r * D + c] + b->Cv[SPH_TENSOR(j, r, c, D, n)]) * w[c];
                 vw += (sph_real)(b->v[i * D + r] - b->v[j * D + r]) * fv[r];
             }
+            const sph_real cs = Csi + b->Cs[j];
             /* hpi = pi / 2 on approach, the factors folded (templates/body_forces.c) */
 //@if BETA2
-            const sph_real g2 = g * vw * (sph_real)0.5 * (b->Cs[i] + b->Cs[j]);
+            const sph_real g2 = g * (sph_real)0.5 * cs * vw;
             const sph_real d = g2 - fabs(g2); /* 4 min(G, 0) */
             const sph_real hpi = d * ((sph_real)(-0.125 * @BETA1@ * @C0@) + d * (sph_real)(0.03125 * @BETA2@));
 //@else
-            const sph_real cs = b->Cs[i] + b->Cs[j];
-            const sph_real x = g * (sph_real)(-0.125 * @BETA1@ * @C0@) * vw * cs;
+            const sph_real x = g * (sph_real)(-0.125 * @BETA1@ * @C0@) * cs * vw;
             const sph_real hpi = x > 0 ? x : 0;
 //@endif
             for (int r = 0; r < D; r++)

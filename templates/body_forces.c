@@ -482,7 +482,11 @@ static void @B@_momentum_pass(sph_body *b)
         {b->Q, SPH_TENSOR_SIZE(D) * sizeof *b->Q},
 //@if VISCOSITY
         {b->Cv, SPH_TENSOR_SIZE(D) * sizeof *b->Cv},
+//@if DIM3
+        /* (Cs in cof F's padding, @B@_spare_Cs) */
+//@else
         SPH_FIELD(b->Cs, 1),
+//@endif
 //@endif
 //@if HOURGLASS
         SPH_FIELD(b->F, 9),
