@@ -393,9 +393,16 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
         vec fv = {0};
         for (int c = 0; c < D; c++)
             fv += (Ci[c] + Cj[c]) * w[c];
+//@if VEC_VA
+        /* (v_i - v_j) . fv with v_j as one vector load (2D in double: a particle's two
+         * components are a vec) */
+        const vec dvf = (*(const vec *)(v + i * D) - *(const vec *)(v + j * D)) * fv;
+        const sph_real vw = dvf[0] + dvf[1];
+//@else
         sph_real vw = 0;
         for (int r = 0; r < D; r++)
             vw += (sph_real)(v[i * D + r] - v[j * D + r]) * fv[r];
+//@endif
         /* Cs_i + Cs_j, in 3D from the columns' padding entries (@B@_spare_Cs; fv's padding
          * entry, and so f's, is not a number anything reads) */
         const sph_real cs = R > D ? (Ci[0] + Cj[0])[R - 1] : Csi + Cs[j];
@@ -428,9 +435,16 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
             f[r] = fh[r];
 //@endif
         fi += f;
+//@if VEC_VA
+        /* j's share as one vector read-modify-write: written component by component, the
+         * scalar loads and stores took a fifth of the 2D pass */
+        if (both)
+            *(vec *)(acc + j * D) -= f;
+//@else
         if (both)
             for (int r = 0; r < D; r++)
                 acc[j * D + r] -= f[r];
+//@endif
     }
 //@if VISCOSITY
     *power = both ? pv : (sph_real)0.5 * pv;
