@@ -414,6 +414,14 @@ typedef struct sph_monitor_sums {
     typedef sph_real name                                                                      \
         __attribute__((vector_size((R) * sizeof(sph_real)), aligned(sizeof(sph_real)), may_alias))
 
+/* Two doubles, aligned like one, aliasing double: the x and y components of a particle's
+ * velocity or acceleration (runs of D doubles) in one vector load or store (the CPU's pair
+ * passes). */
+#ifndef __CUDACC__
+typedef double sph_double2
+    __attribute__((vector_size(2 * sizeof(double)), aligned(sizeof(double)), may_alias));
+#endif
+
 /* A time the passes read, t or dt: a double on the CPU; in the CUDA target (sph_cuda.h defines
  * it first) a reference to the device's clock, which the device advances itself. */
 #ifndef SPH_TIME_DEFINED

@@ -393,11 +393,13 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
         vec fv = {0};
         for (int c = 0; c < D; c++)
             fv += (Ci[c] + Cj[c]) * w[c];
-//@if VEC_VA
-        /* (v_i - v_j) . fv with v_j as one vector load (2D in double: a particle's two
-         * components are a vec) */
-        const vec dvf = (*(const vec *)(v + i * D) - *(const vec *)(v + j * D)) * fv;
-        const sph_real vw = dvf[0] + dvf[1];
+//@if DOUBLE
+        /* (v_i - v_j) . fv, x and y with one vector load of v_j (sph_double2) */
+        const sph_double2 dv = *(const sph_double2 *)(v + i * D) - *(const sph_double2 *)(v + j * D);
+        const sph_double2 dvf = dv * (sph_double2){fv[0], fv[1]};
+        sph_real vw = dvf[0] + dvf[1];
+        for (int r = 2; r < D; r++)
+            vw += (v[i * D + r] - v[j * D + r]) * fv[r];
 //@else
         sph_real vw = 0;
         for (int r = 0; r < D; r++)
@@ -435,11 +437,15 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
             f[r] = fh[r];
 //@endif
         fi += f;
-//@if VEC_VA
-        /* j's share as one vector read-modify-write: written component by component, the
-         * scalar loads and stores took a fifth of the 2D pass */
-        if (both)
-            *(vec *)(acc + j * D) -= f;
+//@if DOUBLE
+        /* j's share, x and y as one vector read-modify-write: written component by component,
+         * the loads and stores (with those of v_j above) took a fifth of the 2D pass and a
+         * sixth of the 3D one */
+        if (both) {
+            *(sph_double2 *)(acc + j * D) -= (sph_double2){f[0], f[1]};
+            for (int r = 2; r < D; r++)
+                acc[j * D + r] -= f[r];
+        }
 //@else
         if (both)
             for (int r = 0; r < D; r++)
