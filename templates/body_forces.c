@@ -26,8 +26,10 @@ typedef struct {
 static inline void @B@_pair_tensor(const double *restrict uj, const double ui[3], @B@_vec w,
                                    @B@_tensor *t)
 {
-    const sph_real d0 = (sph_real)(uj[0] - ui[0]), d1 = (sph_real)(uj[1] - ui[1]),
-                   d2 = (sph_real)(uj[2] - ui[2]);
+    /* x and y of u_j - u_i with one vector load (sph_double2): component by component, the
+     * Taylor bar's gradient pass took an eighth longer */
+    const sph_double2 d01 = *(const sph_double2 *)uj - *(const sph_double2 *)ui;
+    const sph_real d0 = (sph_real)d01[0], d1 = (sph_real)d01[1], d2 = (sph_real)(uj[2] - ui[2]);
     t->r01 = (@B@_vec8){d0, d0, d0, d0, d1, d1, d1, d1} *
              (@B@_vec8){w[0], w[1], w[2], w[3], w[0], w[1], w[2], w[3]};
     t->r2 = d2 * w;
@@ -50,7 +52,8 @@ typedef struct {
 static inline void @B@_pair_tensor(const double *restrict uj, const double ui[2], @B@_vec w,
                                    @B@_tensor *t)
 {
-    const sph_real d0 = (sph_real)(uj[0] - ui[0]), d1 = (sph_real)(uj[1] - ui[1]);
+    const sph_double2 d01 = *(const sph_double2 *)uj - *(const sph_double2 *)ui;
+    const sph_real d0 = (sph_real)d01[0], d1 = (sph_real)d01[1];
     t->r01 = (@B@_vec4){d0, d0, d1, d1} * (@B@_vec4){w[0], w[1], w[0], w[1]};
 }
 static inline void @B@_tensor_add(@B@_tensor *to, const @B@_tensor *t)
