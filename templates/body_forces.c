@@ -396,18 +396,12 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
         vec fv = {0};
         for (int c = 0; c < D; c++)
             fv += (Ci[c] + Cj[c]) * w[c];
-//@if DOUBLE
         /* (v_i - v_j) . fv, x and y with one vector load of v_j (sph_double2) */
         const sph_double2 dv = *(const sph_double2 *)(v + i * D) - *(const sph_double2 *)(v + j * D);
         const sph_double2 dvf = dv * (sph_double2){fv[0], fv[1]};
-        sph_real vw = dvf[0] + dvf[1];
+        sph_real vw = (sph_real)(dvf[0] + dvf[1]);
         for (int r = 2; r < D; r++)
-            vw += (v[i * D + r] - v[j * D + r]) * fv[r];
-//@else
-        sph_real vw = 0;
-        for (int r = 0; r < D; r++)
             vw += (sph_real)(v[i * D + r] - v[j * D + r]) * fv[r];
-//@endif
         /* Cs_i + Cs_j, in 3D from the columns' padding entries (@B@_spare_Cs; fv's padding
          * entry, and so f's, is not a number anything reads) */
         const sph_real cs = R > D ? (Ci[0] + Cj[0])[R - 1] : Csi + Cs[j];
@@ -440,7 +434,6 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
             f[r] = fh[r];
 //@endif
         fi += f;
-//@if DOUBLE
         /* j's share, x and y as one vector read-modify-write: written component by component,
          * the loads and stores (with those of v_j above) took a fifth of the 2D pass and a
          * sixth of the 3D one */
@@ -449,11 +442,6 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
             for (int r = 2; r < D; r++)
                 acc[j * D + r] -= f[r];
         }
-//@else
-        if (both)
-            for (int r = 0; r < D; r++)
-                acc[j * D + r] -= f[r];
-//@endif
     }
 //@if VISCOSITY
     *power = both ? pv : (sph_real)0.5 * pv;

@@ -71,7 +71,7 @@ static void @B@_update(sph_body *b, double dt)
 //@endif
     /* simd: the particles are independent, and the loop has no branches (selects), so that
      * the compiler does several in one vector instruction (crack branching's update took
-     * 0.6 of its time so) */
+     * about half its time so) */
 //@if CRUSH
 #pragma omp parallel for simd schedule(static) reduction(max : vmax2, amax2) \
     reduction(+ : vsum2, asum2) reduction(min : lam2min)

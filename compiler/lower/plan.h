@@ -32,7 +32,6 @@
     X(symplectic, NULL, SYMPLECTIC, m->integrator == INTEGRATOR_SYMPLECTIC) /* else Verlet */      \
     X(pair_terms, NULL, PAIR_TERMS, b->hourglass > 0) /* any term of B_pair_terms */             \
     X(dim3, NULL, DIM3, m->dim == 3) /* else 2D (plane strain) */                               \
-    X(double_real, NULL, DOUBLE, !m->single) /* sph_real is double (else precision single) */   \
     X(staged, NULL, STAGED, stress_staged(m, r, &p->law)) /* the CPU's stress pass by blocks */
 
 /* The numbers of a body's code that the templates read, one row each:
