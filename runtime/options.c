@@ -1,7 +1,7 @@
 /* options.c — the command line of a generated program.
  *
  *   --out DIR  --threads N  --end T  --every T  --frames T  --checkpoint T  --restart FILE
- *   --overwrite  --quiet  --progress T  --profile  --partition N  --help | -h
+ *   --overwrite  --quiet  --progress T  --profile  --partition N  --no-stencil  --help | -h
  *
  * Options with a value also accept the spelling --opt=value. */
 #include "output.h"
@@ -14,7 +14,7 @@
 
 typedef enum {
     OPT_OUT, OPT_THREADS, OPT_END, OPT_EVERY, OPT_FRAMES, OPT_CHECKPOINT, OPT_RESTART,
-    OPT_OVERWRITE, OPT_QUIET, OPT_PROGRESS, OPT_PROFILE, OPT_PARTITION, OPT_HELP
+    OPT_OVERWRITE, OPT_QUIET, OPT_PROGRESS, OPT_PROFILE, OPT_PARTITION, OPT_NO_STENCIL, OPT_HELP
 } opt_id;
 
 typedef struct {
@@ -29,6 +29,7 @@ static const opt_info OPTIONS[] = {
     {"--restart", OPT_RESTART, 1}, {"--overwrite", OPT_OVERWRITE, 0},
     {"--quiet", OPT_QUIET, 0},     {"--progress", OPT_PROGRESS, 1},
     {"--profile", OPT_PROFILE, 0}, {"--partition", OPT_PARTITION, 1},
+    {"--no-stencil", OPT_NO_STENCIL, 0},
     {"--help", OPT_HELP, 0},       {"-h", OPT_HELP, 0},
 };
 #define NOPTIONS (int)(sizeof OPTIONS / sizeof OPTIONS[0])
@@ -68,6 +69,8 @@ static void usage(FILE *f, const char *prog, const char *model)
             "                written to summary.json\n"
             "  --partition N  report how each body would be decomposed for N processes\n"
             "                (particles and halo per part) and exit, without running\n"
+            "  --no-stencil  every pair through the neighbour lists, none through the\n"
+            "                lattice stencil (the same sums, in another order: a check)\n"
             "  -h, --help    show this help and exit\n",
             prog, model, model);
 }
@@ -218,6 +221,8 @@ int sph_parse_options(sph_options *o, const char *model_name, int argc, char **a
                 o->quiet = 1;
             else if (opt->id == OPT_OVERWRITE)
                 o->overwrite = 1;
+            else if (opt->id == OPT_NO_STENCIL)
+                o->no_stencil = 1;
             else
                 o->profile = 1;
             continue;

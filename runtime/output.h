@@ -113,6 +113,7 @@ typedef struct {
     const char *restart;  /* --restart FILE: resume from this checkpoint (NULL: none) */
     int quiet;            /* --quiet */
     int profile;          /* --profile: the time of each pass of the step */
+    int no_stencil;       /* --no-stencil: no lattice stencil in the pair passes */
     int overwrite;        /* --overwrite: replace the outputs of an earlier run in out_dir */
     double progress;      /* --progress T: a progress line every T s in a log (0: none) */
 } sph_options;

@@ -145,10 +145,14 @@ static void allocate(sph_body *b)
 }
 
 /* Pairs at exactly the support radius have a zero kernel gradient and contribute nothing to
- * any pass; removing them saves a sixth of the pair work on a lattice (24 -> 20 in 2D).  In
- * single precision, pairs whose gradient is below 1e-30 of the largest go too (at the very
- * edge of the support): in float it underflows, and the viscosity factor of eq. 60 (about
- * 1/|w|) would overflow.  The gradients are recomputed (sph_pair_gradient) rather than kept
+ * any pass; removing them saves a sixth of the pair work on a lattice (24 -> 20 in 2D).
+ * Pairs whose gradient is below 1e-14 of the largest go too: they lie at the support radius
+ * up to the rounding of their distance (the gradient there is of the order of that rounding
+ * squared or cubed), less than a pair sum's rounding, and whether the search kept such a
+ * pair depended on that rounding, particle by particle, so that the particles of one
+ * lattice had different neighbour lists (no lattice stencil, stencil.c).  In single
+ * precision the bound is 1e-30 of the largest: in float the gradient underflows, and the
+ * viscosity factor of eq. 60 (about 1/|w|) would overflow.  The gradients are recomputed (sph_pair_gradient) rather than kept
  * from sph_gradients: 24 bytes a pair in 3D, most of the set-up's memory. */
 static int silent_pair(const sph_body *b, int i, int p, sph_kernel_kind kernel, double tiny)
 {
@@ -164,17 +168,16 @@ static void drop_silent_pairs(sph_body *b, sph_kernel_kind kernel)
 {
     const int D = b->dim, n = b->nown; /* (the rows of own particles) */
     double wmax = 0;
-    if (sizeof(sph_real) < sizeof(double)) {
 #pragma omp parallel for schedule(dynamic, 1024) reduction(max : wmax)
-        for (int i = 0; i < n; i++)
-            for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
-                double w[3];
-                sph_pair_gradient(b->X, D, i, b->nb[p], kernel, b->h, b->vol, w);
-                for (int c = 0; c < D; c++)
-                    wmax = fmax(wmax, fabs(w[c]));
-            }
-    }
-    const double tiny = sizeof(sph_real) < sizeof(double) ? 1e-30 * wmax : 0.0;
+    for (int i = 0; i < n; i++)
+        for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
+            double w[3];
+            sph_pair_gradient(b->X, D, i, b->nb[p], kernel, b->h, b->vol, w);
+            for (int c = 0; c < D; c++)
+                wmax = fmax(wmax, fabs(w[c]));
+        }
+    b->par->max(&wmax, 1); /* (the same pairs dropped on any number of processes) */
+    const double tiny = (sizeof(sph_real) < sizeof(double) ? 1e-30 : 1e-14) * wmax;
     int *start = zalloc((size_t)n + 1, sizeof(int));
 #pragma omp parallel for schedule(dynamic, 1024)
     for (int i = 0; i < n; i++) { /* the pairs each particle keeps (silent ones marked -1) */
@@ -618,6 +621,7 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, cons
     SPH_TIMED("set-up: silent pairs", drop_silent_pairs(b, m->kernel));
     SPH_TIMED("set-up: offset tables", offset_tables(b, m->kernel));
     SPH_TIMED("set-up: half lists and stripes", half_lists(b));
+    SPH_TIMED("set-up: lattice stencil", sph_stencil_setup(b));
     SPH_TIMED("set-up: arrays", allocate(b));
     SPH_TIMED("set-up: BC and plane selections", selections(b, d, m->t_end));
     if (d->fracture)
@@ -641,6 +645,7 @@ void sph_body_free(sph_body *b)
     free(b->hb_start), free(b->hb), free(b->hb_k), free(b->stripe), free(b->stripe_sum), free(b->A);
     free(b->s), free(b->sd), free(b->sdd), free(b->H), free(b->lap), free(b->sd_n);
     free(b->ltab), free(b->state);
+    free(b->st_k), free(b->st_o), free(b->st_run), free(b->st_skip);
 }
 
 /* ------------------------------------------------------------------ measured quantities */

@@ -493,6 +493,19 @@ struct sph_body {
     double *stripe_sum;   /* nstripes: a sum over each stripe's pairs (the viscous power),
                            * added up in stripe order after the pass: the same bits on any
                            * number of threads */
+    /* The lattice stencil (stencil.c; CPU only).  Where particles sit on a lattice, most
+     * have the same half list relative to their own index: neighbours i + st_o[q] at offset
+     * table entries st_k[q], q < st_m.  A particle whose pairs are exactly those and their
+     * mirror images (i - st_o[q], the same entries as i - st_o[q] sees them), none with the
+     * halo, belongs to one of the runs [st_run[2r], st_run[2r + 1]) of consecutive such
+     * particles (ascending, r < nruns).  The pair passes do a run offset by offset, the
+     * same pair of many particles in one vector instruction; the gradient pass leaves out the
+     * half lists of the st_skip particles (in a run, and so are all their half lists'
+     * neighbours), whose sums the stress pass takes from the stencil.  st_m = 0, nruns = 0:
+     * none (off a lattice, or the program's --no-stencil). */
+    int st_m, *st_k, *st_o;
+    int nruns, *st_run;
+    uint8_t *st_skip;
     sph_real *A;          /* n*SPH_TENSOR_SIZE(dim): sum_j (u_j - u_i) (x) w_ij, the pair part of
                            * eq. 53, row by row, rows padded like wtab (CPU only) */
     /* Full lists (both directions) for device targets, whose threads each sum their own
@@ -559,6 +572,26 @@ static inline int sph_body_state_arrays(sph_body *b, int nstate, sph_state_array
             out[k++] = all[i];
     return k;
 }
+
+/* The first of body b's stencil runs that ends after particle i (b->nruns when none does):
+ * where a pass over particles i .. finds its runs. */
+static inline int sph_run_after(const sph_body *b, int i)
+{
+    int lo = 0, hi = b->nruns;
+    while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        if (b->st_run[2 * mid + 1] > i)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return lo;
+}
+
+/* stencil.c: the body's lattice stencil and its runs (st_* above), from its half lists;
+ * nothing with sph_stencil_off (the program's --no-stencil). */
+extern int sph_stencil_off;
+void sph_stencil_setup(sph_body *b);
 
 typedef struct sph_contact sph_contact;
 

@@ -141,10 +141,21 @@ static void @B@_gradient_pass(sph_body *b)
     const int nhalo_in = sizeof halo_in / sizeof *halo_in;
     b->par->post(b, halo_in, nhalo_in);
 //@endif
+//@if DIM3
+//@else
+    /* the particles of the lattice stencil's runs whose pairs are all with run particles:
+     * the stress pass takes their sums from the stencil (body_stencil.c) */
+    const uint8_t *restrict skip = b->st_skip;
+//@endif
     for (int colour = 0; colour < 2; colour++) {
 #pragma omp parallel for schedule(static)
         for (int s = colour; s < b->nstripes; s += 2)
             for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
+//@if DIM3
+//@else
+                if (skip && skip[i])
+                    continue;
+//@endif
                 @B@_tensor Ai = {0}, t;
                 double ui[D]; /* (read once for all of i's pairs) */
                 for (int r = 0; r < D; r++)
@@ -194,6 +205,7 @@ static inline void @B@_spare_Cs(sph_body *b, int i)
  * runs or short groups of values a particle, the compiler does several particles in one
  * vector instruction: crack branching's stress pass took 0.55 of its time so. */
 enum { @B@_BLOCK = 32 };
+
 //@if STAGED
 /* This body's law calls exp, log or pow, but its particles' values come in runs of 9, 11 or
  * 12 (3D tensors, the law's state), which the compiler does not vectorise in place: the
@@ -216,6 +228,10 @@ static void @B@_stress_block(sph_body *b, int i0, int m)
     enum { NS = @NSTATE@ };
     double st[NS][N], st_new[NS][N];
     double *restrict stb = b->state + (size_t)i0 * NS;
+//@endif
+//@if DIM3
+//@else
+    @B@_stencil_gradient(b, i0, i0 + m); /* (the run particles' A and Laplacian) */
 //@endif
     for (int q = 0; q < m; q++) {
         for (int r = 0; r < D; r++)
@@ -326,6 +342,10 @@ static void @B@_stress_pass(sph_body *b)
 #pragma omp parallel for schedule(static)
     for (int i0 = 0; i0 < n; i0 += @B@_BLOCK) {
         const int i1 = n - i0 < @B@_BLOCK ? n : i0 + @B@_BLOCK;
+//@if DIM3
+//@else
+        @B@_stencil_gradient(b, i0, i1); /* (the run particles' A and Laplacian) */
+//@endif
 SPH_IVDEP /* particle i reads and writes entry i of arrays that never overlap */
         for (int i = i0; i < i1; i++) {
             sph_real *Ai = Ac + (size_t)i * D * R;
@@ -479,11 +499,54 @@ static void @B@_momentum_halo_pairs(sph_body *b)
 }
 
 //@endif
+/* The pairs of stripe s's particles (their half lists); returns their viscous power,
+ * f_visc . (v_i - v_j) summed over them. */
+static double @B@_momentum_stripe(sph_body *b, int s)
+{
+    enum { D = @DIM@ };
+    const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
+    double *restrict acc = b->a;
+    double power = 0;
+    const int end = b->stripe[s + 1];
+//@if DIM3
+//@else
+//@if PAIR_TERMS
+//@else
+    int r = sph_run_after(b, b->stripe[s]);
+//@endif
+//@endif
+    for (int i = b->stripe[s]; i < end;) {
+//@if DIM3
+//@else
+//@if PAIR_TERMS
+//@else
+        /* in a run: its particles from i on by the stencil (body_stencil.c) */
+        while (r < b->nruns && b->st_run[2 * r + 1] <= i)
+            r++;
+        if (r < b->nruns && b->st_run[2 * r] <= i) {
+            const int e = b->st_run[2 * r + 1] < end ? b->st_run[2 * r + 1] : end;
+            const int done = @B@_stencil_momentum(b, i, e, &power);
+            if (done) {
+                i += done;
+                continue;
+            }
+        }
+//@endif
+//@endif
+        sph_real pv = 0;
+        @B@_vec fi;
+        @B@_momentum_pairs(b, i, hs[i], hs[i + 1], hb, hk, 1, acc, &fi, &pv);
+        for (int c = 0; c < D; c++)
+            acc[i * D + c] += fi[c];
+        power += pv;
+        i++;
+    }
+    return power;
+}
+
 static void @B@_momentum_pass(sph_body *b)
 {
     enum { D = @DIM@ };
-    typedef @B@_vec vec;
-    const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
     double *restrict acc = b->a;
 //@if MPI
     /* The halo's values of what the pairs read of a neighbour besides u and v: Q, and cof F
@@ -516,24 +579,8 @@ static void @B@_momentum_pass(sph_body *b)
 //@endif
     for (int colour = 0; colour < 2; colour++) {
 #pragma omp parallel for schedule(static)
-        for (int s = colour; s < b->nstripes; s += 2) {
-//@if VISCOSITY
-            double stripe_power = 0; /* f_visc . (v_i - v_j) over the stripe's pairs */
-//@endif
-            for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
-                sph_real pv;
-                vec fi;
-                @B@_momentum_pairs(b, i, hs[i], hs[i + 1], hb, hk, 1, acc, &fi, &pv);
-                for (int r = 0; r < D; r++)
-                    acc[i * D + r] += fi[r];
-//@if VISCOSITY
-                stripe_power += pv;
-//@endif
-            }
-//@if VISCOSITY
-            b->stripe_sum[s] = stripe_power;
-//@endif
-        }
+        for (int s = colour; s < b->nstripes; s += 2)
+            b->stripe_sum[s] = @B@_momentum_stripe(b, s);
     }
 //@if MPI
     b->par->wait(b, halo_in, nhalo_in);

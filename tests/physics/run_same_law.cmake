@@ -5,9 +5,7 @@
 # and run to END on one thread, and every value of energies.csv must agree within TOL of the
 # row's largest energy (the stresses differ by round-off, up to ~1e-11 for J2, which the
 # steps carry on; the CSV's 10 significant digits show none of it over these runs).
-if(NOT DEFINED TOL)
-  set(TOL 1e-9)
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/near_energies.cmake) # (TOL's default)
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 get_filename_component(dir ${MODEL} DIRECTORY)
@@ -36,21 +34,5 @@ foreach(form derived written)
     message(FATAL_ERROR "${form}: exit ${rc}\n${out}\n${err}")
   endif()
 endforeach()
-execute_process(
-  COMMAND awk -F, -v tol=${TOL} "
-    FNR == 1 { next }
-    NR == FNR { row[FNR] = $0; next }
-    { n = split(row[FNR], a, \",\"); m = 0
-      for (k = 2; k <= n; k++) { v = a[k] < 0 ? -a[k] : a[k]; if (v > m) m = v }
-      for (k = 1; k <= n; k++) { d = a[k] - $k; d = d < 0 ? -d : d
-        if (d > worst * m) worst = m > 0 ? d / m : worst
-        if (d > tol * m + 1e-300) { print \"row \" FNR \" column \" k \": \" a[k] \" against \" $k; bad = 1 } }
-      rows++ }
-    END { printf \"%d rows, largest difference %.3g of the row's largest energy\\n\", rows, worst
-          exit bad || rows < 3 }"
-          ${OUT}/derived_out/energies.csv ${OUT}/written_out/energies.csv
-  RESULT_VARIABLE differ OUTPUT_VARIABLE report)
-if(differ)
-  message(FATAL_ERROR "energies.csv differs beyond ${TOL}:\n${report}")
-endif()
+near_energies(${OUT}/derived_out ${OUT}/written_out ${TOL})
 message(STATUS "${stem}, ${LAW} derived against written: ${report}")

@@ -1,0 +1,199 @@
+/* ---- body @B@: the pair passes on the lattice stencil's runs ------------------------------
+ * Particles of a run (runtime/stencil.c; 2D bodies) have their neighbours at i + o and
+ * i - o for the stencil's offsets o, at the same table entries: a pair sum over them is a
+ * sum over the offsets, and for one offset the same arithmetic on consecutive particles,
+ * the table entry a constant.  The gradient pass leaves their A_i (and Laplacian) to the
+ * stress pass, which takes them from the stencil (@B@_stencil_gradient); the momentum pass
+ * does their half lists offset by offset (@B@_stencil_momentum).  The sums are the lists'
+ * sums in another order (the program's --no-stencil keeps the lists' order; tests/physics/
+ * test_stencil.sh compares the two).  Four particles a step, in vectors of eight doubles,
+ * which the particles' x, y pairs fill as they lie in memory (the compiler vectorises such
+ * loops only with gathers, and no faster than the lists); in single precision one
+ * particle at a time and the momentum pass by the lists.  Crack branching's step took
+ * 0.61 of its time with the lists, the flyer plates' 0.73. */
+
+//@if DIM3
+//@else
+/* A_i of particle i of a run: the pair (i, i + o) adds (u_{i+o} - u_i) (x) w to A_i and the
+ * pair (i - o, i) adds (u_i - u_{i-o}) (x) w, so A_i is the sum over the offsets of
+ * (u_{i+o} - u_{i-o}) (x) w.
+//@if FRACTURE
+ * And the Laplacian of eq. 62 alike: the sum of ltab (2 s_i - s_{i+o} - s_{i-o}).
+//@endif
+ */
+static void @B@_stencil_gradient_one(sph_body *b, int i)
+{
+    enum { D = @DIM@, R = SPH_ROW(D) };
+    const double *restrict u = b->u;
+    sph_real a[D * D] = {0};
+//@if FRACTURE
+    const double *restrict sf = b->s;
+    double lapi = 0;
+//@endif
+    for (int q = 0; q < b->st_m; q++) {
+        const int jp = i + b->st_o[q], jm = i - b->st_o[q], k = b->st_k[q];
+        const sph_real *w = b->wtab + (size_t)k * R;
+        for (int r = 0; r < D; r++) {
+            const sph_real d = (sph_real)(u[(size_t)jp * D + r] - u[(size_t)jm * D + r]);
+            for (int c = 0; c < D; c++)
+                a[r * D + c] += d * w[c];
+        }
+//@if FRACTURE
+        lapi += b->ltab[k] * (2 * sf[i] - sf[jp] - sf[jm]);
+//@endif
+    }
+    for (int r = 0; r < D; r++)
+        for (int c = 0; c < D; c++)
+            b->A[(size_t)i * D * R + r * R + c] = a[r * D + c];
+//@if FRACTURE
+    b->lap[i] = lapi;
+//@endif
+}
+
+#ifndef SPH_SINGLE
+typedef double @B@_v8 __attribute__((vector_size(64), aligned(8), may_alias));
+typedef double @B@_v4 __attribute__((vector_size(32), aligned(8), may_alias));
+typedef long long @B@_v8m __attribute__((vector_size(64)));
+#endif
+
+/* Particles a .. e - 1 of a run: @B@_stencil_gradient_one's sums, four particles at a time
+ * where vectors are (the rest one by one).  The difference u_{i+o} - u_{i-o} of four
+ * particles is one vector (x, y, x, y, ...); A_i's entries (r, c), row by row, are its
+ * x and y each twice, times (w0, w1) twice. */
+static void @B@_stencil_gradient_run(sph_body *b, int a, int e)
+{
+    int i = a;
+#ifndef SPH_SINGLE
+    typedef @B@_v8 v8;
+    const double *restrict u = b->u;
+    const int *restrict so = b->st_o, *restrict sk = b->st_k;
+//@if FRACTURE
+    typedef @B@_v4 v4;
+    const double *restrict sf = b->s;
+//@endif
+    for (; i + 4 <= e; i += 4) {
+        v8 a01 = {0}, a23 = {0}; /* A of particles i, i + 1 and of i + 2, i + 3 */
+//@if FRACTURE
+        v4 lap = {0};
+        const v4 s2 = 2 * *(const v4 *)(sf + i);
+//@endif
+        for (int q = 0; q < b->st_m; q++) {
+            const int o = so[q], k = sk[q];
+            const v8 d = *(const v8 *)(u + 2 * (i + o)) - *(const v8 *)(u + 2 * (i - o));
+            const double w0 = b->wtab[2 * k], w1 = b->wtab[2 * k + 1];
+            const v8 w = {w0, w1, w0, w1, w0, w1, w0, w1};
+            a01 += __builtin_shufflevector(d, d, 0, 0, 1, 1, 2, 2, 3, 3) * w;
+            a23 += __builtin_shufflevector(d, d, 4, 4, 5, 5, 6, 6, 7, 7) * w;
+//@if FRACTURE
+            lap += b->ltab[k] * (s2 - *(const v4 *)(sf + i + o) - *(const v4 *)(sf + i - o));
+//@endif
+        }
+        *(v8 *)(b->A + 4 * (size_t)i) = a01;
+        *(v8 *)(b->A + 4 * (size_t)i + 8) = a23;
+//@if FRACTURE
+        *(v4 *)(b->lap + i) = lap;
+//@endif
+    }
+#endif
+    for (; i < e; i++)
+        @B@_stencil_gradient_one(b, i);
+}
+
+/* The stress pass's block i0 .. i1 - 1: A_i and the Laplacian of its run particles. */
+static void @B@_stencil_gradient(sph_body *b, int i0, int i1)
+{
+    for (int r = sph_run_after(b, i0); r < b->nruns && b->st_run[2 * r] < i1; r++) {
+        const int a = b->st_run[2 * r] > i0 ? b->st_run[2 * r] : i0;
+        const int e = b->st_run[2 * r + 1] < i1 ? b->st_run[2 * r + 1] : i1;
+        @B@_stencil_gradient_run(b, a, e);
+    }
+}
+
+//@if PAIR_TERMS
+//@else
+/* The momentum pass (eq. 55, 57-60; @B@_momentum_pairs has the physics and its comments) on
+ * the half lists of run particles a .. a + 4 t - 1 (at most @B@_STENCIL particles; the rest
+ * of a run goes by the lists): offset by offset, each pair's force added to i, and after
+ * the offset's particles subtracted from their j = i + o, as the lists do.  Four pairs a
+ * step: Q_i + Q_j of two particles fill a vector (column 0, column 1, column 0, column 1),
+ * times (w0, w0, w1, w1, ...) the columns' shares, whose sums two shuffles pair up into the
+ * forces' (x, y, x, y, ...), the layout of v and the accelerations.  Returns the number of
+ * particles done (none in single precision) and adds the pairs' f_visc . (v_i - v_j) to
+ * *power. */
+enum { @B@_STENCIL = 64 };
+static int @B@_stencil_momentum(sph_body *b, int a, int e, double *power)
+{
+#ifdef SPH_SINGLE
+    (void)b, (void)a, (void)e, (void)power;
+    return 0;
+#else
+    typedef @B@_v8 v8;
+    const int t = (e - a) / 4 * 4 < @B@_STENCIL ? (e - a) / 4 * 4 : @B@_STENCIL;
+    const double *restrict Q = b->Q;
+    double *restrict acc = b->a;
+    double f_run[2 * @B@_STENCIL]; /* the offset's forces on i, x and y */
+//@if VISCOSITY
+    typedef @B@_v4 v4;
+    typedef @B@_v8m v8m;
+    const double *restrict Cv = b->Cv, *restrict Cs = b->Cs, *restrict v = b->v;
+    v8 pv = {0}; /* (each pair's twice: x and y lanes) */
+//@endif
+    for (int q = 0; q < b->st_m; q++) {
+        const int o = b->st_o[q], k = b->st_k[q];
+        const double w0 = b->wtab[2 * k], w1 = b->wtab[2 * k + 1];
+        const v8 w = {w0, w0, w1, w1, w0, w0, w1, w1};
+//@if VISCOSITY
+//@if BETA2
+        const double g = b->gtab[k] * 0.5;
+//@else
+        const double gc = b->gtab[k] * (-0.125 * @BETA1@ * @C0@);
+//@endif
+//@endif
+        for (int i = a; i < a + t; i += 4) {
+            const int j = i + o;
+            const v8 q0 = (*(const v8 *)(Q + 4 * i) + *(const v8 *)(Q + 4 * j)) * w;
+            const v8 q1 = (*(const v8 *)(Q + 4 * i + 8) + *(const v8 *)(Q + 4 * j + 8)) * w;
+            v8 f = (__builtin_shufflevector(q0, q1, 0, 1, 4, 5, 8, 9, 12, 13) +
+                    __builtin_shufflevector(q0, q1, 2, 3, 6, 7, 10, 11, 14, 15)) *
+                   (1.0 / b->rho0);
+//@if VISCOSITY
+            const v8 c0 = (*(const v8 *)(Cv + 4 * i) + *(const v8 *)(Cv + 4 * j)) * w;
+            const v8 c1 = (*(const v8 *)(Cv + 4 * i + 8) + *(const v8 *)(Cv + 4 * j + 8)) * w;
+            const v8 fv = __builtin_shufflevector(c0, c1, 0, 1, 4, 5, 8, 9, 12, 13) +
+                          __builtin_shufflevector(c0, c1, 2, 3, 6, 7, 10, 11, 14, 15);
+            const v8 p = (*(const v8 *)(v + 2 * i) - *(const v8 *)(v + 2 * j)) * fv;
+            const v8 vw = p + __builtin_shufflevector(p, p, 1, 0, 3, 2, 5, 4, 7, 6);
+            const v4 cs4 = *(const v4 *)(Cs + i) + *(const v4 *)(Cs + j);
+            const v8 cs = __builtin_shufflevector(cs4, cs4, 0, 0, 1, 1, 2, 2, 3, 3);
+//@if BETA2
+            const v8 gg = g * cs * vw;
+            const v8 d = gg - (v8)((v8m)gg & ~(v8m)(v8){-0.0, -0.0, -0.0, -0.0, -0.0, -0.0, -0.0, -0.0});
+            const v8 hpi = d * ((-0.125 * @BETA1@ * @C0@) + d * (0.03125 * @BETA2@));
+//@else
+            const v8 x = gc * cs * vw;
+            const v8 hpi = (v8)((v8m)x & (x > 0)); /* max(x, 0) */
+//@endif
+            f -= hpi * fv;
+            pv -= hpi * vw;
+//@endif
+            *(v8 *)(acc + 2 * i) += f;
+            *(v8 *)(f_run + 2 * (i - a)) = f;
+        }
+        double *restrict acc_j = acc + 2 * (a + o);
+        for (int c = 0; c < 2 * t; c += 8)
+            *(v8 *)(acc_j + c) -= *(const v8 *)(f_run + c);
+    }
+//@if VISCOSITY
+    double sum = 0;
+    for (int c = 0; c < 8; c++)
+        sum += pv[c];
+    *power += 0.5 * sum;
+//@else
+    (void)power;
+//@endif
+    return t;
+#endif
+}
+
+//@endif
+//@endif
