@@ -645,7 +645,8 @@ void sph_body_free(sph_body *b)
     free(b->hb_start), free(b->hb), free(b->hb_k), free(b->stripe), free(b->stripe_sum), free(b->A);
     free(b->s), free(b->sd), free(b->sdd), free(b->H), free(b->lap), free(b->sd_n);
     free(b->ltab), free(b->state);
-    free(b->st_k), free(b->st_o), free(b->st_run), free(b->st_skip);
+    free(b->st_k), free(b->st_o), free(b->st_run);
+    free(b->rest), free(b->rest_start), free(b->rest_j), free(b->rest_k);
 }
 
 /* ------------------------------------------------------------------ measured quantities */

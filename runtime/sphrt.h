@@ -499,13 +499,20 @@ struct sph_body {
      * mirror images (i - st_o[q], the same entries as i - st_o[q] sees them), none with the
      * halo, belongs to one of the runs [st_run[2r], st_run[2r + 1]) of consecutive such
      * particles (ascending, r < nruns).  The pair passes do a run offset by offset, the
-     * same pair of many particles in one vector instruction; the gradient pass leaves out the
-     * half lists of the st_skip particles (in a run, and so are all their half lists'
-     * neighbours), whose sums the stress pass takes from the stencil.  st_m = 0, nruns = 0:
-     * none (off a lattice, or the program's --no-stencil). */
+     * same pair of many particles in one vector instruction; the stress pass takes the run
+     * particles' gradient sums from the stencil.  st_m = 0, nruns = 0: none (off a lattice,
+     * or the program's --no-stencil). */
     int st_m, *st_k, *st_o;
     int nruns, *st_run;
-    uint8_t *st_skip;
+    /* With a stencil, the gradient pass's lists: the particles it still visits (rest[c],
+     * ascending, c < nrest: those not in a run, and run particles with a neighbour that is
+     * not), each with the pairs it must add (rest_start[c] .. rest_start[c + 1] - 1,
+     * neighbour rest_j, entry rest_k): a particle not in a run its whole half list, a run
+     * particle its pairs with particles not in a run.  The momentum pass reads them for the
+     * particles not in a run.  Compact, so that the passes do not load the half lists'
+     * cache lines for a few particles apiece (they took a sixth of crack branching's step).
+     * NULL without a stencil. */
+    int nrest, *rest, *rest_start, *rest_j, *rest_k;
     sph_real *A;          /* n*SPH_TENSOR_SIZE(dim): sum_j (u_j - u_i) (x) w_ij, the pair part of
                            * eq. 53, row by row, rows padded like wtab (CPU only) */
     /* Full lists (both directions) for device targets, whose threads each sum their own
@@ -581,6 +588,20 @@ static inline int sph_run_after(const sph_body *b, int i)
     while (lo < hi) {
         const int mid = (lo + hi) / 2;
         if (b->st_run[2 * mid + 1] > i)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return lo;
+}
+
+/* The first of body b's rest particles (above) at or after particle i (b->nrest when none). */
+static inline int sph_rest_after(const sph_body *b, int i)
+{
+    int lo = 0, hi = b->nrest;
+    while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        if (b->rest[mid] >= i)
             hi = mid;
         else
             lo = mid + 1;

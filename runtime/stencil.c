@@ -110,6 +110,43 @@ static void stencil_particles(const sph_body *b, uint8_t *in)
     free(back), free(list);
 }
 
+/* The rest lists (sphrt.h), from the half lists; in[i]: particle i is in a run. */
+static void rest_lists(sph_body *b, const uint8_t *in)
+{
+    const int n = b->nown;
+    int nrest = 0, npairs = 0;
+    for (int i = 0; i < n; i++) {
+        int c = 0;
+        for (int p = b->hb_start[i]; p < b->hb_start[i + 1]; p++)
+            c += !in[i] || !in[b->hb[p]];
+        nrest += !in[i] || c > 0;
+        npairs += c;
+    }
+    b->nrest = nrest;
+    b->rest = malloc(((size_t)nrest + 1) * sizeof *b->rest);
+    b->rest_start = malloc(((size_t)nrest + 1) * sizeof *b->rest_start);
+    b->rest_j = malloc(((size_t)npairs + 1) * sizeof *b->rest_j);
+    b->rest_k = malloc(((size_t)npairs + 1) * sizeof *b->rest_k);
+    if (!b->rest || !b->rest_start || !b->rest_j || !b->rest_k) {
+        sph_error("out of memory");
+        exit(SPH_EXIT_SETUP);
+    }
+    int c = 0, q = 0;
+    for (int i = 0; i < n; i++) {
+        const int q0 = q;
+        for (int p = b->hb_start[i]; p < b->hb_start[i + 1]; p++)
+            if (!in[i] || !in[b->hb[p]]) {
+                b->rest_j[q] = b->hb[p];
+                b->rest_k[q++] = b->hb_k[p];
+            }
+        if (!in[i] || q > q0) {
+            b->rest[c] = i;
+            b->rest_start[c++] = q0;
+        }
+    }
+    b->rest_start[c] = q;
+}
+
 void sph_stencil_setup(sph_body *b)
 {
     const int n = b->nown;
@@ -117,8 +154,7 @@ void sph_stencil_setup(sph_body *b)
         return;
     uint8_t *in = calloc((size_t)n, 1);
     b->st_run = malloc(((size_t)n / MIN_RUN + 1) * 2 * sizeof *b->st_run);
-    b->st_skip = calloc((size_t)n, 1);
-    if (!in || !b->st_run || !b->st_skip) {
+    if (!in || !b->st_run) {
         sph_error("out of memory");
         exit(SPH_EXIT_SETUP);
     }
@@ -136,20 +172,12 @@ void sph_stencil_setup(sph_body *b)
         i = e > i ? e : i + 1;
     }
     b->nruns = nr;
-    /* skipped by the gradient pass: in a run, and so are its half list's neighbours (the pairs
-     * with a particle outside the runs add to that particle there) */
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; i++) {
-        int all = in[i];
-        for (int p = b->hb_start[i]; p < b->hb_start[i + 1] && all; p++)
-            all = in[b->hb[p]];
-        b->st_skip[i] = (uint8_t)all;
-    }
-    free(in);
-    if (nr == 0) {
-        free(b->st_k), free(b->st_o), free(b->st_run), free(b->st_skip);
+    if (nr > 0)
+        rest_lists(b, in);
+    else {
+        free(b->st_k), free(b->st_o), free(b->st_run);
         b->st_k = b->st_o = b->st_run = NULL;
-        b->st_skip = NULL;
         b->st_m = 0;
     }
+    free(in);
 }

@@ -110,10 +110,12 @@ static void @B@_gradient_halo_pairs(sph_body *b)
 }
 
 //@endif
-static void @B@_gradient_pass(sph_body *b)
+/* Particle i's pairs p0 .. p1 - 1 (neighbour hb[p], entry hk[p]), each added to both
+ * particles: (u_j - u_i) (x) w_ij to A_i and to A_j (w_ji = -w_ij). */
+static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
+                                      const int *restrict hb, const int *restrict hk)
 {
     enum { D = @DIM@, R = SPH_ROW(D) };
-    const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
     const @B@_vec *restrict wtab = (const @B@_vec *)b->wtab;
     const double *restrict u = b->u;
     sph_real *restrict A = b->A; /* A_i from A + i D R, row by row; zero on entry: the stress
@@ -124,7 +126,35 @@ static void @B@_gradient_pass(sph_body *b)
     const sph_real *restrict ltab = b->ltab;
     double *restrict lap = b->lap; /* zero on entry, like A */
 //@endif
+    @B@_tensor Ai = {0}, t;
+    double ui[D]; /* (read once for all of i's pairs) */
+    for (int r = 0; r < D; r++)
+        ui[r] = u[(size_t)i * D + r];
+//@if FRACTURE
+    double lapi = 0;
+//@endif
+    for (int p = p0; p < p1; p++) {
+        const int j = hb[p];
+//@if FRACTURE
+        const double lij = ltab[hk[p]] * (sf[i] - sf[j]);
+        lapi += lij;
+        lap[j] -= lij;
+//@endif
+        @B@_pair_tensor(u + (size_t)j * D, ui, wtab[hk[p]], &t);
+        @B@_tensor_add(&Ai, &t);
+        @B@_tensor_add_to(A + (size_t)j * D * R, &t);
+    }
+    @B@_tensor_add_to(A + (size_t)i * D * R, &Ai);
+//@if FRACTURE
+    lap[i] += lapi;
+//@endif
+}
+
+static void @B@_gradient_pass(sph_body *b)
+{
+    const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
 //@if MPI
+    enum { D = @DIM@ };
     /* On many processes the halo's values are on their way while the pairs of own particles
      * are summed; the pairs with the halo follow (docs/mpi.md).  What the pair passes read of
      * a neighbour: u here, and v for the viscosity of the momentum pass (unchanged until then),
@@ -141,44 +171,25 @@ static void @B@_gradient_pass(sph_body *b)
     const int nhalo_in = sizeof halo_in / sizeof *halo_in;
     b->par->post(b, halo_in, nhalo_in);
 //@endif
-//@if DIM3
-//@else
-    /* the particles of the lattice stencil's runs whose pairs are all with run particles:
-     * the stress pass takes their sums from the stencil (body_stencil.c) */
-    const uint8_t *restrict skip = b->st_skip;
-//@endif
     for (int colour = 0; colour < 2; colour++) {
 #pragma omp parallel for schedule(static)
-        for (int s = colour; s < b->nstripes; s += 2)
-            for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++) {
+        for (int s = colour; s < b->nstripes; s += 2) {
 //@if DIM3
 //@else
-                if (skip && skip[i])
-                    continue;
-//@endif
-                @B@_tensor Ai = {0}, t;
-                double ui[D]; /* (read once for all of i's pairs) */
-                for (int r = 0; r < D; r++)
-                    ui[r] = u[(size_t)i * D + r];
-//@if FRACTURE
-                double lapi = 0;
-//@endif
-                for (int p = hs[i]; p < hs[i + 1]; p++) {
-                    const int j = hb[p];
-//@if FRACTURE
-                    const double lij = ltab[hk[p]] * (sf[i] - sf[j]);
-                    lapi += lij;
-                    lap[j] -= lij;
-//@endif
-                    @B@_pair_tensor(u + (size_t)j * D, ui, wtab[hk[p]], &t);
-                    @B@_tensor_add(&Ai, &t);
-                    @B@_tensor_add_to(A + (size_t)j * D * R, &t);
-                }
-                @B@_tensor_add_to(A + (size_t)i * D * R, &Ai);
-//@if FRACTURE
-                lap[i] += lapi;
-//@endif
+            /* With the lattice stencil, only what its runs leave (the rest lists, runtime/
+             * stencil.c): the stress pass takes the run particles' sums from the stencil,
+             * and overwrites what the pairs here add to them (body_stencil.c). */
+            if (b->rest) {
+                for (int c = sph_rest_after(b, b->stripe[s]);
+                     c < b->nrest && b->rest[c] < b->stripe[s + 1]; c++)
+                    @B@_gradient_pairs(b, b->rest[c], b->rest_start[c], b->rest_start[c + 1],
+                                       b->rest_j, b->rest_k);
+                continue;
             }
+//@endif
+            for (int i = b->stripe[s]; i < b->stripe[s + 1]; i++)
+                @B@_gradient_pairs(b, i, hs[i], hs[i + 1], hb, hk);
+        }
     }
 //@if MPI
     b->par->wait(b, halo_in, nhalo_in);
@@ -499,6 +510,37 @@ static void @B@_momentum_halo_pairs(sph_body *b)
 }
 
 //@endif
+//@if DIM3
+//@else
+//@if PAIR_TERMS
+//@else
+/* Run particles a .. e - 1 of the lattice stencil (runtime/stencil.c): by the stencil in
+ * vectors (@B@_stencil_momentum, body_stencil.c), and the last few, fewer than a vector's
+ * four, pair by pair along the stencil's offsets (not their half lists, whose cache lines
+ * nothing else has loaded).  Adds their pairs' viscous power to *power. */
+static void @B@_stencil_momentum_run(sph_body *b, int a, int e, double *power)
+{
+    enum { D = @DIM@ };
+    while (a < e) {
+        const int done = @B@_stencil_momentum(b, a, e, power);
+        if (!done)
+            break;
+        a += done;
+    }
+    for (int i = a; i < e; i++)
+        for (int q = 0; q < b->st_m; q++) {
+            const int j = i + b->st_o[q];
+            sph_real pv = 0;
+            @B@_vec fi;
+            @B@_momentum_pairs(b, i, 0, 1, &j, b->st_k + q, 1, b->a, &fi, &pv);
+            for (int c = 0; c < D; c++)
+                b->a[i * D + c] += fi[c];
+            *power += pv;
+        }
+}
+
+//@endif
+//@endif
 /* The pairs of stripe s's particles (their half lists); returns their viscous power,
  * f_visc . (v_i - v_j) summed over them. */
 static double @B@_momentum_stripe(sph_body *b, int s)
@@ -512,34 +554,38 @@ static double @B@_momentum_stripe(sph_body *b, int s)
 //@else
 //@if PAIR_TERMS
 //@else
-    int r = sph_run_after(b, b->stripe[s]);
+    /* with the lattice stencil: its runs by the stencil, the rest by the rest lists */
+    int r = sph_run_after(b, b->stripe[s]), c = b->rest ? sph_rest_after(b, b->stripe[s]) : 0;
 //@endif
 //@endif
-    for (int i = b->stripe[s]; i < end;) {
+    for (int i = b->stripe[s]; i < end; i++) {
+        int p0 = hs[i], p1 = hs[i + 1];
+        const int *lj = hb, *lk = hk;
 //@if DIM3
 //@else
 //@if PAIR_TERMS
 //@else
-        /* in a run: its particles from i on by the stencil (body_stencil.c) */
         while (r < b->nruns && b->st_run[2 * r + 1] <= i)
             r++;
         if (r < b->nruns && b->st_run[2 * r] <= i) {
             const int e = b->st_run[2 * r + 1] < end ? b->st_run[2 * r + 1] : end;
-            const int done = @B@_stencil_momentum(b, i, e, &power);
-            if (done) {
-                i += done;
-                continue;
-            }
+            @B@_stencil_momentum_run(b, i, e, &power);
+            i = e - 1;
+            continue;
+        }
+        if (b->rest) { /* (every particle not in a run has its rest list) */
+            while (b->rest[c] < i)
+                c++;
+            p0 = b->rest_start[c], p1 = b->rest_start[c + 1], lj = b->rest_j, lk = b->rest_k;
         }
 //@endif
 //@endif
         sph_real pv = 0;
         @B@_vec fi;
-        @B@_momentum_pairs(b, i, hs[i], hs[i + 1], hb, hk, 1, acc, &fi, &pv);
-        for (int c = 0; c < D; c++)
-            acc[i * D + c] += fi[c];
+        @B@_momentum_pairs(b, i, p0, p1, lj, lk, 1, acc, &fi, &pv);
+        for (int k = 0; k < D; k++)
+            acc[i * D + k] += fi[k];
         power += pv;
-        i++;
     }
     return power;
 }

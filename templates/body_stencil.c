@@ -5,12 +5,12 @@
  * the table entry a constant.  The gradient pass leaves their A_i (and Laplacian) to the
  * stress pass, which takes them from the stencil (@B@_stencil_gradient); the momentum pass
  * does their half lists offset by offset (@B@_stencil_momentum).  The sums are the lists'
- * sums in another order (the program's --no-stencil keeps the lists' order; tests/physics/
- * test_stencil.sh compares the two).  Four particles a step, in vectors of eight doubles,
- * which the particles' x, y pairs fill as they lie in memory (the compiler vectorises such
- * loops only with gathers, and no faster than the lists); in single precision one
- * particle at a time and the momentum pass by the lists.  Crack branching's step took
- * 0.61 of its time with the lists, the flyer plates' 0.73. */
+ * sums in another order (the program's --no-stencil keeps the lists' order;
+ * tests/physics/run_stencil.cmake compares the two).  Four particles a step, in vectors of
+ * eight doubles, which the particles' x, y pairs fill as they lie in memory (the compiler
+ * vectorises such loops only with gathers, and no faster than the lists); in single
+ * precision one particle at a time.  A step of crack branching took 0.62 of its time with
+ * the lists, the flyer plates' 0.75, the beam's 0.61 (docs/architecture.md). */
 
 //@if DIM3
 //@else
