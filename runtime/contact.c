@@ -245,7 +245,7 @@ void sph_contact_forces(sph_sim *s, double dt)
         gather(c, s);
         if (s->par->size > 1)
             add_partners(c, s);
-        sph_csearch_update(&c->search, c->x);
+        sph_csearch_build_at(&c->search, c->x); /* (due: rebuild_due has tested it) */
     } else
         gather_active(c, s);
     const sph_csearch *q = &c->search;

@@ -146,14 +146,15 @@ static void allocate(sph_body *b)
 
 /* Pairs at exactly the support radius have a zero kernel gradient and contribute nothing to
  * any pass; removing them saves a sixth of the pair work on a lattice (24 -> 20 in 2D).
- * Pairs whose gradient is below 1e-14 of the largest go too: they lie at the support radius
- * up to the rounding of their distance (the gradient there is of the order of that rounding
- * squared or cubed), less than a pair sum's rounding, and whether the search kept such a
- * pair depended on that rounding, particle by particle, so that the particles of one
- * lattice had different neighbour lists (no lattice stencil, stencil.c).  In single
- * precision the bound is 1e-30 of the largest: in float the gradient underflows, and the
- * viscosity factor of eq. 60 (about 1/|w|) would overflow.  The gradients are recomputed (sph_pair_gradient) rather than kept
- * from sph_gradients: 24 bytes a pair in 3D, most of the set-up's memory. */
+ * Pairs whose gradient is below 1e-14 of the kernel's largest go too: they lie at the
+ * support radius up to the rounding of their distance (the gradient there is of the order
+ * of that rounding squared or cubed), less than a pair sum's rounding, and whether the
+ * search kept such a pair depended on that rounding, particle by particle, so that the
+ * particles of one lattice had different neighbour lists (no lattice stencil, stencil.c).
+ * In single precision the bound is 1e-30 of the largest: in float the gradient underflows,
+ * and the viscosity factor of eq. 60 (about 1/|w|) would overflow.  The gradients are
+ * recomputed (sph_pair_gradient) rather than kept from sph_gradients: 24 bytes a pair in
+ * 3D, most of the set-up's memory. */
 static int silent_pair(const sph_body *b, int i, int p, sph_kernel_kind kernel, double tiny)
 {
     double w[3];
@@ -167,17 +168,15 @@ static int silent_pair(const sph_body *b, int i, int p, sph_kernel_kind kernel, 
 static void drop_silent_pairs(sph_body *b, sph_kernel_kind kernel)
 {
     const int D = b->dim, n = b->nown; /* (the rows of own particles) */
+    /* the kernel's largest V |dW/dr| over its support, sampled finely: a bound on any pair's
+     * gradient, the same on every process, without a pass over the pairs (which took as
+     * long as the one below) */
     double wmax = 0;
-#pragma omp parallel for schedule(dynamic, 1024) reduction(max : wmax)
-    for (int i = 0; i < n; i++)
-        for (int p = b->nb_start[i]; p < b->nb_start[i + 1]; p++) {
-            double w[3];
-            sph_pair_gradient(b->X, D, i, b->nb[p], kernel, b->h, b->vol, w);
-            for (int c = 0; c < D; c++)
-                wmax = fmax(wmax, fabs(w[c]));
-        }
-    b->par->max(&wmax, 1); /* (the same pairs dropped on any number of processes) */
-    const double tiny = (sizeof(sph_real) < sizeof(double) ? 1e-30 : 1e-14) * wmax;
+    for (int k = 1; k <= 1000; k++) {
+        const double r = 2.0 * b->h * k / 1000;
+        wmax = fmax(wmax, fabs(sph_kernel_dwdr_over_r(kernel, D, r, b->h) * r));
+    }
+    const double tiny = (sizeof(sph_real) < sizeof(double) ? 1e-30 : 1e-14) * b->vol * wmax;
     int *start = zalloc((size_t)n + 1, sizeof(int));
 #pragma omp parallel for schedule(dynamic, 1024)
     for (int i = 0; i < n; i++) { /* the pairs each particle keeps (silent ones marked -1) */

@@ -580,14 +580,13 @@ static inline int sph_body_state_arrays(sph_body *b, int nstate, sph_state_array
     return k;
 }
 
-/* The first of body b's stencil runs that ends after particle i (b->nruns when none does):
- * where a pass over particles i .. finds its runs. */
-static inline int sph_run_after(const sph_body *b, int i)
+/* The first k < n with a[k stride] >= v (n when none): a binary search of ascending values. */
+static inline int sph_first_at_least(const int *a, int n, int stride, int v)
 {
-    int lo = 0, hi = b->nruns;
+    int lo = 0, hi = n;
     while (lo < hi) {
         const int mid = (lo + hi) / 2;
-        if (b->st_run[2 * mid + 1] > i)
+        if (a[(size_t)mid * stride] >= v)
             hi = mid;
         else
             lo = mid + 1;
@@ -595,18 +594,17 @@ static inline int sph_run_after(const sph_body *b, int i)
     return lo;
 }
 
+/* The first of body b's stencil runs that ends after particle i (b->nruns when none does):
+ * where a pass over particles i .. finds its runs. */
+static inline int sph_run_after(const sph_body *b, int i)
+{
+    return sph_first_at_least(b->st_run + 1, b->nruns, 2, i + 1);
+}
+
 /* The first of body b's rest particles (above) at or after particle i (b->nrest when none). */
 static inline int sph_rest_after(const sph_body *b, int i)
 {
-    int lo = 0, hi = b->nrest;
-    while (lo < hi) {
-        const int mid = (lo + hi) / 2;
-        if (b->rest[mid] >= i)
-            hi = mid;
-        else
-            lo = mid + 1;
-    }
-    return lo;
+    return sph_first_at_least(b->rest, b->nrest, 1, i);
 }
 
 /* stencil.c: the body's lattice stencil and its runs (st_* above), from its half lists;

@@ -72,15 +72,9 @@ static int find_stencil(sph_body *b)
 /* Whether the half list of particle p holds the pair with i at entry k (sorted by j). */
 static int holds_pair(const sph_body *b, int p, int i, int k)
 {
-    int lo = b->hb_start[p], hi = b->hb_start[p + 1];
-    while (lo < hi) {
-        const int mid = (lo + hi) / 2;
-        if (b->hb[mid] < i)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo < b->hb_start[p + 1] && b->hb[lo] == i && b->hb_k[lo] == k;
+    const int p0 = b->hb_start[p], len = b->hb_start[p + 1] - p0;
+    const int at = p0 + sph_first_at_least(b->hb + p0, len, 1, i);
+    return at < p0 + len && b->hb[at] == i && b->hb_k[at] == k;
 }
 
 /* in[i]: whether particle i's pairs are exactly the stencil's and their mirror images. */
@@ -90,8 +84,8 @@ static void stencil_particles(const sph_body *b, uint8_t *in)
     int *back = calloc((size_t)n, sizeof *back); /* pairs that have i as their j */
     uint8_t *list = calloc((size_t)n, 1);
     if (!back || !list) {
-        free(back), free(list);
-        return;
+        sph_error("out of memory");
+        exit(SPH_EXIT_SETUP);
     }
     for (int p = 0; p < b->hb_start[n]; p++)
         back[b->hb[p]]++;
