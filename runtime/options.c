@@ -1,7 +1,8 @@
 /* options.c — the command line of a generated program.
  *
  *   --out DIR  --threads N  --end T  --every T  --frames T  --checkpoint T  --restart FILE
- *   --overwrite  --quiet  --progress T  --profile  --partition N  --no-stencil  --help | -h
+ *   --overwrite  --quiet  --progress T  --profile  --partition N  --no-stencil  --whole-law
+ *   --help | -h
  *
  * Options with a value also accept the spelling --opt=value. */
 #include "output.h"
@@ -14,7 +15,7 @@
 
 typedef enum {
     OPT_OUT, OPT_THREADS, OPT_END, OPT_EVERY, OPT_FRAMES, OPT_CHECKPOINT, OPT_RESTART,
-    OPT_OVERWRITE, OPT_QUIET, OPT_PROGRESS, OPT_PROFILE, OPT_PARTITION, OPT_NO_STENCIL, OPT_HELP
+    OPT_OVERWRITE, OPT_QUIET, OPT_PROGRESS, OPT_PROFILE, OPT_PARTITION, OPT_NO_STENCIL, OPT_WHOLE_LAW, OPT_HELP
 } opt_id;
 
 typedef struct {
@@ -29,7 +30,7 @@ static const opt_info OPTIONS[] = {
     {"--restart", OPT_RESTART, 1}, {"--overwrite", OPT_OVERWRITE, 0},
     {"--quiet", OPT_QUIET, 0},     {"--progress", OPT_PROGRESS, 1},
     {"--profile", OPT_PROFILE, 0}, {"--partition", OPT_PARTITION, 1},
-    {"--no-stencil", OPT_NO_STENCIL, 0},
+    {"--no-stencil", OPT_NO_STENCIL, 0}, {"--whole-law", OPT_WHOLE_LAW, 0},
     {"--help", OPT_HELP, 0},       {"-h", OPT_HELP, 0},
 };
 #define NOPTIONS (int)(sizeof OPTIONS / sizeof OPTIONS[0])
@@ -71,6 +72,9 @@ static void usage(FILE *f, const char *prog, const char *model)
             "                (particles and halo per part) and exit, without running\n"
             "  --no-stencil  every pair through the neighbour lists, none through the\n"
             "                lattice stencil (the same sums, in another order: a check)\n"
+            "  --whole-law   every particle through its whole material law: no fast path\n"
+            "                that leaves out a return map for particles that do not yield\n"
+            "                (the same stresses: a check)\n"
             "  -h, --help    show this help and exit\n",
             prog, model, model);
 }
@@ -223,6 +227,8 @@ int sph_parse_options(sph_options *o, const char *model_name, int argc, char **a
                 o->overwrite = 1;
             else if (opt->id == OPT_NO_STENCIL)
                 o->no_stencil = 1;
+            else if (opt->id == OPT_WHOLE_LAW)
+                o->whole_law = 1;
             else
                 o->profile = 1;
             continue;

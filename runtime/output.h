@@ -114,6 +114,7 @@ typedef struct {
     int quiet;            /* --quiet */
     int profile;          /* --profile: the time of each pass of the step */
     int no_stencil;       /* --no-stencil: no lattice stencil in the pair passes */
+    int whole_law;        /* --whole-law: no fast path of the material laws */
     int overwrite;        /* --overwrite: replace the outputs of an earlier run in out_dir */
     double progress;      /* --progress T: a progress line every T s in a log (0: none) */
 } sph_options;

@@ -102,6 +102,8 @@ static void order_particles(sph_body *b)
     b->X = X;
 }
 
+int sph_fast_law_off;
+
 static void allocate(sph_body *b)
 {
     size_t n = (size_t)b->n, D = (size_t)b->dim;
@@ -128,6 +130,7 @@ static void allocate(sph_body *b)
     const int ns = b->desc->nstate;
     if (ns > 0) {
         b->state = zalloc(n * (size_t)ns, sizeof(double));
+        b->rare_hint = zalloc(n, 1);
         for (size_t i = 0; i < n; i++)
             for (int k = 0; k < ns; k++)
                 b->state[i * (size_t)ns + (size_t)k] = b->desc->state_init[k];
@@ -639,7 +642,8 @@ void sph_body_free(sph_body *b)
         free(b->ms_list[k]);
     free(b->bc_list), free(b->bc_count), free(b->ms_list), free(b->ms_count);
     free(b->X), free(b->u), free(b->v), free(b->a), free(b->work), free(b->F), free(b->L);
-    free(b->Q), free(b->Cv), free(b->Cs), free(b->lam2), free(b->psi), free(b->sigma), free(b->fix);
+    free(b->Q), free(b->Cv), free(b->Cs), free(b->lam2), free(b->psi), free(b->sigma), free(b->fix),
+        free(b->rare_hint);
     free(b->nb_start), free(b->nb), free(b->nb_k), free(b->wtab), free(b->gtab), free(b->htab);
     free(b->hb_start), free(b->hb), free(b->hb_k), free(b->stripe), free(b->stripe_sum), free(b->A);
     free(b->s), free(b->sd), free(b->sdd), free(b->H), free(b->lap), free(b->sd_n);

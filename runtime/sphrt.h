@@ -475,6 +475,8 @@ struct sph_body {
     double *sigma;      /* n*6 Cauchy stress, filled at output */
     double *work;       /* n*dim scratch for integrators (symplectic: v at n) */
     uint8_t *fix;       /* n bit masks: bit k = component k has a prescribed velocity */
+    uint8_t *rare_hint; /* laws with state, at each CPU stress block's first particle: steps
+                         * left that take the whole law (templates/body_forces.c, RARE) */
 
     int *nb_start, *nb;   /* CSR neighbour lists, both directions (set-up only; freed) */
     int *nb_k;            /* per pair: entry of the offset tables (set-up only; freed) */
@@ -611,6 +613,10 @@ static inline int sph_rest_after(const sph_body *b, int i)
  * nothing with sph_stencil_off (the program's --no-stencil). */
 extern int sph_stencil_off;
 void sph_stencil_setup(sph_body *b);
+
+/* The program's --whole-law: the CPU's stress pass takes no law's fast path (setup.c;
+ * templates/body_forces.c, RARE). */
+extern int sph_fast_law_off;
 
 typedef struct sph_contact sph_contact;
 

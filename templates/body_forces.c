@@ -221,23 +221,117 @@ enum { @B@_BLOCK = 32 };
 /* This body's law calls exp, log or pow, but its particles' values come in runs of 9, 11 or
  * 12 (3D tensors, the law's state), which the compiler does not vectorise in place: the
  * block's values are first copied entry by entry (entry k of its particle q at [k][q]) into
- * arrays on the stack, the loop over the block's particles reads and writes those alone,
+ * a stage on the stack, the loop over the block's particles reads and writes that alone,
  * and the results go back (compiler/lower/lower.c, stress_staged). */
-static void @B@_stress_block(sph_body *b, int i0, int m)
-{
-    enum { D = @DIM@, R = SPH_ROW(D), T = D * D, N = @B@_BLOCK };
-    double A[T][N], L[T][N], psi[N], F[T][N], Q[T][N];
-    sph_real *restrict Ab = b->A + (size_t)i0 * D * R;
-    const double *restrict Lb = b->L + (size_t)i0 * T;
+typedef struct {
+    double A[@DIM@ * @DIM@][@B@_BLOCK], L[@DIM@ * @DIM@][@B@_BLOCK], psi[@B@_BLOCK];
+    double F[@DIM@ * @DIM@][@B@_BLOCK], Q[@DIM@ * @DIM@][@B@_BLOCK];
 //@if VISCOSITY
-    double Cv[T][N], Cs[N];
+    double Cv[@DIM@ * @DIM@][@B@_BLOCK], Cs[@B@_BLOCK];
 //@endif
 //@if FRACTURE
-    double s[N], lap[N], H[N], sdd[N];
+    double s[@B@_BLOCK], lap[@B@_BLOCK], H[@B@_BLOCK], sdd[@B@_BLOCK];
 //@endif
 //@if STATE
+    double st[@NSTATE@][@B@_BLOCK], st_new[@NSTATE@][@B@_BLOCK];
+//@endif
+//@if CRUSH
+    double lam2[@B@_BLOCK];
+//@endif
+} @B@_stage;
+
+/* Particle q of a stage through @B@_stress_of.  With fast (RARE), its law's fast path
+ * (@B@_material_fast); returns whether a rare branch should have been taken, and then
+ * the particle's results are not the law's (0 otherwise). */
+SPH_FLAT int @B@_stress_lane(@B@_stage *g, int q, int fast)
+{
+    enum { T = @DIM@ * @DIM@ };
+    double a[T], l[T], f[T], qq[T];
+    for (int k = 0; k < T; k++)
+        a[k] = g->A[k][q], l[k] = g->L[k][q];
+//@if VISCOSITY
+    double cv[T];
+//@endif
+//@if STATE
+    double sq[@NSTATE@], snq[@NSTATE@];
+    for (int k = 0; k < @NSTATE@; k++)
+        sq[k] = g->st[k][q];
+//@endif
+    double rare = 0;
+    @B@_stress_of(a, l,
+//@if FRACTURE
+                  g->s[q], g->lap[q], &g->H[q], &g->sdd[q],
+//@endif
+//@if STATE
+                  sq, snq,
+//@endif
+//@if CRUSH
+                  &g->lam2[q],
+//@endif
+                  &g->psi[q], f, qq
+//@if VISCOSITY
+                  , cv, &g->Cs[q]
+//@endif
+//@if RARE
+                  , fast, &rare
+//@endif
+                  );
+    for (int k = 0; k < T; k++) {
+        g->F[k][q] = f[k], g->Q[k][q] = qq[k];
+//@if VISCOSITY
+        g->Cv[k][q] = cv[k];
+//@endif
+    }
+//@if STATE
+    for (int k = 0; k < @NSTATE@; k++)
+        g->st_new[k][q] = snq[k];
+//@endif
+    (void)fast;
+    return rare != 0;
+}
+
+//@if RARE
+/* The block's particles through the law's fast path, which leaves out its rare `if`
+ * blocks (a return map's correction, @B@_material_fast).  Where one of them should have
+ * taken one (a particle that yields), the whole law for the whole block, again, and for the
+ * next 8 steps without the fast path first (b->rare_hint of the block's first particle
+ * counts them down): the yielding part of a body.  The results are the law's either way.
+ * (The whole law for the flagged particles alone is the same work: the compiler makes that
+ * loop a masked vector loop over all of them.)  The flyer plates' stress pass, none of
+ * their particles yielding, took 0.77 of its time with the whole law. */
+static void @B@_stress_lanes(sph_body *b, @B@_stage *g, int i0, int m)
+{
+    if (b->rare_hint[i0] == 0 && !sph_fast_law_off) {
+        int rare[@B@_BLOCK], nrare = 0;
+        for (int q = 0; q < m; q++)
+            rare[q] = @B@_stress_lane(g, q, 1);
+        for (int q = 0; q < m; q++)
+            nrare += rare[q];
+        if (nrare == 0)
+            return;
+        b->rare_hint[i0] = 9;
+    }
+    b->rare_hint[i0] -= b->rare_hint[i0] > 0;
+    for (int q = 0; q < m; q++)
+        @B@_stress_lane(g, q, 0);
+}
+//@else
+static void @B@_stress_lanes(sph_body *b, @B@_stage *g, int i0, int m)
+{
+    (void)b, (void)i0;
+    for (int q = 0; q < m; q++)
+        @B@_stress_lane(g, q, 0);
+}
+//@endif
+
+static void @B@_stress_block(sph_body *b, int i0, int m)
+{
+    enum { D = @DIM@, R = SPH_ROW(D), T = D * D };
+    @B@_stage g;
+    sph_real *restrict Ab = b->A + (size_t)i0 * D * R;
+    const double *restrict Lb = b->L + (size_t)i0 * T;
+//@if STATE
     enum { NS = @NSTATE@ };
-    double st[NS][N], st_new[NS][N];
     double *restrict stb = b->state + (size_t)i0 * NS;
 //@endif
 //@if DIM3
@@ -247,61 +341,21 @@ static void @B@_stress_block(sph_body *b, int i0, int m)
     for (int q = 0; q < m; q++) {
         for (int r = 0; r < D; r++)
             for (int c = 0; c < D; c++)
-                A[r * D + c][q] = Ab[q * D * R + r * R + c];
+                g.A[r * D + c][q] = Ab[q * D * R + r * R + c];
         for (int k = 0; k < D * R; k++)
             Ab[q * D * R + k] = 0; /* ready for the next step's gradient pass */
         for (int k = 0; k < T; k++)
-            L[k][q] = Lb[q * T + k];
+            g.L[k][q] = Lb[q * T + k];
 //@if FRACTURE
-        s[q] = b->s[i0 + q], lap[q] = b->lap[i0 + q], H[q] = b->H[i0 + q];
+        g.s[q] = b->s[i0 + q], g.lap[q] = b->lap[i0 + q], g.H[q] = b->H[i0 + q];
         b->lap[i0 + q] = 0; /* ready for the next step's gradient pass */
 //@endif
 //@if STATE
         for (int k = 0; k < NS; k++)
-            st[k][q] = stb[q * NS + k];
+            g.st[k][q] = stb[q * NS + k];
 //@endif
     }
-//@if CRUSH
-    double lam2[N];
-//@endif
-    for (int q = 0; q < m; q++) {
-        double a[T], l[T], f[T], qq[T];
-        for (int k = 0; k < T; k++)
-            a[k] = A[k][q], l[k] = L[k][q];
-//@if VISCOSITY
-        double cv[T];
-//@endif
-//@if STATE
-        double sq[NS], snq[NS];
-        for (int k = 0; k < NS; k++)
-            sq[k] = st[k][q];
-//@endif
-        @B@_stress_of(a, l,
-//@if FRACTURE
-                      s[q], lap[q], &H[q], &sdd[q],
-//@endif
-//@if STATE
-                      sq, snq,
-//@endif
-//@if CRUSH
-                      &lam2[q],
-//@endif
-//@if VISCOSITY
-                      &psi[q], f, qq, cv, &Cs[q]);
-//@else
-                      &psi[q], f, qq);
-//@endif
-        for (int k = 0; k < T; k++) {
-            F[k][q] = f[k], Q[k][q] = qq[k];
-//@if VISCOSITY
-            Cv[k][q] = cv[k];
-//@endif
-        }
-//@if STATE
-        for (int k = 0; k < NS; k++)
-            st_new[k][q] = snq[k];
-//@endif
-    }
+    @B@_stress_lanes(b, &g, i0, m);
     double *restrict Fb = b->F + (size_t)i0 * 9;
     sph_real *restrict Qb = b->Q;
 //@if VISCOSITY
@@ -311,26 +365,26 @@ static void @B@_stress_block(sph_body *b, int i0, int m)
         const size_t i = (size_t)(i0 + q);
         for (int r = 0; r < D; r++)
             for (int c = 0; c < D; c++) {
-                Fb[q * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] = F[r * D + c][q];
-                Qb[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)Q[r * D + c][q];
+                Fb[q * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] = g.F[r * D + c][q];
+                Qb[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)g.Q[r * D + c][q];
 //@if VISCOSITY
-                Cb[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)Cv[r * D + c][q];
+                Cb[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)g.Cv[r * D + c][q];
 //@endif
             }
-        b->psi[i] = psi[q];
+        b->psi[i] = g.psi[q];
 //@if VISCOSITY
-        b->Cs[i] = (sph_real)Cs[q];
+        b->Cs[i] = (sph_real)g.Cs[q];
         @B@_spare_Cs(b, (int)i);
 //@endif
 //@if FRACTURE
-        b->H[i] = H[q], b->sdd[i] = sdd[q];
+        b->H[i] = g.H[q], b->sdd[i] = g.sdd[q];
 //@endif
 //@if CRUSH
-        b->lam2[i] = lam2[q];
+        b->lam2[i] = g.lam2[q];
 //@endif
 //@if STATE
         for (int k = 0; k < NS; k++)
-            stb[q * NS + k] = st_new[k][q];
+            stb[q * NS + k] = g.st_new[k][q];
 //@endif
     }
 }

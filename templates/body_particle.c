@@ -54,6 +54,9 @@ SPH_FLAT void @B@_stress_of(const double *A, const double *L,
 //@if VISCOSITY
                             , double *Cv, double *Cs
 //@endif
+//@if RARE
+                            , int fast, double *rare
+//@endif
                             )
 {
     enum { D = @DIM@ };
@@ -80,7 +83,15 @@ SPH_FLAT void @B@_stress_of(const double *A, const double *L,
     *sdd = @PF_A@ * (2 * @EPS0@ * lap + (1 - s) * (0.5 / @EPS0@) - 2 * s * *H * (1.0 / @GC@));
 //@else
 //@if STATE
+//@if RARE
+    /* fast: the law without its rare `if` blocks, *rare whether one was due */
+    if (fast)
+        @B@_material_fast(F, st, st_new, S, &e, rare);
+    else
+        @B@_material(F, st, st_new, S, &e);
+//@else
     @B@_material(F, st, st_new, S, &e);
+//@endif
 //@else
     @B@_material(F, S, &e);
 //@endif
@@ -154,11 +165,14 @@ SPH_FLAT void @B@_particle_stress(sph_body *b, int i, const double *A)
 //@if CRUSH
                   &b->lam2[i],
 //@endif
+                  &b->psi[i], F, Q
 //@if VISCOSITY
-                  &b->psi[i], F, Q, Cv, &Cs);
-//@else
-                  &b->psi[i], F, Q);
+                  , Cv, &Cs
 //@endif
+//@if RARE
+                  , 0, NULL
+//@endif
+                  );
 //@if STATE
     for (int k = 0; k < @NSTATE@; k++)
         st[k] = st_new[k];

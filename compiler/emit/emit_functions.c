@@ -101,4 +101,17 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
     fputs(p->nstate ? "    (void)F;\n    (void)st;\n" : "    (void)F;\n", out);
     plan_law_print(p, 0, 1, out);
     fputs("}\n\n", out);
+    if (!p->rare)
+        return;
+    fprintf(out, "/* The same law as if none of its `if` blocks without `else` were taken (the\n"
+                 " * return map's correction of a particle that does not yield), and *rare nonzero\n"
+                 " * where one should have been: there the results are not the law's, and the\n"
+                 " * stress pass takes %s_material's instead (templates/body_forces.c). */\n",
+            b->name);
+    fprintf(out, "SPH_FLAT void %s_material_fast(const double F[9], const double *st, "
+                 "double *st_new,\n                                        double S[9], "
+                 "double *psi, double *rare)\n{\n", b->name);
+    fputs("    (void)F;\n    (void)st;\n", out);
+    plan_law_print_fast(p, 1, out);
+    fputs("}\n\n", out);
 }

@@ -544,6 +544,8 @@ static int if_stmt(Law *L, const MatStmt *s)
     enum { CAP = 64 };
     Binding thn[CAP], els[CAP];
     int mark = L->nenv, bad = 0, was = L->in_if;
+    if (!was && !L->in_tension && s->orelse.n == 0 && L->out.nrare < LAW_MAX_RARE)
+        L->out.rare[L->out.nrare++] = c.s; /* (law_fast) */
     L->in_if = 1;
     int nt = branch(L, &s->body, mark, thn, CAP, &bad);
     int ne = branch(L, &s->orelse, mark, els, CAP, &bad);
@@ -741,7 +743,7 @@ static int plane_strain_entry(const SNode *s, void *ctx)
 /* The results of a law: S, psi, the state's end values and, with a tension block, S+ and
  * psi+ (and once degraded, the degraded S and psi): their slots in *r, into slots[];
  * returns how many. */
-enum { LAW_MAX_RESULTS = 4 * 9 + 4 + LAW_MAX_SLOTS };
+enum { LAW_MAX_RESULTS = 4 * 9 + 4 + LAW_MAX_SLOTS + LAW_MAX_RARE };
 static int result_slots(LawRoots *r, int degraded, int *slots[LAW_MAX_RESULTS])
 {
     int n = 0;
@@ -758,7 +760,40 @@ static int result_slots(LawRoots *r, int degraded, int *slots[LAW_MAX_RESULTS])
         slots[n++] = &r->Sd[k];
     if (r->has_tension && degraded)
         slots[n++] = &r->psid;
+    for (int k = 0; k < r->nrare; k++) /* (rebuilt with the results) */
+        slots[n++] = &r->rare[k];
     return n;
+}
+
+int law_fast(SGraph *g, const LawRoots *r, LawRoots *fast, int *flag)
+{
+    if (r->nrare == 0 || r->has_tension)
+        return -1;
+    *fast = *r;
+    int *slots[LAW_MAX_RESULTS], roots[LAW_MAX_RESULTS], out[LAW_MAX_RESULTS];
+    int zero[LAW_MAX_RARE];
+    const int n = result_slots(fast, 0, slots);
+    for (int k = 0; k < n; k++)
+        roots[k] = *slots[k];
+    for (int k = 0; k < r->nrare; k++)
+        zero[k] = sg_const(g, 0);
+    sg_replace(g, roots, n, r->rare, zero, r->nrare, out);
+    for (int k = 0; k < n; k++)
+        *slots[k] = out[k];
+    /* each condition on the fast path: rebuilt with the others put to 0, itself kept */
+    int conds[LAW_MAX_RARE];
+    for (int k = 0; k < r->nrare; k++) {
+        int from[LAW_MAX_RARE], m = 0;
+        for (int j = 0; j < r->nrare; j++)
+            if (r->rare[j] != r->rare[k])
+                from[m++] = r->rare[j];
+        sg_replace(g, &r->rare[k], 1, from, zero, m, &conds[k]);
+    }
+    fast->nrare = 0;
+    *flag = conds[0];
+    for (int k = 1; k < r->nrare; k++)
+        *flag = sg_binary(g, SN_OR, *flag, conds[k]);
+    return 0;
 }
 
 /* Every result of the law rebuilt with some inputs replaced (sg_substitute's `input`). */

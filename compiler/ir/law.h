@@ -7,6 +7,7 @@
 
 #define LAW_MAX_SLOTS 48   /* per-particle state values of one law (a tensor takes 9) */
 #define LAW_MAX_STATES 16
+#define LAW_MAX_RARE 8     /* conditions of `if` blocks without `else` kept (law_fast) */
 
 /* A state variable of a law: slots offset .. offset+size-1 of the particle's state. */
 typedef struct {
@@ -29,7 +30,17 @@ typedef struct {
     double init[LAW_MAX_SLOTS];  /* their initial values */
     int next[LAW_MAX_SLOTS];     /* their values at the end of the law (graph nodes) */
     int dissipation;             /* 1 + the slot of the dissipated energy density; 0: none */
+    int rare[LAW_MAX_RARE];      /* the conditions of the law's `if` blocks without `else`
+                                  * (not nested, not in the tension block): a return map's
+                                  * `if f > 0 { ... }`, which most particles do not take */
+    int nrare;
 } LawRoots;
+
+/* The law as if none of its rare `if` blocks (r->rare) were taken: fast gets r's results
+ * rebuilt with those conditions put to 0 (folded: the blocks' work is gone), *flag a node
+ * that is nonzero where one of them holds after all (evaluated along that path: where it is
+ * 0, fast's results are r's).  Returns 0, or -1 when the law has no such block. */
+int law_fast(SGraph *g, const LawRoots *r, LawRoots *fast, int *flag);
 
 /* Evaluate `law` for a body of dimension dim with parameter values params (NULL:
  * symbolic).  The `tension` block is evaluated only when tension is set (bodies with

@@ -420,8 +420,10 @@ int sg_operations(const SGraph *g, const int *roots, int nroots)
     return ops;
 }
 
-int sg_substitute(SGraph *g, const int *roots, int nroots, int (*input)(const SNode *, void *),
-                  void *ctx, int *out)
+/* The roots rebuilt into out: replace(id, node, ctx) gives a node that replaces node id, or
+ * -1 to rebuild it from its rebuilt operands (sg_substitute, sg_replace). */
+static void rebuild(SGraph *g, const int *roots, int nroots,
+                    int (*replace)(int, const SNode *, void *), void *ctx, int *out)
 {
     const int n = g->n;
     char *live = calloc((size_t)n + 1, 1);
@@ -435,13 +437,14 @@ int sg_substitute(SGraph *g, const int *roots, int nroots, int (*input)(const SN
         const SNode s = g->nodes[id]; /* a copy: the graph grows */
         const int a = s.a >= 0 && s.op != SN_EXT ? map[s.a] : s.a, b = s.b >= 0 && s.op != SN_EXT ? map[s.b] : s.b;
         g->line = s.line, g->file = s.file; /* the rebuilt node keeps its model line */
-        int r = id;
-        switch (s.op) {
-        case SN_INPUT: {
-            const int k = input(&s, ctx);
-            r = k >= 0 ? k : id;
-            break;
+        int r = replace(id, &s, ctx);
+        if (r >= 0) {
+            map[id] = r;
+            continue;
         }
+        r = id;
+        switch (s.op) {
+        case SN_INPUT:
         case SN_CONST:
         case SN_PARAM: break;
         case SN_NEG:
@@ -465,7 +468,48 @@ int sg_substitute(SGraph *g, const int *roots, int nroots, int (*input)(const SN
     g->line = line, g->file = file;
     free(map);
     free(live);
+}
+
+typedef struct {
+    int (*input)(const SNode *, void *);
+    void *ctx;
+} InputCtx;
+
+static int replace_input(int id, const SNode *s, void *ctx)
+{
+    const InputCtx *c = ctx;
+    (void)id;
+    return s->op == SN_INPUT ? c->input(s, c->ctx) : -1;
+}
+
+int sg_substitute(SGraph *g, const int *roots, int nroots, int (*input)(const SNode *, void *),
+                  void *ctx, int *out)
+{
+    InputCtx c = {input, ctx};
+    rebuild(g, roots, nroots, replace_input, &c, out);
     return 0;
+}
+
+typedef struct {
+    const int *from, *to;
+    int n;
+} ReplaceCtx;
+
+static int replace_listed(int id, const SNode *s, void *ctx)
+{
+    const ReplaceCtx *c = ctx;
+    (void)s;
+    for (int k = 0; k < c->n; k++)
+        if (c->from[k] == id)
+            return c->to[k];
+    return -1;
+}
+
+void sg_replace(SGraph *g, const int *roots, int nroots, const int *from, const int *to, int n,
+                int *out)
+{
+    ReplaceCtx c = {from, to, n};
+    rebuild(g, roots, nroots, replace_listed, &c, out);
 }
 
 int sg_first_nonfinite(const SGraph *g, const int *roots, int nroots)

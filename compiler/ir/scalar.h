@@ -83,6 +83,11 @@ int sg_operations(const SGraph *g, const int *roots, int nroots);
 int sg_substitute(SGraph *g, const int *roots, int nroots, int (*input)(const SNode *, void *),
                   void *ctx, int *out);
 
+/* The roots rebuilt (into out) with nodes from[k] replaced by nodes to[k] (k < n), folded
+ * again: a constant put for a condition folds its selects to one side. */
+void sg_replace(SGraph *g, const int *roots, int nroots, const int *from, const int *to, int n,
+                int *out);
+
 /* Reverse-mode derivatives of node y with respect to nodes x[0 .. n-1] (inputs, usually),
  * built into the graph (so folded and shared as any node) into dydx: the derivative of the
  * branch taken for select, min, max and abs, 0 for comparisons; through a spectral routine

@@ -99,6 +99,8 @@ int lower_model(const Model *m, Plan *plan)
         bad |= !built;
         p->nstate = p->roots.nslots;
         features(m, b, &p->roots, p);
+        if (p->rare && law_fast(&p->law, &p->roots, &p->fast, &p->fast_flag))
+            p->rare = 0;
         numbers(m, b, p);
         plan->fracture |= p->fracture;
     }
@@ -132,16 +134,31 @@ int plan_law_outputs(const BodyPlan *p, int degraded, LawOutput out[LAW_MAX_OUTP
     return 3;
 }
 
-void plan_law_print(const BodyPlan *p, int degraded, int as_c, FILE *out)
+static void print_outputs(const SGraph *law, const LawOutput *o, int no, int as_c, FILE *out)
 {
-    LawOutput o[LAW_MAX_OUTPUTS];
-    int no = plan_law_outputs(p, degraded, o), nroots = 0;
-    int roots[9 + 1 + LAW_MAX_SLOTS];
+    int nroots = 0;
+    int roots[9 + 1 + LAW_MAX_SLOTS + 1];
     for (int k = 0; k < no; k++)
         for (int q = 0; q < (o[k].n < 0 ? 1 : o[k].n); q++)
             roots[nroots++] = o[k].ids[q];
-    sg_emit(&p->law, roots, nroots, out, "    ");
+    sg_emit(law, roots, nroots, out, "    ");
     for (int k = 0; k < no; k++)
-        sg_emit_outputs(&p->law, "    ", as_c ? o[k].c_name : o[k].label, o[k].ids, o[k].n,
+        sg_emit_outputs(law, "    ", as_c ? o[k].c_name : o[k].label, o[k].ids, o[k].n,
                         as_c ? ";" : "", out);
+}
+
+void plan_law_print(const BodyPlan *p, int degraded, int as_c, FILE *out)
+{
+    LawOutput o[LAW_MAX_OUTPUTS];
+    print_outputs(&p->law, o, plan_law_outputs(p, degraded, o), as_c, out);
+}
+
+void plan_law_print_fast(const BodyPlan *p, int as_c, FILE *out)
+{
+    BodyPlan q = *p; /* (the fast roots in place of the law's; the graph shared) */
+    q.roots = p->fast;
+    LawOutput o[LAW_MAX_OUTPUTS + 1];
+    int no = plan_law_outputs(&q, 0, o);
+    o[no++] = (LawOutput){"*rare", "rare", &p->fast_flag, -1};
+    print_outputs(&p->law, o, no, as_c, out);
 }

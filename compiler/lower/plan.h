@@ -32,7 +32,8 @@
     X(symplectic, NULL, SYMPLECTIC, m->integrator == INTEGRATOR_SYMPLECTIC) /* else Verlet */      \
     X(pair_terms, NULL, PAIR_TERMS, b->hourglass > 0) /* any term of B_pair_terms */             \
     X(dim3, NULL, DIM3, m->dim == 3) /* else 2D (plane strain) */                               \
-    X(staged, NULL, STAGED, stress_staged(m, r, &p->law)) /* the CPU's stress pass by blocks */
+    X(staged, NULL, STAGED, stress_staged(m, r, &p->law)) /* the CPU's stress pass by blocks */ \
+    X(rare, NULL, RARE, p->staged && !p->fracture && r->nrare > 0) /* and its law's fast path */
 
 /* The numbers of a body's code that the templates read, one row each:
  *
@@ -64,6 +65,8 @@ typedef struct {
     int nstate;         /* state values per particle of its law (plasticity); 0: none */
     SGraph law;         /* the material law, constants folded, for this body's dimension */
     LawRoots roots;
+    LawRoots fast;      /* with `rare`: the law as if no rare `if` were taken (law_fast) */
+    int fast_flag;      /* and the node that says one should have been */
 } BodyPlan;
 
 /* The plan of a whole scene. */
@@ -96,6 +99,8 @@ int plan_law_outputs(const BodyPlan *p, int degraded, LawOutput out[LAW_MAX_OUTP
 /* The law's graph computing those outputs, then the outputs: as C statements (as_c, at the
  * indent of a function body) or as the dump shows them. */
 void plan_law_print(const BodyPlan *p, int degraded, int as_c, FILE *out);
+/* The same for the law's fast path (a body with `rare`): its outputs and `*rare`, the flag. */
+void plan_law_print_fast(const BodyPlan *p, int as_c, FILE *out);
 
 /* Print the plan (sphc --dump=plan): each body's features and its law's graph. */
 void plan_dump(const Plan *plan, FILE *out);

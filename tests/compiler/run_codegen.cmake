@@ -46,12 +46,13 @@ if(CC)
 endif()
 if(VECTORISED)
   # The loop over particles: after SPH_IVDEP where the pass reads the body's
-  # arrays in place, the loop around B_stress_of where it copies blocks (STAGED).
+  # arrays in place, the first loop around B_stress_lane where it copies blocks (STAGED;
+  # with a law's fast path, RARE, the loop on that path).
   string(FIND "${code}" "SPH_IVDEP" at)
   set(after 2) # the loop is the line after SPH_IVDEP
   if(at EQUAL -1)
-    string(FIND "${code}" "double a[T], l[T], f[T], qq[T];" at)
-    set(after 0) # the loop is the line before its first statement
+    string(FIND "${code}" "_stress_lane(g, q, " at)
+    set(after 0) # the loop is the line before its statement
   endif()
   set(loop 0)
   if(NOT at EQUAL -1)
