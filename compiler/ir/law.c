@@ -815,6 +815,50 @@ static void fold_plane_strain(Law *L)
     substitute_results(L, plane_strain_entry, L->g);
 }
 
+/* The state slots put to 0 (zero_state_entry's set). */
+typedef struct {
+    SGraph *g;
+    const char *zero; /* zero[k]: slot k is 0 */
+} ZeroState;
+
+static int zero_state_entry(const SNode *s, void *ctx)
+{
+    const ZeroState *z = ctx;
+    if (strcmp(s->name, LAW_INPUT_STATE) || s->v < 0 || !z->zero[(int)s->v])
+        return -1;
+    return sg_const(z->g, 0);
+}
+
+/* State slots that start at 0 and that the law leaves at 0 as long as they are 0 (the
+ * out-of-plane entries of J2's plastic metric Cp in 2D plane strain, where F's are 0): 0 in
+ * every result, so that the emitted law leaves out what they multiply.  The largest such
+ * set: every slot that starts at 0, less those whose end value does not fold to 0 with the
+ * set put to 0, until none is left out.  (The state's values come from the law alone: its
+ * constant initial values, then its end values step by step.) */
+static void fold_zero_state(Law *L)
+{
+    LawRoots *r = &L->out;
+    char zero[LAW_MAX_SLOTS] = {0};
+    int nzero = 0;
+    for (int k = 0; k < r->nslots; k++)
+        nzero += zero[k] = r->init[k] == 0;
+    ZeroState z = {L->g, zero};
+    for (int changed = nzero > 0; changed;) {
+        int next[LAW_MAX_SLOTS];
+        sg_substitute(L->g, r->next, r->nslots, zero_state_entry, &z, next);
+        changed = 0;
+        for (int k = 0; k < r->nslots; k++) {
+            double v;
+            if (zero[k] && !(sg_is_const(L->g, next[k], &v) && v == 0)) {
+                zero[k] = 0, nzero--;
+                changed = 1;
+            }
+        }
+    }
+    if (nzero > 0)
+        substitute_results(L, zero_state_entry, &z);
+}
+
 /* S = F^-1 dpsi/dF (eq. 10, 17: S = 2 dpsi/dC) of energy psi, under the energy's line:
  * the stress of a law that gives only its energy (a hyperelastic law is its strain energy;
  * P = dpsi/dF, S = F^-1 P), and S+ of a tension block that gives only psi+ (eq. 11, 17).
@@ -956,6 +1000,8 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *p
         bad = derive_stresses(&L, dim, derived, derived_p && L.out.has_tension) != 0;
     if (!bad && L.of)
         variables_to_F(&L, dim);
+    if (!bad && dim == 2)
+        fold_zero_state(&L);
     free(L.env);
     if (!bad && L.out.has_tension) {
         L.g->line = law->loc.line; /* the degradation is the law's as a whole */
