@@ -64,6 +64,20 @@ static void law_summary(const BodyPlan *p, const MaterialDef *law, FILE *out)
     fputs(")\n", out);
 }
 
+/* The operations of the law's fast path: its S, psi, state and flag. */
+static int fast_operations(const BodyPlan *p)
+{
+    const LawRoots *r = &p->fast;
+    int all[9 + 1 + LAW_MAX_SLOTS + 1], n = 0;
+    for (int k = 0; k < 9; k++)
+        all[n++] = r->S[k];
+    all[n++] = r->psi;
+    for (int k = 0; k < p->nstate; k++)
+        all[n++] = r->next[k];
+    all[n++] = p->fast_flag;
+    return sg_operations(&p->law, all, n);
+}
+
 void plan_dump(const Plan *plan, FILE *out)
 {
     const Model *m = plan->model;
@@ -81,6 +95,11 @@ void plan_dump(const Plan *plan, FILE *out)
         fputs("\n", out);
         law_summary(p, b->law, out);
         plan_law_print(p, 0, 0, out);
+        if (p->rare) {
+            fprintf(out, "  fast path (the CPU's stress pass; no `if` without `else` taken, rare "
+                         "the flag that one was due): %d operations\n", fast_operations(p));
+            plan_law_print_fast(p, 0, out);
+        }
         if (p->roots.has_tension) {
             fputs("  degraded by the phase field (eq. 7, 18):\n", out);
             plan_law_print(p, 1, 0, out);
