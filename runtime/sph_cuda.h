@@ -803,6 +803,9 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->A = NULL; /* the device sums A per particle, in registers */
     b->nb_start = b->nb = b->nb_k = NULL;
     b->sigma = NULL, b->ms_list = NULL, b->ms_count = NULL;
+    b->rare_hint = NULL; /* (the CPU's stress blocks) */
+    b->st_o = b->st_k = b->st_run = NULL; /* the lattice stencil: the CPU's pair passes */
+    b->rest = b->rest_start = b->rest_j = b->rest_k = NULL;
     /* Neither side writes these pages again: both keep a copy, and reads never fault. */
     sph_read_mostly(b, sizeof *b);
     if (nbcs) {
