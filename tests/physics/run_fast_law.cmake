@@ -5,32 +5,18 @@
 # -DSPHC= -DMODEL= -DOUT= -DEND= [-DTOL=1e-9] [-DARGS=]
 # The generated code must have the fast path (a *_material_fast function) and the run must
 # yield (a *_plastic energy above zero by its end), so that both paths are exercised.
-include(${CMAKE_CURRENT_LIST_DIR}/near_energies.cmake) # (TOL's default)
+include(${CMAKE_CURRENT_LIST_DIR}/compare_runs.cmake) # (TOL's default)
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
-execute_process(COMMAND ${SPHC} --emit-c ${OUT}/c -o ${OUT}/model ${MODEL} RESULT_VARIABLE rc
-                OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "sphc ${MODEL}: exit ${rc}\n${out}\n${err}")
-endif()
+build_model(${MODEL} ${OUT}/model --emit-c ${OUT}/c)
 file(GLOB source ${OUT}/c/*.c)
 file(READ "${source}" code)
 if(NOT code MATCHES "_material_fast\\(")
   message(FATAL_ERROR "${MODEL}: the generated code has no law fast path")
 endif()
 separate_arguments(args UNIX_COMMAND "${ARGS}")
-foreach(form fast whole)
-  set(flag "")
-  if(form STREQUAL "whole")
-    set(flag --whole-law)
-  endif()
-  execute_process(COMMAND ${OUT}/model --quiet --threads 1 --end ${END} ${flag} ${args}
-                          --out ${OUT}/${form}_out
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0 AND NOT rc EQUAL 1) # (1: an expectation failed, the same in both)
-    message(FATAL_ERROR "${form}: exit ${rc}\n${out}\n${err}")
-  endif()
-endforeach()
+run_model(${OUT}/model ${OUT}/fast_out ${args})
+run_model(${OUT}/model ${OUT}/whole_out --whole-law ${args})
 # the plastic energies of the last row (columns named *_plastic) must not all be zero
 execute_process(
   COMMAND awk -F, "NR == 1 { for (k = 1; k <= NF; k++) if ($k ~ /_plastic$/) col[k] = 1; next }

@@ -5,7 +5,7 @@
 # and run to END on one thread, and every value of energies.csv must agree within TOL of the
 # row's largest energy (the stresses differ by round-off, up to ~1e-11 for J2, which the
 # steps carry on; the CSV's 10 significant digits show none of it over these runs).
-include(${CMAKE_CURRENT_LIST_DIR}/near_energies.cmake) # (TOL's default)
+include(${CMAKE_CURRENT_LIST_DIR}/compare_runs.cmake) # (TOL's default)
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 get_filename_component(dir ${MODEL} DIRECTORY)
@@ -23,16 +23,8 @@ foreach(form derived written)
   if(form STREQUAL "written")
     set(src ${OUT}/${stem}_written.sph)
   endif()
-  execute_process(COMMAND ${SPHC} -o ${OUT}/${form} ${src} RESULT_VARIABLE rc
-                  OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "sphc ${src}: exit ${rc}\n${out}\n${err}")
-  endif()
-  execute_process(COMMAND ${OUT}/${form} --quiet --threads 1 --end ${END} --out ${OUT}/${form}_out
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0 AND NOT rc EQUAL 1) # (1: an expectation failed, the same in both)
-    message(FATAL_ERROR "${form}: exit ${rc}\n${out}\n${err}")
-  endif()
+  build_model(${src} ${OUT}/${form})
+  run_model(${OUT}/${form} ${OUT}/${form}_out)
 endforeach()
 near_energies(${OUT}/derived_out ${OUT}/written_out ${TOL})
 message(STATUS "${stem}, ${LAW} derived against written: ${report}")

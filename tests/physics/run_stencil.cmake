@@ -5,26 +5,17 @@
 # energies.csv must agree within TOL of the row's largest energy, and summary.json must show
 # the stencil used: at least the fraction LEAST of each body's particles in its runs (and
 # none with --no-stencil), so that a stencil that stopped matching the lattice fails here.
-include(${CMAKE_CURRENT_LIST_DIR}/near_energies.cmake) # (TOL's default)
+include(${CMAKE_CURRENT_LIST_DIR}/compare_runs.cmake) # (TOL's default)
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
-execute_process(COMMAND ${SPHC} -o ${OUT}/model ${MODEL} RESULT_VARIABLE rc
-                OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "sphc ${MODEL}: exit ${rc}\n${out}\n${err}")
-endif()
+build_model(${MODEL} ${OUT}/model)
 separate_arguments(args UNIX_COMMAND "${ARGS}")
 foreach(form stencil lists)
   set(flag "")
   if(form STREQUAL "lists")
     set(flag --no-stencil)
   endif()
-  execute_process(COMMAND ${OUT}/model --quiet --threads 1 --end ${END} ${flag} ${args}
-                          --out ${OUT}/${form}_out
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0 AND NOT rc EQUAL 1) # (1: an expectation failed, the same in both)
-    message(FATAL_ERROR "${form}: exit ${rc}\n${out}\n${err}")
-  endif()
+  run_model(${OUT}/model ${OUT}/${form}_out ${flag} ${args})
   file(READ ${OUT}/${form}_out/summary.json json)
   string(JSON nbodies LENGTH "${json}" bodies)
   math(EXPR last "${nbodies} - 1")
