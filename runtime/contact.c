@@ -156,7 +156,7 @@ static inline double moved2_of(const double *X, const double *u, const double *x
 }
 
 /* Whether a particle has moved more than a quarter of the skin since the candidates were
- * built (the test of sph_csearch_update, on X + u as gather() would make them): one pass
+ * built (sph_csearch_stale, on X + u as gather() would make them): one pass
  * over the bodies' arrays, where gathering every particle's position and velocity first
  * took 3 % of the flyer plates' step (7 % on two threads) while they were far apart. */
 static int rebuild_due(const sph_contact *c, const sph_sim *s)
@@ -172,7 +172,7 @@ static int rebuild_due(const sph_contact *c, const sph_sim *s)
                                       : moved2_of(b->X, b->u, x0, b->nown, 3);
         moved2 = m2 > moved2 ? m2 : moved2;
     }
-    return moved2 > 0.0625 * q->skin * q->skin;
+    return sph_csearch_stale(q, moved2);
 }
 
 /* Room for n particles in the arrays of the contact set; 0, or -1 when memory runs out. */

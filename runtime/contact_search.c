@@ -153,7 +153,7 @@ int sph_csearch_update(sph_csearch *c, const double *x)
             }
             moved2 = d2 > moved2 ? d2 : moved2;
         }
-        if (moved2 <= 0.0625 * c->skin * c->skin) /* a quarter of the skin */
+        if (!sph_csearch_stale(c, moved2))
             return 0;
     }
     rebuild(c, x);

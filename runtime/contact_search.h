@@ -25,6 +25,12 @@ typedef struct {
 /* Brings the candidates up to date with positions x (n*dim): rebuilds when a particle has
  * moved more than skin/4 since the last rebuild.  Returns 1 when it rebuilt. */
 int sph_csearch_update(sph_csearch *c, const double *x);
+/* Whether candidates built are out of date once the farthest particle has moved sqrt(moved2)
+ * since their rebuild: more than a quarter of the skin (the test of sph_csearch_update). */
+static inline int sph_csearch_stale(const sph_csearch *c, double moved2)
+{
+    return moved2 > 0.0625 * c->skin * c->skin;
+}
 /* The candidates built at positions x0, as the last rebuild at x0 made them (a resumed run's,
  * from its checkpoint). */
 void sph_csearch_build_at(sph_csearch *c, const double *x0);
