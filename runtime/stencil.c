@@ -50,8 +50,8 @@ static int find_stencil(sph_body *b)
         return 0;
     int *k = malloc((size_t)m * sizeof *k), *o = malloc((size_t)m * sizeof *o);
     if (!k || !o) {
-        free(k), free(o);
-        return 0;
+        sph_error("out of memory");
+        exit(SPH_EXIT_SETUP);
     }
     for (int i = 0; i + 1 < n; i++) {
         if (b->hb_start[i + 1] - b->hb_start[i] != m)
@@ -104,6 +104,12 @@ static void stencil_particles(const sph_body *b, uint8_t *in)
     free(back), free(list);
 }
 
+/* Whether the pair of particles i and j is left to the rest lists: one is not in a run. */
+static inline int rest_pair(const uint8_t *in, int i, int j)
+{
+    return !in[i] || !in[j];
+}
+
 /* The rest lists (sphrt.h), from the half lists; in[i]: particle i is in a run. */
 static void rest_lists(sph_body *b, const uint8_t *in)
 {
@@ -112,7 +118,7 @@ static void rest_lists(sph_body *b, const uint8_t *in)
     for (int i = 0; i < n; i++) {
         int c = 0;
         for (int p = b->hb_start[i]; p < b->hb_start[i + 1]; p++)
-            c += !in[i] || !in[b->hb[p]];
+            c += rest_pair(in, i, b->hb[p]);
         nrest += !in[i] || c > 0;
         npairs += c;
     }
@@ -129,7 +135,7 @@ static void rest_lists(sph_body *b, const uint8_t *in)
     for (int i = 0; i < n; i++) {
         const int q0 = q;
         for (int p = b->hb_start[i]; p < b->hb_start[i + 1]; p++)
-            if (!in[i] || !in[b->hb[p]]) {
+            if (rest_pair(in, i, b->hb[p])) {
                 b->rest_j[q] = b->hb[p];
                 b->rest_k[q++] = b->hb_k[p];
             }
