@@ -119,9 +119,11 @@ void plan_free(Plan *plan)
     plan->nbodies = 0;
 }
 
-int plan_law_outputs(const BodyPlan *p, int degraded, LawOutput out[LAW_MAX_OUTPUTS])
+/* The outputs of the law with roots r (the law's, or its fast path's) and nstate state
+ * values. */
+static int roots_outputs(const LawRoots *r, int nstate, int degraded,
+                         LawOutput out[LAW_MAX_OUTPUTS])
 {
-    const LawRoots *r = &p->roots;
     if (degraded) {
         out[0] = (LawOutput){"S", "S", r->Sd, 9};
         out[1] = (LawOutput){"*psi", "psi", &r->psid, -1};
@@ -129,19 +131,36 @@ int plan_law_outputs(const BodyPlan *p, int degraded, LawOutput out[LAW_MAX_OUTP
     } else {
         out[0] = (LawOutput){"S", "S", r->S, 9};
         out[1] = (LawOutput){"*psi", "psi", &r->psi, -1};
-        out[2] = (LawOutput){"st_new", "st_new", r->next, p->nstate};
+        out[2] = (LawOutput){"st_new", "st_new", r->next, nstate};
     }
     return 3;
 }
 
-static void print_outputs(const SGraph *law, const LawOutput *o, int no, int as_c, FILE *out)
+int plan_law_outputs(const BodyPlan *p, int degraded, LawOutput out[LAW_MAX_OUTPUTS])
+{
+    return roots_outputs(&p->roots, p->nstate, degraded, out);
+}
+
+int plan_law_fast_outputs(const BodyPlan *p, LawOutput out[LAW_MAX_OUTPUTS + 1])
+{
+    int no = roots_outputs(&p->fast, p->nstate, 0, out);
+    out[no++] = (LawOutput){"*rare", "rare", &p->fast_flag, -1};
+    return no;
+}
+
+int plan_output_roots(const LawOutput *o, int no, int roots[PLAN_MAX_ROOTS])
 {
     int nroots = 0;
-    int roots[9 + 1 + LAW_MAX_SLOTS + 1];
     for (int k = 0; k < no; k++)
         for (int q = 0; q < (o[k].n < 0 ? 1 : o[k].n); q++)
             roots[nroots++] = o[k].ids[q];
-    sg_emit(law, roots, nroots, out, "    ");
+    return nroots;
+}
+
+static void print_outputs(const SGraph *law, const LawOutput *o, int no, int as_c, FILE *out)
+{
+    int roots[PLAN_MAX_ROOTS];
+    sg_emit(law, roots, plan_output_roots(o, no, roots), out, "    ");
     for (int k = 0; k < no; k++)
         sg_emit_outputs(law, "    ", as_c ? o[k].c_name : o[k].label, o[k].ids, o[k].n,
                         as_c ? ";" : "", out);
@@ -155,10 +174,6 @@ void plan_law_print(const BodyPlan *p, int degraded, int as_c, FILE *out)
 
 void plan_law_print_fast(const BodyPlan *p, int as_c, FILE *out)
 {
-    BodyPlan q = *p; /* (the fast roots in place of the law's; the graph shared) */
-    q.roots = p->fast;
     LawOutput o[LAW_MAX_OUTPUTS + 1];
-    int no = plan_law_outputs(&q, 0, o);
-    o[no++] = (LawOutput){"*rare", "rare", &p->fast_flag, -1};
-    print_outputs(&p->law, o, no, as_c, out);
+    print_outputs(&p->law, o, plan_law_fast_outputs(p, o), as_c, out);
 }

@@ -91,11 +91,18 @@ typedef struct {
 } LawOutput;
 
 enum { LAW_MAX_OUTPUTS = 3 };
+/* The most graph nodes the outputs of a material function hold (S, psi, the state, a flag). */
+enum { PLAN_MAX_ROOTS = 9 + 1 + LAW_MAX_SLOTS + 1 };
 
 /* The outputs of body p's material function in the order of its arguments: S, psi and the
  * state at the end of the step; degraded (fracture, eq. 7 and 18): S, psi and psi+.  Returns
  * their number. */
 int plan_law_outputs(const BodyPlan *p, int degraded, LawOutput out[LAW_MAX_OUTPUTS]);
+/* The outputs of its fast path (a body with `rare`): S, psi, the state and `*rare`, the flag
+ * that a rare `if` was due. */
+int plan_law_fast_outputs(const BodyPlan *p, LawOutput out[LAW_MAX_OUTPUTS + 1]);
+/* The graph nodes of outputs o[0 .. no-1], in order, into roots; returns their number. */
+int plan_output_roots(const LawOutput *o, int no, int roots[PLAN_MAX_ROOTS]);
 /* The law's graph computing those outputs, then the outputs: as C statements (as_c, at the
  * indent of a function body) or as the dump shows them. */
 void plan_law_print(const BodyPlan *p, int degraded, int as_c, FILE *out);

@@ -35,12 +35,9 @@ static void law_summary(const BodyPlan *p, const MaterialDef *law, FILE *out)
 {
     const LawRoots *r = &p->roots;
     const SGraph *g = &p->law;
-    int all[9 + 1 + LAW_MAX_SLOTS], n = 0;
-    for (int k = 0; k < 9; k++)
-        all[n++] = r->S[k];
-    all[n++] = r->psi;
-    for (int k = 0; k < p->nstate; k++)
-        all[n++] = r->next[k];
+    LawOutput o[LAW_MAX_OUTPUTS];
+    int all[PLAN_MAX_ROOTS];
+    const int n = plan_output_roots(o, plan_law_outputs(p, 0, o), all); /* S, psi, state */
     fputs("  material law: ", out);
     stress_source(law, out);
     if (r->has_tension) { /* the function computes the degraded law only */
@@ -67,15 +64,10 @@ static void law_summary(const BodyPlan *p, const MaterialDef *law, FILE *out)
 /* The operations of the law's fast path: its S, psi, state and flag. */
 static int fast_operations(const BodyPlan *p)
 {
-    const LawRoots *r = &p->fast;
-    int all[9 + 1 + LAW_MAX_SLOTS + 1], n = 0;
-    for (int k = 0; k < 9; k++)
-        all[n++] = r->S[k];
-    all[n++] = r->psi;
-    for (int k = 0; k < p->nstate; k++)
-        all[n++] = r->next[k];
-    all[n++] = p->fast_flag;
-    return sg_operations(&p->law, all, n);
+    LawOutput o[LAW_MAX_OUTPUTS + 1];
+    int roots[PLAN_MAX_ROOTS];
+    const int n = plan_output_roots(o, plan_law_fast_outputs(p, o), roots);
+    return sg_operations(&p->law, roots, n);
 }
 
 void plan_dump(const Plan *plan, FILE *out)
