@@ -303,11 +303,9 @@ SPH_FLAT int @B@_stress_lane(@B@_stage *g, int q, int fast)
 static void @B@_stress_lanes(sph_body *b, @B@_stage *g, int i0, int m)
 {
     if (b->rare_hint[i0] == 0 && !sph_fast_law_off) {
-        int rare[@B@_BLOCK], nrare = 0;
+        int nrare = 0;
         for (int q = 0; q < m; q++)
-            rare[q] = @B@_stress_lane(g, q, 1);
-        for (int q = 0; q < m; q++)
-            nrare += rare[q];
+            nrare += @B@_stress_lane(g, q, 1);
         if (nrare == 0)
             return;
         b->rare_hint[i0] = 9;
