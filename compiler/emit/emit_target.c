@@ -74,6 +74,7 @@ static const BodyPiece BODY_CPU[] = {
     {PIECE_LAW, NULL},
     {PIECE_GRAVITY, NULL},
     {PIECE_TEMPLATE, "body_particle.c"},
+    {PIECE_TEMPLATE, "body_pairs.c"},
     {PIECE_TEMPLATE, "body_stencil.c"},
     {PIECE_TEMPLATE, "body_forces.c"},
     {PIECE_BCS, NULL},
