@@ -444,6 +444,15 @@ typedef struct {
 
 struct sph_par;
 
+/* One task of a block of the gradient pass's offset blocks (offset_blocks.c): particle
+ * i0 + l of the block, for each lane l in the mask key & 255, has the pair with particle
+ * i0 + l + off at offset table entry key >> 8. */
+#define SPH_OB_LANES 8
+typedef struct {
+    int off;
+    unsigned key;
+} sph_ob_task;
+
 struct sph_body {
     const sph_body_desc *desc;
     int n, dim;
@@ -515,6 +524,16 @@ struct sph_body {
      * cache lines for a few particles apiece (they took a sixth of crack branching's step).
      * NULL without a stencil. */
     int nrest, *rest, *rest_start, *rest_j, *rest_k;
+    /* The gradient pass's offset blocks (offset_blocks.c; 3D, CPU only): block B, the
+     * SPH_OB_LANES own particles from SPH_OB_LANES B on, sums its particles' own pairs by the
+     * tasks ob[ob_start[B] .. ob_start[B + 1] - 1] (sph_ob_task), reading u by component from
+     * ob_u (row r from ob_u + r ob_stride, particle i at ob_pad + i); ob_pairs: the pairs,
+     * in both directions, that the tasks' lanes hold.  nob = 0, NULL: none (the half lists
+     * sum the pairs). */
+    int nob, *ob_start, ob_pad, ob_stride;
+    sph_ob_task *ob;
+    double *ob_u;
+    long ob_pairs;
     sph_real *A;          /* n*SPH_TENSOR_SIZE(dim): sum_j (u_j - u_i) (x) w_ij, the pair part of
                            * eq. 53, row by row, rows padded like wtab (CPU only) */
     /* Full lists (both directions) for device targets, whose threads each sum their own
@@ -613,6 +632,10 @@ static inline int sph_rest_after(const sph_body *b, int i)
  * nothing with sph_stencil_off (the program's --no-stencil). */
 extern int sph_stencil_off;
 void sph_stencil_setup(sph_body *b);
+
+/* offset_blocks.c: the body's offset blocks (ob_* above), from its full lists (the set-up,
+ * before the half lists); nothing with sph_stencil_off, in 2D or with fracture. */
+void sph_offset_blocks_setup(sph_body *b, int fracture);
 
 /* The program's --whole-law: the CPU's stress pass takes no law's fast path (setup.c;
  * templates/body_forces.c, RARE). */

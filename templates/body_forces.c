@@ -91,27 +91,63 @@ static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
 //@endif
 }
 
-static void @B@_gradient_pass(sph_body *b)
+//@if OFFSET_BLOCKS
+/* 3D, on a lattice: the own pairs' sums by the body's offset blocks (runtime/offset_blocks.c)
+ * instead of the half lists.  Block B's particles i0 .. i0 + 7 in the lanes of vectors of
+ * eight; a task of the block is one offset j - i and one table entry w, the same for the
+ * lanes of its mask, so u_j - u_i is one unaligned vector load from u by component (copied
+ * into b->ob_u first) less u_i, and its product with w nine multiply-adds into A's nine
+ * entries, which stay in registers over the block's tasks and are written once (a lane not
+ * in the mask adds zeros).  Each pair is summed from both of its particles, the full lists,
+ * and nothing is written to j: no stripes.  Overwrites A_i of own particles with the sums
+ * of their own pairs (the sums of the lists, in another order).  The Taylor bar's gradient
+ * pass took about 0.55 of the half lists' time, its step 0.9. */
+static void @B@_gradient_blocks(sph_body *b)
+{
+    typedef double dv8 __attribute__((vector_size(SPH_OB_LANES * sizeof(double)),
+                                      aligned(sizeof(double)), may_alias));
+    typedef long long lv8 __attribute__((vector_size(SPH_OB_LANES * sizeof(long long))));
+    enum { D = 3, R = SPH_ROW(D) };
+    const int n = b->nown, S = b->ob_stride;
+    const double *restrict u = b->u;
+    double *restrict U = b->ob_u + b->ob_pad; /* u_i^r at U[r S + i] */
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; i++)
+        for (int r = 0; r < D; r++)
+            U[(size_t)r * S + i] = u[(size_t)i * D + r];
+    const sph_ob_task *restrict ob = b->ob;
+    const int *restrict os = b->ob_start;
+    const sph_real *restrict wtab = b->wtab;
+    sph_real *restrict A = b->A;
+    const lv8 lane = {1, 2, 4, 8, 16, 32, 64, 128};
+#pragma omp parallel for schedule(static)
+    for (int B = 0; B < b->nob; B++) {
+        const int i0 = SPH_OB_LANES * B;
+        dv8 ui[D], a[D * D] = {0};
+        for (int r = 0; r < D; r++)
+            ui[r] = *(const dv8 *)(U + (size_t)r * S + i0);
+        for (int t = os[B]; t < os[B + 1]; t++) {
+            const sph_real *w = wtab + (size_t)(ob[t].key >> 8) * R;
+            const lv8 in = (lane & (long long)(ob[t].key & 255)) != 0;
+            const double *uj = U + i0 + ob[t].off;
+            for (int r = 0; r < D; r++) {
+                const dv8 d = (dv8)((lv8)(*(const dv8 *)(uj + (size_t)r * S) - ui[r]) & in);
+                for (int c = 0; c < D; c++)
+                    a[r * D + c] += d * (double)w[c];
+            }
+        }
+        for (int l = 0; l < SPH_OB_LANES && i0 + l < n; l++)
+            for (int r = 0; r < D; r++)
+                for (int c = 0; c < D; c++)
+                    A[(size_t)(i0 + l) * D * R + r * R + c] = (sph_real)a[r * D + c][l];
+    }
+}
+
+//@endif
+/* The own pairs' sums by the half lists, stripe by stripe (the colours in turn). */
+static void @B@_gradient_lists(sph_body *b)
 {
     const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
-//@if MPI
-    enum { D = @DIM@ };
-    /* On many processes the halo's values are on their way while the pairs of own particles
-     * are summed; the pairs with the halo follow (docs/mpi.md).  What the pair passes read of
-     * a neighbour: u here, and v for the viscosity of the momentum pass (unchanged until then),
-     * the phase field for its Laplacian. */
-    const sph_field halo_in[] = {
-        SPH_FIELD(b->u, D),
-//@if VISCOSITY
-        SPH_FIELD(b->v, D),
-//@endif
-//@if FRACTURE
-        SPH_FIELD(b->s, 1),
-//@endif
-    };
-    const int nhalo_in = sizeof halo_in / sizeof *halo_in;
-    b->par->post(b, halo_in, nhalo_in);
-//@endif
     for (int colour = 0; colour < 2; colour++) {
 #pragma omp parallel for schedule(static)
         for (int s = colour; s < b->nstripes; s += 2) {
@@ -132,6 +168,34 @@ static void @B@_gradient_pass(sph_body *b)
                 @B@_gradient_pairs(b, i, hs[i], hs[i + 1], hb, hk);
         }
     }
+}
+
+static void @B@_gradient_pass(sph_body *b)
+{
+//@if MPI
+    enum { D = @DIM@ };
+    /* On many processes the halo's values are on their way while the pairs of own particles
+     * are summed; the pairs with the halo follow (docs/mpi.md).  What the pair passes read of
+     * a neighbour: u here, and v for the viscosity of the momentum pass (unchanged until then),
+     * the phase field for its Laplacian. */
+    const sph_field halo_in[] = {
+        SPH_FIELD(b->u, D),
+//@if VISCOSITY
+        SPH_FIELD(b->v, D),
+//@endif
+//@if FRACTURE
+        SPH_FIELD(b->s, 1),
+//@endif
+    };
+    const int nhalo_in = sizeof halo_in / sizeof *halo_in;
+    b->par->post(b, halo_in, nhalo_in);
+//@endif
+//@if OFFSET_BLOCKS
+    if (b->ob)
+        @B@_gradient_blocks(b);
+    else
+//@endif
+        @B@_gradient_lists(b);
 //@if MPI
     b->par->wait(b, halo_in, nhalo_in);
     @B@_gradient_halo_pairs(b);

@@ -33,7 +33,8 @@
     X(pair_terms, NULL, PAIR_TERMS, b->hourglass > 0) /* any term of B_pair_terms */             \
     X(dim3, NULL, DIM3, m->dim == 3) /* else 2D (plane strain) */                               \
     X(staged, NULL, STAGED, stress_staged(m, r, &p->law)) /* the CPU's stress pass by blocks */ \
-    X(rare, NULL, RARE, p->staged && !p->fracture && r->nrare > 0) /* and its law's fast path */
+    X(rare, NULL, RARE, p->staged && !p->fracture && r->nrare > 0) /* and its law's fast path */ \
+    X(offset_blocks, NULL, OFFSET_BLOCKS, m->dim == 3 && !p->fracture) /* the CPU's gradient */
 
 /* The numbers of a body's code that the templates read, one row each:
  *

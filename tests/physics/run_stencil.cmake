@@ -1,11 +1,20 @@
 # The pair passes on the lattice stencil's runs (templates/body_stencil.c, runtime/stencil.c)
-# give the lists' sums in another order: a model run with the stencil and with --no-stencil
-# agrees within round-off.  -DSPHC= -DMODEL= -DOUT= -DEND= -DLEAST= [-DTOL=1e-9] [-DARGS=]
+# and the 3D gradient's offset blocks (runtime/offset_blocks.c) give the lists' sums in
+# another order: a model run with them and with --no-stencil agrees within round-off.
+# -DSPHC= -DMODEL= -DOUT= -DEND= -DLEAST= [-DTOL=1e-9] [-DARGS=] [-DBLOCKS=ON]
 # The model is built once and run to END on one thread both ways; every value of
 # energies.csv must agree within TOL of the row's largest energy, and summary.json must show
-# the stencil used: at least the fraction LEAST of each body's particles in its runs (and
-# none with --no-stencil), so that a stencil that stopped matching the lattice fails here.
+# the stencil used: at least the fraction LEAST (per mille) of each body's particles in its
+# runs, or with BLOCKS of its pairs in its offset blocks (and none with --no-stencil), so
+# that a stencil or blocks that stopped matching the lattice fail here.
 include(${CMAKE_CURRENT_LIST_DIR}/compare_runs.cmake) # (TOL's default)
+if(BLOCKS)
+  set(what offset_block_pairs)
+  set(of pairs)
+else()
+  set(what stencil_particles)
+  set(of particles)
+endif()
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 build_model(${MODEL} ${OUT}/model)
@@ -21,18 +30,18 @@ foreach(form stencil lists)
   math(EXPR last "${nbodies} - 1")
   foreach(k RANGE ${last})
     string(JSON name GET "${json}" bodies ${k} name)
-    string(JSON n GET "${json}" bodies ${k} particles)
-    string(JSON runs GET "${json}" bodies ${k} stencil_particles)
+    string(JSON n GET "${json}" bodies ${k} ${of})
+    string(JSON runs GET "${json}" bodies ${k} ${what})
     if(form STREQUAL "lists" AND NOT runs EQUAL 0)
-      message(FATAL_ERROR "--no-stencil: body ${name} has ${runs} particles in stencil runs")
+      message(FATAL_ERROR "--no-stencil: body ${name} has ${runs} ${what}")
     endif()
     if(form STREQUAL "stencil")
       math(EXPR permille "1000 * ${runs} / ${n}")
       if(permille LESS LEAST)
-        message(FATAL_ERROR "body ${name}: ${runs} of ${n} particles in stencil runs, "
+        message(FATAL_ERROR "body ${name}: ${what} ${runs} of ${n} ${of}, "
                             "fewer than ${LEAST} per mille")
       endif()
-      message(STATUS "body ${name}: ${runs} of ${n} particles in stencil runs")
+      message(STATUS "body ${name}: ${what} ${runs} of ${n} ${of}")
     endif()
   endforeach()
 endforeach()
