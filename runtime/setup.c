@@ -502,9 +502,10 @@ static double memory_limit(const char **what)
  * is killed.  A particle has about as many neighbours as lattice points lie within 2h (a
  * sphere or a disc of radius 2h / dx: 174 in 3D and 13 in 2D at coefh 1, a few more than
  * interior particles have), and the run needs at most some 12 bytes per neighbour (the
- * lists while the set-up builds the half lists from them) and 1 KB per particle (the plate
- * at dp 1 mm, 242 400 particles of 157 neighbours: estimated 0.70 GB, measured 0.48 GB at
- * its peak; 1.26 GB when the set-up kept every pair's kernel gradient). */
+ * lists while the set-up builds the half lists from them; a 3D lattice's offset blocks add
+ * about 1.4, 8 bytes a task of some 6 pairs) and 1 KB per particle (the plate at dp 1 mm,
+ * 242 400 particles of 157 neighbours: estimated 0.70 GB, measured 0.48 GB at its peak
+ * before the offset blocks; 1.26 GB when the set-up kept every pair's kernel gradient). */
 static int check_size(const sph_body *b)
 {
     const double r = 2.0 * b->h / b->dx, n = (double)b->n;

@@ -20,29 +20,35 @@
 //@if FRACTURE
  * And the Laplacian of eq. 62 alike: the sum of ltab (2 s_i - s_{i+o} - s_{i-o}).
 //@endif
+ * Entry by entry: with the pair helpers of body_pairs.c here, GCC 12 built the table entry's
+ * vector of the four-particle loop below (@B@_stencil_gradient_run, which this ends) on the
+ * stack and loaded it back whole every offset, and the flyer plates' stress pass took 1.8
+ * times as long (so it did with that vector made by a shuffle of one two-double load).
  */
 static void @B@_stencil_gradient_one(sph_body *b, int i)
 {
     enum { D = @DIM@, R = SPH_ROW(D) };
     const double *restrict u = b->u;
-    const @B@_vec *restrict wtab = (const @B@_vec *)b->wtab;
-    @B@_tensor a = {0}, t;
+    sph_real a[D * D] = {0};
 //@if FRACTURE
     const double *restrict sf = b->s;
     double lapi = 0;
 //@endif
     for (int q = 0; q < b->st_m; q++) {
         const int jp = i + b->st_o[q], jm = i - b->st_o[q], k = b->st_k[q];
-        @B@_pair_tensor(u + (size_t)jp * D, u + (size_t)jm * D, wtab[k], &t);
-        @B@_tensor_add(&a, &t);
+        const sph_real *w = b->wtab + (size_t)k * R;
+        for (int r = 0; r < D; r++) {
+            const sph_real d = (sph_real)(u[(size_t)jp * D + r] - u[(size_t)jm * D + r]);
+            for (int c = 0; c < D; c++)
+                a[r * D + c] += d * w[c];
+        }
 //@if FRACTURE
         lapi += b->ltab[k] * (2 * sf[i] - sf[jp] - sf[jm]);
 //@endif
     }
-    sph_real *Ai = b->A + (size_t)i * D * R; /* (what the gradient pass added replaced) */
-    for (int k = 0; k < D * R; k++)
-        Ai[k] = 0;
-    @B@_tensor_add_to(Ai, &a);
+    for (int r = 0; r < D; r++)
+        for (int c = 0; c < D; c++)
+            b->A[(size_t)i * D * R + r * R + c] = a[r * D + c];
 //@if FRACTURE
     b->lap[i] = lapi;
 //@endif
