@@ -8,8 +8,9 @@
  * one such task of a block is 8 pairs in one vector of eight, u_j one unaligned load from u
  * stored by component, and A's nine entries nine multiply-adds, held in registers over the
  * block's tasks and written once.  Each pair is summed from both sides (the full lists) and
- * nothing is written to j: the 3D Taylor bar's gradient pass took about 0.55 of the half
- * lists' time (templates/body_forces.c, OFFSET_BLOCKS).
+ * nothing is written to j: the 3D Taylor bar's stress pass (the gradient pass in it) took
+ * 0.6 of its time with the half lists, its step 0.84 (templates/body_forces.c,
+ * OFFSET_BLOCKS).
  *
  * A block's tasks are the distinct (o, entry) of its particles' full lists of own pairs,
  * each with the mask of the block's particles that have that pair (near surfaces, notches
