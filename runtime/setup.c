@@ -623,8 +623,9 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, cons
         return -1;
     SPH_TIMED("set-up: silent pairs", drop_silent_pairs(b, m->kernel));
     SPH_TIMED("set-up: offset tables", offset_tables(b, m->kernel));
-    SPH_TIMED("set-up: offset blocks", sph_offset_blocks_setup(b, d->fracture != NULL));
+    SPH_TIMED("set-up: offset blocks", sph_offset_blocks_setup(b));
     SPH_TIMED("set-up: half lists and stripes", half_lists(b));
+    SPH_TIMED("set-up: momentum blocks", sph_momentum_blocks_setup(b));
     SPH_TIMED("set-up: lattice stencil", sph_stencil_setup(b));
     SPH_TIMED("set-up: arrays", allocate(b));
     SPH_TIMED("set-up: BC and plane selections", selections(b, d, m->t_end));
@@ -653,6 +654,7 @@ void sph_body_free(sph_body *b)
     free(b->st_k), free(b->st_o), free(b->st_run);
     free(b->rest), free(b->rest_start), free(b->rest_j), free(b->rest_k);
     free(b->ob_start), free(b->ob), free(b->ob_u);
+    free(b->mb_start), free(b->mb_i0), free(b->mb_stripe), free(b->mb), free(b->mb_soa);
 }
 
 /* ------------------------------------------------------------------ measured quantities */

@@ -806,7 +806,8 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->rare_hint = NULL; /* (the CPU's stress blocks) */
     b->st_o = b->st_k = b->st_run = NULL; /* the lattice stencil: the CPU's pair passes */
     b->rest = b->rest_start = b->rest_j = b->rest_k = NULL;
-    b->ob_start = NULL, b->ob = NULL, b->ob_u = NULL, b->nob = 0; /* (the CPU's gradient pass) */
+    b->ob_start = NULL, b->ob = NULL, b->ob_u = NULL, b->nob = 0; /* (the CPU's pair passes) */
+    b->mb_start = b->mb_i0 = b->mb_stripe = NULL, b->mb = NULL, b->mb_soa = NULL, b->nmb = 0;
     /* Neither side writes these pages again: both keep a copy, and reads never fault. */
     sph_read_mostly(b, sizeof *b);
     if (nbcs) {

@@ -278,6 +278,9 @@ typedef struct {
                                    reports */
     int crush;                  /* 1: the time step follows the current spacing where the body
                                    is compressed (sph_model.dt_lambda_on; lam2 below) */
+    int offset_blocks;          /* the CPU's pair passes by offset blocks where the body is a
+                                   lattice (offset_blocks.c): bit 0 the gradient pass, bit 1
+                                   the momentum pass; 0: the lists alone */
     /* Contact with the other bodies (scenes with contact, see sph_contact_desc). */
     double young, poisson;      /* elastic constants of the contact stiffness */
     double restitution;         /* coefficient of restitution, 0 < e <= 1 */
@@ -448,6 +451,7 @@ struct sph_par;
  * i0 + l of the block, for each lane l in the mask key & 255, has the pair with particle
  * i0 + l + off at offset table entry key >> 8. */
 #define SPH_OB_LANES 8
+enum { SPH_MB_Q = 0, SPH_MB_CV = 9, SPH_MB_CS = 18, SPH_MB_V = 19, SPH_MB_A = 22, SPH_MB_ROWS = 25 };
 typedef struct {
     int off;
     unsigned key;
@@ -534,6 +538,17 @@ struct sph_body {
     sph_ob_task *ob;
     double *ob_u;
     long ob_pairs;
+    /* The momentum pass's offset blocks (offset_blocks.c; 3D, CPU only), over the half lists:
+     * stripe s's blocks mb_stripe[s] .. mb_stripe[s + 1] - 1, block B the up to
+     * SPH_OB_LANES particles from mb_i0[B] (within the stripe), its tasks
+     * mb[mb_start[B] .. mb_start[B + 1] - 1].  mb_soa: SPH_MB_ROWS rows of mb_stride doubles,
+     * particle i at mb_pad + i: Q and cof F entry (r, c) in rows 3 r + c and 9 + 3 r + c, Cs,
+     * v and the pass's sums (SPH_MB_*).  mb_pairs: the pairs the lanes hold.  NULL, nmb = 0:
+     * none. */
+    int nmb, *mb_start, *mb_i0, *mb_stripe, mb_pad, mb_stride;
+    sph_ob_task *mb;
+    double *mb_soa;
+    long mb_pairs;
     sph_real *A;          /* n*SPH_TENSOR_SIZE(dim): sum_j (u_j - u_i) (x) w_ij, the pair part of
                            * eq. 53, row by row, rows padded like wtab (CPU only) */
     /* Full lists (both directions) for device targets, whose threads each sum their own
@@ -634,8 +649,10 @@ extern int sph_stencil_off;
 void sph_stencil_setup(sph_body *b);
 
 /* offset_blocks.c: the body's offset blocks (ob_* above), from its full lists (the set-up,
- * before the half lists); nothing with sph_stencil_off, in 2D or with fracture. */
-void sph_offset_blocks_setup(sph_body *b, int fracture);
+ * before the half lists), and the momentum pass's (mb_*), from its half lists and stripes;
+ * nothing with sph_stencil_off, in 2D, or where its desc's offset_blocks leaves them out. */
+void sph_offset_blocks_setup(sph_body *b);
+void sph_momentum_blocks_setup(sph_body *b);
 
 /* The program's --whole-law: the CPU's stress pass takes no law's fast path (setup.c;
  * templates/body_forces.c, RARE). */

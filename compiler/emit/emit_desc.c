@@ -4,6 +4,8 @@
 #include <math.h>
 #include <stdio.h>
 
+#include <string.h>
+
 #include "emit_internal.h"
 #include "util/source.h"
 
@@ -197,6 +199,10 @@ static void bodies_desc(Emitter *E)
             fputs("        .viscous = 1,\n", out);
         if (E->plans[i].crush)
             fputs("        .crush = 1,\n", out);
+        const int blocks = (E->plans[i].offset_blocks ? 1 : 0) | (E->plans[i].momentum_blocks ? 2 : 0);
+        if (blocks && !strcmp(E->target->name, "cpu"))
+            fprintf(out, "        .offset_blocks = %d, /* the pair passes' offset blocks */\n",
+                    blocks);
         if (model_has_contact(m))
             fprintf(out, "        .young = %.17g,\n        .poisson = %.17g, /* contact stiffness */\n"
                          "        .restitution = %.17g,\n        .friction = %.17g,\n",

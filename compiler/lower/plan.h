@@ -34,7 +34,9 @@
     X(dim3, NULL, DIM3, m->dim == 3) /* else 2D (plane strain) */                               \
     X(staged, NULL, STAGED, stress_staged(m, r, &p->law)) /* the CPU's stress pass by blocks */ \
     X(rare, NULL, RARE, p->staged && !p->fracture && r->nrare > 0) /* and its law's fast path */ \
-    X(offset_blocks, NULL, OFFSET_BLOCKS, m->dim == 3 && !p->fracture) /* the CPU's gradient */
+    X(offset_blocks, NULL, OFFSET_BLOCKS, m->dim == 3 && !p->fracture) /* the CPU's gradient */ \
+    X(momentum_blocks, NULL, MOMENTUM_BLOCKS, /* and momentum pass by offset blocks */        \
+      m->dim == 3 && !p->fracture && p->viscosity && !p->beta2 && !p->pair_terms)
 
 /* The numbers of a body's code that the templates read, one row each:
  *
