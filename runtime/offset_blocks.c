@@ -1,33 +1,38 @@
-/* offset_blocks.c — the offset blocks of a 3D body's gradient pass (sph_body's ob_*, sphrt.h).
+/* offset_blocks.c — the offset blocks of a 3D body's pair passes (sph_body's ob_* and mb_*,
+ * sphrt.h; templates/body_forces.c, OFFSET_BLOCKS and MOMENTUM_BLOCKS).
  *
- * The CPU's gradient pass sums A_i = sum_j (u_j - u_i) (x) w_ij.  Over the half lists each
- * pair is visited once and adds its tensor to both A_i and A_j; in 3D that is a read, an add
- * and a write of j's twelve entries a pair, one pair at a time in vectors of four.  On a
- * lattice, blocks of 8 consecutive particles share most of their offsets: the neighbour at a
- * given lattice offset is j = i + o for the block's particles, with the same table entry, so
- * one such task of a block is 8 pairs in one vector of eight, u_j one unaligned load from u
- * stored by component, and A's nine entries nine multiply-adds, held in registers over the
- * block's tasks and written once.  Each pair is summed from both sides (the full lists) and
- * nothing is written to j: the 3D Taylor bar's stress pass (the gradient pass in it) took
- * 0.6 of its time with the half lists, its step 0.84 (templates/body_forces.c,
- * OFFSET_BLOCKS).
+ * On a lattice, blocks of 8 consecutive particles share most of their offsets: the
+ * neighbour at a given lattice offset is j = i + o for the block's particles, with the same
+ * table entry, so one task of a block (one offset, one entry) is 8 pairs in vectors of
+ * eight, j's values unaligned loads from copies by component, and the block's sums held in
+ * registers over its tasks and written once.  A block's tasks are the distinct (o, entry)
+ * of its particles' pairs, each with the mask of the particles that have it (near surfaces,
+ * notches and the ends of lattice rows, fewer than 8); the 8 lists, sorted by j, merged.
  *
- * A block's tasks are the distinct (o, entry) of its particles' full lists of own pairs,
- * each with the mask of the block's particles that have that pair (near surfaces, notches
- * and the ends of lattice rows, fewer than 8).  Built from the full lists (before the half
- * lists replace them), in parallel, block by block; used only where the masks hold at least
- * 0.45 of the tasks' lanes (the Taylor bar's blocks 0.73, a body of 138 particles 0.5): a
- * task took about as long as three directions of pairs of the half lists (2.6 ns against
- * 0.8, the bar on one thread), so below 0.4 the lists are faster, and off a lattice, where
- * every pair has its own entry and a task holds one pair, they stay.  Pairs with the
- * halo (many processes) stay on their lists (xb_*).  None with sph_stencil_off (the
- * program's --no-stencil), in 2D (its lattice stencil) or for bodies with fracture. */
+ * The gradient pass (ob_*): blocks of the full lists of own pairs (built before the half
+ * lists replace them), each pair from both sides, nothing written to j, u by component.  A
+ * task took about as long as three directions of the half lists' pairs (2.6 ns against 0.8,
+ * the Taylor bar on one thread), so they are used where the masks fill 0.45 of the lanes
+ * (the bar 0.73, a body of 138 particles 0.5); the bar's stress pass (the gradient pass in
+ * it) took 0.6 of its time with the half lists, its step 0.84.
+ *
+ * The momentum pass (mb_*): blocks of the half lists within each stripe, each pair once,
+ * j's share subtracted from j's sums by component, so that the stripes' colours stay
+ * parallel.  A task took about as long as 4.7 pairs of the lists (65 cycles against 13.7),
+ * so they are used where the masks fill 0.65 of the lanes; the bar's momentum pass took
+ * 0.80 of its time on two threads, its step 0.86.
+ *
+ * Off a lattice, where every pair has its own entry and a task holds one pair, the lists
+ * stay.  Pairs with the halo (many processes) stay on their lists (xb_*).  None with
+ * sph_stencil_off (the program's --no-stencil), in 2D (its lattice stencil), or for a pass
+ * the body's desc leaves out (offset_blocks: the compiler's plan, CPU only). */
 #include <stdlib.h>
 #include <string.h>
 
 #include "internal.h"
 
-enum { LANES = SPH_OB_LANES, MIN_PERMILLE = 450, KBITS = 24, OBITS = 28 };
+/* the lanes' share (per mille) the masks must fill: the gradient's blocks, the momentum's */
+enum { LANES = SPH_OB_LANES, OB_PERMILLE = 450, MB_PERMILLE = 650, KBITS = 24, OBITS = 28 };
 
 /* A task's sort key: the offset j - i (made non-negative) above the table entry. */
 static long long task_key(int off, int k)
@@ -139,10 +144,10 @@ static sph_ob_task *build_tasks(const lists *L, int nblocks, const int *first,
         for (int B = 0; B < nblocks; B++)
             start[B + 1] += start[B];
         long pairs = 0;
+#pragma omp parallel for schedule(static) reduction(+ : pairs)
         for (int B = 0; B < nblocks; B++)
-            for (int l = 0; l < count[B]; l++)
-                for (int p = L->start[first[B] + l]; p < L->start[first[B] + l + 1]; p++)
-                    pairs += L->j[p] < L->nown;
+            for (int p = L->start[first[B]]; p < L->start[first[B] + count[B]]; p++)
+                pairs += L->j[p] < L->nown;
         const long ntasks = start[nblocks];
         if (pairs == 0 || 1000 * pairs < (long)permille * LANES * ntasks) { /* not a lattice */
             free(start);
@@ -206,7 +211,7 @@ void sph_offset_blocks_setup(sph_body *b)
     unsigned char *count = xmalloc((size_t)nblocks);
     for (int B = 0; B < nblocks; B++)
         first[B] = LANES * B, count[B] = (unsigned char)(n - LANES * B < LANES ? n - LANES * B : LANES);
-    b->ob = build_tasks(&L, nblocks, first, count, degree, MIN_PERMILLE, &b->ob_start, &b->ob_pairs);
+    b->ob = build_tasks(&L, nblocks, first, count, degree, OB_PERMILLE, &b->ob_start, &b->ob_pairs);
     free(first), free(count);
     if (!b->ob)
         return;
@@ -214,13 +219,8 @@ void sph_offset_blocks_setup(sph_body *b)
     b->ob_u = rows_of(3, n, reach, &b->ob_pad, &b->ob_stride); /* u by component */
 }
 
-/* The momentum pass's blocks (mb_* of sph_body): over the half lists, stripe by stripe, so
- * that a block's pairs touch its stripe and the next one only, as the lists' do (the
- * stripes' colours run in parallel).  Used where their masks hold at least MB_PERMILLE of
- * the lanes: a task took about as long as 4.7 pairs of the lists (65 cycles against 13.7,
- * the Taylor bar on one thread), so below 0.59 the lists are faster. */
-enum { MB_PERMILLE = 650 };
-
+/* The momentum pass's blocks: stripe by stripe, a block's pairs touch its stripe and the
+ * next one only, as the half lists' do. */
 void sph_momentum_blocks_setup(sph_body *b)
 {
     if (!blocks_wanted(b, 2) || b->nstripes < 1)

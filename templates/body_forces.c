@@ -731,20 +731,14 @@ static double @B@_momentum_blocks(sph_body *b, int s)
     return power;
 }
 
-/* Before the blocks: Q, cof F, Cs and v by component into b->mb_soa, the sums zeroed; after
- * them (back): the sums added to the accelerations. */
-static void @B@_momentum_copy(sph_body *b, int back)
+/* Before the blocks: Q, cof F, Cs and v by component into b->mb_soa, the sums zeroed. */
+static void @B@_momentum_copy(sph_body *b)
 {
     enum { D = 3 };
     const size_t S = (size_t)b->mb_stride;
     double *restrict M = b->mb_soa + b->mb_pad;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < b->nown; i++) {
-        if (back) {
-            for (int r = 0; r < D; r++)
-                b->a[(size_t)i * D + r] += M[(SPH_MB_A + r) * S + i];
-            continue;
-        }
         for (int r = 0; r < D; r++)
             for (int c = 0; c < D; c++) {
                 M[(SPH_MB_Q + D * r + c) * S + i] = b->Q[SPH_TENSOR(i, r, c, D, b->n)];
@@ -756,6 +750,18 @@ static void @B@_momentum_copy(sph_body *b, int back)
             M[(SPH_MB_A + r) * S + i] = 0;
         }
     }
+}
+
+/* After them: the blocks' sums added to the accelerations. */
+static void @B@_momentum_sums(sph_body *b)
+{
+    enum { D = 3 };
+    const size_t S = (size_t)b->mb_stride;
+    const double *restrict a = b->mb_soa + b->mb_pad + SPH_MB_A * S;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < b->nown; i++)
+        for (int r = 0; r < D; r++)
+            b->a[(size_t)i * D + r] += a[r * S + i];
 }
 
 //@endif
@@ -794,7 +800,7 @@ static void @B@_momentum_pass(sph_body *b)
 //@endif
 //@if MOMENTUM_BLOCKS
     if (b->mb)
-        @B@_momentum_copy(b, 0);
+        @B@_momentum_copy(b);
 //@endif
     for (int colour = 0; colour < 2; colour++) {
 #pragma omp parallel for schedule(static)
@@ -807,7 +813,7 @@ static void @B@_momentum_pass(sph_body *b)
     }
 //@if MOMENTUM_BLOCKS
     if (b->mb)
-        @B@_momentum_copy(b, 1);
+        @B@_momentum_sums(b);
 //@endif
 //@if MPI
     b->par->wait(b, halo_in, nhalo_in);
