@@ -649,14 +649,52 @@ static inline void sph_cuda_halo(sph_body *b, const sph_cuda_field *f, int nf)
     });
 }
 
+/* The slots of a lattice's keys (fixed slots, below): slot_of[key] > 0 marks a key the pairs
+ * use on entry and holds its slot on return; returns the number used.  The keys go in the
+ * order of their mean offset j - i over the own particles' pairs, so that a warp's next slot
+ * reads the neighbours of the last one shifted by a particle or a row, which the L1 cache
+ * still holds: on a lattice in slab order the offsets of one plane of the support lie within
+ * a few rows, and the slots sweep the planes one by one instead of jumping between j - i and
+ * i - j at every table entry (docs/cuda.md).  Keys only pairs with the halo use go last.
+ * Built with -DSPH_CUDA_SLOTS_BY_KEY, the slots follow the keys (bench/cuda's A/B). */
+static int sph_slot_ranks(const sph_body *h, size_t nkey, int *slot_of)
+{
+    double *sum = (double *)calloc(nkey, sizeof(double));
+    size_t *cnt = (size_t *)calloc(nkey, sizeof(size_t));
+    for (size_t i = 0; i < (size_t)h->nown; i++)
+        for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++) {
+            const size_t key = 2 * (size_t)h->hb_k[p];
+            const double d = (double)h->hb[p] - (double)i;
+            sum[key] += d, sum[key + 1] -= d, cnt[key]++, cnt[key + 1]++;
+        }
+    int used = 0;
+    size_t *order = (size_t *)malloc((nkey + 1) * sizeof(size_t));
+    for (size_t key = 0; key < nkey; key++)
+        if (slot_of[key])
+            order[used++] = key;
+#ifndef SPH_CUDA_SLOTS_BY_KEY
+    std::stable_sort(order, order + used, [&](size_t a, size_t b) {
+        if (!cnt[a] || !cnt[b])
+            return cnt[a] > cnt[b]; /* halo-only keys last */
+        return sum[a] / (double)cnt[a] < sum[b] / (double)cnt[b];
+    });
+#endif
+    for (size_t key = 0; key < nkey; key++)
+        slot_of[key] = -1;
+    for (int s = 0; s < used; s++)
+        slot_of[order[s]] = s;
+    free(sum), free(cnt), free(order);
+    return used;
+}
+
 /* Full pair lists from the half lists (j > i): i gets (j, k), j gets (i, ~k), laid out slot
  * by slot (sphrt.h, fb_*).  A pair is packed as key << 32 | j, key = 2k or 2~k + 1 (every
  * offset its own key), and each particle's pairs are sorted by key.  When the body's pairs
  * use few distinct keys (a lattice: one table entry per offset) every key gets a fixed
- * slot, its rank among the keys used, and a particle's missing neighbours are holes: the
- * particle itself with the zero table entry ntab, which adds nothing, so the passes need no
- * branch.  A warp at one slot then reads one offset in every thread, including threads
- * whose particles lie near a surface.  Otherwise the pairs are packed from slot 0. */
+ * slot, the same for every particle (sph_slot_ranks), and a particle's missing neighbours
+ * are holes: the particle itself with the zero table entry ntab, which adds nothing, so the
+ * passes need no branch.  A warp at one slot then reads one offset in every thread, including
+ * threads whose particles lie near a surface.  Otherwise the pairs are packed from slot 0. */
 static void sph_full_lists(const sph_body *h, int **count, int **nb, int **k, int *slots)
 {
     /* (on many processes the rows of own particles, each with its pairs with the halo too,
@@ -684,8 +722,8 @@ static void sph_full_lists(const sph_body *h, int **count, int **nb, int **k, in
         for (int p = h->xb_start ? h->xb_start[i] : 0; h->xb_start && p < h->xb_start[i + 1]; p++)
             slot_of[2 * (size_t)h->xb_k[p]] = 1;
     }
-    for (size_t key = 0; slot_of && key < nkey; key++)
-        slot_of[key] = slot_of[key] ? used++ : -1;
+    if (slot_of)
+        used = sph_slot_ranks(h, nkey, slot_of);
     const int fixed = slot_of && used <= maxc + maxc / 2; /* holes: at most half the slots */
     uint64_t *packed = (uint64_t *)malloc((start[n] + 1) * sizeof(uint64_t));
     size_t *fill = (size_t *)malloc((n + 1) * sizeof(size_t));
@@ -708,14 +746,16 @@ static void sph_full_lists(const sph_body *h, int **count, int **nb, int **k, in
 #pragma omp parallel for schedule(dynamic, 1024)
     for (size_t i = 0; i < n; i++) {
         std::sort(packed + start[i], packed + start[i + 1]);
+        size_t last = 0; /* with fixed slots: the last slot used, holes before it included */
         for (size_t a = 0; a < start[i + 1] - start[i]; a++) {
             const uint64_t w = packed[start[i] + a], key = w >> 32;
             const size_t s = fixed ? (size_t)slot_of[key] : a;
             (*nb)[s * n + i] = (int)(w & 0xffffffffu);
             (*k)[s * n + i] = key & 1 ? ~(int)(key >> 1) : (int)(key >> 1);
-            if (fixed)
-                (*count)[i] = (int)s + 1; /* the last slot used, holes before it included */
+            last = s + 1 > last ? s + 1 : last;
         }
+        if (fixed)
+            (*count)[i] = (int)last;
     }
     free(start), free(packed), free(slot_of);
 }
