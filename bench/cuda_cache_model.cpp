@@ -8,11 +8,16 @@
  * file includes): the set-up and the device's full lists (sph_full_lists, runtime/sph_cuda.h)
  * are the program's own.  It answers how the order of the fixed slots changes the traffic
  * between L1 and L2 before a GPU times it: each layout of the same pairs is traced.
- *   offset  the fixed slots in the order of their offsets j - i (the default, sph_slot_ranks);
+ *   offset  the fixed slots in the order of their offsets j - i (sph_slot_ranks), as lists;
  *   key     the fixed slots in the order of the table's keys (+o, -o of each entry in turn:
  *           the layout built with -DSPH_CUDA_SLOTS_BY_KEY, timed at 3.94 ns/particle-step);
  *   packed  each particle's pairs from slot 0 in key order (timed at 4.49; Nsight Compute
- *           measured an L1 hit rate of 57 % for the momentum pass with it: the calibration).
+ *           measured an L1 hit rate of 57 % for the momentum pass with it: the calibration);
+ *   masks   the offsets' order read through slot masks instead of lists (sph_slot_masks: a
+ *           box, whose every pair lies at i + its slot's offset; the default where it applies,
+ *           the lists then being the layout built with -DSPH_CUDA_LISTS);
+ *   soa     the masks with u and v read by component (stride n) instead of particle by
+ *           particle: a layout not built, traced to see what it would save.
  *
  * The model: blocks of T threads (default 256) of consecutive particles, B of them resident
  * on one multiprocessor (default 2: 128 registers a thread), B blocks far apart in the body
@@ -24,10 +29,13 @@
  * four sectors, 16 ways a set, least recently used out first, KB kilobytes (default 200).
  * A sector found is a hit, a sector missing comes from L2.  G groups of B blocks (default 48)
  * spread over the body are traced, each from a cold cache, and their counts added.  Printed
- * per layout and pass: the L1 hit rate of sectors, the bytes from L2 per pair, and those
- * bytes for the whole pass per step; last, per pass, the offsets' layout's bytes from L2 over
- * the keys'.  A hole (a missing neighbour: the particle itself) is
- * loaded like a pair but not counted as one. */
+ * per layout and pass: the L1 hit rate of sectors, the bytes from L2 per pair, those bytes
+ * for the whole pass per step, and the distinct 128-byte lines a warp's loads touch per pair
+ * (what the L1 itself must serve, a line a clock at best: 2 or 3 for a load of 32
+ * consecutive doubles, 6 or 7 for one component of 32 consecutive particles' u, a warp's
+ * lines counted once for its 32 pairs); last, per pass, the offsets' layout's bytes from L2
+ * over the keys' (and the masks' over the offsets' lists).  A hole (a missing neighbour: the
+ * particle itself) is loaded like a pair but not counted as one. */
 #define main generated_main
 #include "model.cu"
 #undef main
@@ -42,7 +50,7 @@ struct l1_cache {
     uint64_t clock = 0;
     std::vector<uint64_t> tag, used; /* per way: line address + 1 (0: empty), last use */
     std::vector<uint8_t> valid;      /* per way: the sectors present, a bit each */
-    uint64_t hits = 0, misses = 0;
+    uint64_t hits = 0, misses = 0, lines = 0; /* lines: a warp's load's distinct lines */
     explicit l1_cache(size_t bytes)
         : sets(bytes / LINE / WAYS), tag(sets * WAYS), used(sets * WAYS), valid(sets * WAYS) {}
     void sector(uint64_t addr)
@@ -75,8 +83,10 @@ static void warp_load(l1_cache &c, const uint64_t *addr, int lanes)
         s[m++] = addr[l] / SECTOR * SECTOR;
     std::sort(s, s + m);
     for (int l = 0; l < m; l++)
-        if (l == 0 || s[l] != s[l - 1])
+        if (l == 0 || s[l] != s[l - 1]) {
             c.sector(s[l]);
+            c.lines += l == 0 || s[l] / LINE != s[l - 1] / LINE;
+        }
 }
 
 /* The pair lists of one layout: entry s * n + i of nb and kk, count[i] slots per particle. */
@@ -84,6 +94,8 @@ struct layout {
     const char *name;
     std::vector<int> nb, kk, count;
     int slots = 0;
+    bool masks = false; /* read as slot masks (sph_slot) instead of lists */
+    bool soa = false;   /* u and v by component (stride n) instead of particle by particle */
 };
 
 /* Array a of the trace lives at its own address range. */
@@ -91,9 +103,10 @@ static uint64_t at(int a, size_t index, size_t bytes) { return ((uint64_t)a << 4
 
 /* One pass over G groups: mom = 1 the momentum pass's loads, 0 the stress pass's. */
 static void trace(const layout &L, size_t n, int ntab, int mom, size_t l1, int resident,
-                  int block, int groups, double *hit, double *bytes_per_pair)
+                  int block, int groups, double *hit, double *bytes_per_pair,
+                  double *lines_per_pair)
 {
-    uint64_t hits = 0, misses = 0, pairs = 0;
+    uint64_t hits = 0, misses = 0, lines = 0, pairs = 0;
     const size_t nblocks = (n + block - 1) / block;
     for (int g = 0; g < groups; g++) {
         l1_cache c(l1);
@@ -123,8 +136,14 @@ static void trace(const layout &L, size_t n, int ntab, int mom, size_t l1, int r
                         warp_load(c, a, lanes);
                     };
                     const size_t base = (size_t)s * n;
-                    load(1, [&](size_t i) { return base + i; }, 4); /* fb */
-                    load(2, [&](size_t i) { return base + i; }, 4); /* fb_k */
+                    if (L.masks) { /* the slot's mask word, offset and entry */
+                        load(10, [&](size_t i) { return (size_t)(s >> 5) * n + i; }, 4);
+                        load(11, [&](size_t) { return (size_t)s; }, 4);
+                        load(12, [&](size_t) { return (size_t)s; }, 4);
+                    } else {
+                        load(1, [&](size_t i) { return base + i; }, 4); /* fb */
+                        load(2, [&](size_t i) { return base + i; }, 4); /* fb_k */
+                    }
                     auto entry = [&](size_t i) {
                         const int k = L.kk[base + i];
                         return (size_t)(k < 0 ? ~k : k);
@@ -133,22 +152,23 @@ static void trace(const layout &L, size_t n, int ntab, int mom, size_t l1, int r
                     load(4, entry, sizeof(sph_real)); /* gtab */
                     auto j = [&](size_t i) { return (size_t)L.nb[base + i]; };
                     if (!mom) {
-                        for (int r = 0; r < 3; r++) /* u, particle by particle */
-                            load(5, [&](size_t i) { return j(i) * 3 + r; }, 8);
+                        for (int r = 0; r < 3; r++) /* u */
+                            load(5, [&](size_t i) { return L.soa ? r * n + j(i) : j(i) * 3 + r; }, 8);
                         continue;
                     }
                     for (int e = 0; e < 9; e++) { /* Q and Cv entry by entry (SPH_TENSOR) */
                         load(6, [&](size_t i) { return e * n + j(i); }, sizeof(sph_real));
                         load(7, [&](size_t i) { return e * n + j(i); }, sizeof(sph_real));
                     }
-                    for (int r = 0; r < 3; r++) /* v, particle by particle */
-                        load(8, [&](size_t i) { return j(i) * 3 + r; }, 8);
+                    for (int r = 0; r < 3; r++) /* v */
+                        load(8, [&](size_t i) { return L.soa ? r * n + j(i) : j(i) * 3 + r; }, 8);
                     load(9, j, sizeof(sph_real)); /* Cs */
                 }
-        hits += c.hits, misses += c.misses;
+        hits += c.hits, misses += c.misses, lines += c.lines;
     }
     *hit = (double)hits / (double)(hits + misses);
     *bytes_per_pair = (double)(misses * SECTOR) / (double)pairs;
+    *lines_per_pair = (double)lines / (double)pairs;
 }
 
 /* The key of a slot's pairs (2k forward, 2~k + 1 reversed; holes have none). */
@@ -178,9 +198,19 @@ int main(int argc, char **argv)
         return 1;
     const sph_body *h = &sim.bodies[0];
     const size_t n = (size_t)h->n;
-    int *count, *nb, *k, slots;
-    sph_full_lists(h, &count, &nb, &k, &slots);
-    layout off{"offset"}, key{"key"}, packed{"packed"};
+    sph_full f;
+    sph_full_lists(h, &f);
+    if (f.mask) { /* the masks as lists, which the layouts below rearrange */
+        f.nb = (int *)malloc((size_t)f.slots * n * sizeof(int));
+        f.k = (int *)malloc((size_t)f.slots * n * sizeof(int));
+        sph_body v = *h;
+        v.fb_mask = f.mask, v.fb_off = f.off, v.fb_slotk = f.slotk;
+        for (int s = 0; s < f.slots; s++)
+            for (size_t i = 0; i < n; i++)
+                f.nb[(size_t)s * n + i] = sph_slot(&v, (int)i, s, &f.k[(size_t)s * n + i]);
+    }
+    int *count = f.count, *nb = f.nb, *k = f.k, slots = f.slots;
+    layout off{"offset"}, key{"key"}, packed{"packed"}, masks{"masks"};
     off.nb.assign(nb, nb + (size_t)slots * n), off.kk.assign(k, k + (size_t)slots * n);
     off.count.assign(count, count + n), off.slots = slots;
     /* the same slots in key order: each slot's key from any pair it holds */
@@ -216,20 +246,30 @@ int main(int argc, char **argv)
         pairs += packed.count[i];
     printf("%zu particles, %d slots, %.1f pairs a particle; L1 %zu KB, %d blocks of %d resident, "
            "%d groups\n", n, slots, pairs / (double)n, l1 >> 10, resident, block, groups);
-    printf("%-8s %-9s %9s %14s %16s\n", "layout", "pass", "L1 hits", "L2 B/pair", "L2 GB/step");
-    double bytes[3][2];
-    const layout *all[3] = {&packed, &key, &off};
-    for (int l = 0; l < 3; l++)
+    printf("%-8s %-9s %9s %14s %16s %16s\n", "layout", "pass", "L1 hits", "L2 B/pair",
+           "L2 GB/step", "L1 lines/pair");
+    masks = off, masks.name = "masks", masks.masks = true;
+    layout soa = masks;
+    soa.name = "soa", soa.soa = true;
+    double bytes[5][2];
+    const layout *all[5] = {&packed, &key, &off, &masks, &soa};
+    for (int l = 0; l < (f.mask ? 5 : 3); l++)
         for (int mom = 1; mom >= 0; mom--) {
-            double hit;
-            trace(*all[l], n, h->ntab, mom, l1, resident, block, groups, &hit, &bytes[l][mom]);
-            printf("%-8s %-9s %8.1f%% %14.1f %16.2f\n", all[l]->name, mom ? "momentum" : "stress",
-                   100 * hit, bytes[l][mom], bytes[l][mom] * pairs / 1e9);
+            double hit, lines;
+            trace(*all[l], n, h->ntab, mom, l1, resident, block, groups, &hit, &bytes[l][mom],
+                  &lines);
+            printf("%-8s %-9s %8.1f%% %14.1f %16.2f %16.1f\n", all[l]->name,
+                   mom ? "momentum" : "stress", 100 * hit, bytes[l][mom],
+                   bytes[l][mom] * pairs / 1e9, lines);
         }
-    for (int mom = 1; mom >= 0; mom--)
-        printf("%s: bytes from L2, offset / key %.3f\n", mom ? "momentum" : "stress",
+    for (int mom = 1; mom >= 0; mom--) {
+        printf("%s: bytes from L2, offset / key %.3f", mom ? "momentum" : "stress",
                bytes[2][mom] / bytes[1][mom]);
-    free(count), free(nb), free(k);
+        if (f.mask)
+            printf(", masks / offset %.3f", bytes[3][mom] / bytes[2][mom]);
+        printf("\n");
+    }
+    free(f.count), free(f.nb), free(f.k), free(f.mask), free(f.off), free(f.slotk);
     sph_sim_free(&sim);
     return 0;
 }

@@ -91,6 +91,22 @@ static inline void atomicAdd(double *a, double v) { *a += v; }
 #include "sphrt.h"
 #include "contact_law.h"
 
+/* Slot s of particle i's full list: its neighbour (returned) and table entry *k (~k for the
+ * reversed pair; ntab, the zero entry, for a hole, whose neighbour is i itself).  A body
+ * whose every pair lies at i + its slot's offset keeps only masks (sph_full_lists): the same
+ * branch for every thread of a launch. */
+SPH_FN int sph_slot(const sph_body *b, int i, int s, int *k)
+{
+    if (b->fb_mask) {
+        const int in = b->fb_mask[(size_t)(s >> 5) * (size_t)b->n + (size_t)i] >> (s & 31) & 1;
+        *k = in ? b->fb_slotk[s] : b->ntab;
+        return in ? i + b->fb_off[s] : i;
+    }
+    const size_t p = (size_t)s * (size_t)b->n + (size_t)i;
+    *k = b->fb_k[p];
+    return b->fb[p];
+}
+
 #define SPH_CUDA_CHECK(call)                                                                   \
     do {                                                                                       \
         cudaError_t err_ = (call);                                                             \
@@ -656,22 +672,32 @@ static inline void sph_cuda_halo(sph_body *b, const sph_cuda_field *f, int nf)
  * still holds: on a lattice in slab order the offsets of one plane of the support lie within
  * a few rows, and the slots sweep the planes one by one instead of jumping between j - i and
  * i - j at every table entry (docs/cuda.md).  Keys only pairs with the halo use go last.
- * Built with -DSPH_CUDA_SLOTS_BY_KEY, the slots follow the keys (bench/cuda's A/B). */
-static int sph_slot_ranks(const sph_body *h, size_t nkey, int *slot_of)
+ * Built with -DSPH_CUDA_SLOTS_BY_KEY, the slots follow the keys (bench/cuda's A/B).
+ * off[key] is the key's offset and *uniform says whether every used key's own pairs have
+ * the same one (a box in slab order: j = i + off for every pair). */
+static int sph_slot_ranks(const sph_body *h, size_t nkey, int *slot_of, long *off, int *uniform)
 {
     double *sum = (double *)calloc(nkey, sizeof(double));
     size_t *cnt = (size_t *)calloc(nkey, sizeof(size_t));
+    long *hi = (long *)calloc(nkey, sizeof(long));
     for (size_t i = 0; i < (size_t)h->nown; i++)
         for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++) {
             const size_t key = 2 * (size_t)h->hb_k[p];
-            const double d = (double)h->hb[p] - (double)i;
-            sum[key] += d, sum[key + 1] -= d, cnt[key]++, cnt[key + 1]++;
+            const long d = (long)h->hb[p] - (long)i;
+            if (!cnt[key])
+                off[key] = hi[key] = d, off[key + 1] = hi[key + 1] = -d;
+            off[key] = std::min(off[key], d), hi[key] = std::max(hi[key], d);
+            off[key + 1] = std::min(off[key + 1], -d), hi[key + 1] = std::max(hi[key + 1], -d);
+            sum[key] += (double)d, sum[key + 1] -= (double)d, cnt[key]++, cnt[key + 1]++;
         }
     int used = 0;
     size_t *order = (size_t *)malloc((nkey + 1) * sizeof(size_t));
+    *uniform = 1;
     for (size_t key = 0; key < nkey; key++)
-        if (slot_of[key])
+        if (slot_of[key]) {
             order[used++] = key;
+            *uniform = *uniform && cnt[key] && off[key] == hi[key];
+        }
 #ifndef SPH_CUDA_SLOTS_BY_KEY
     std::stable_sort(order, order + used, [&](size_t a, size_t b) {
         if (!cnt[a] || !cnt[b])
@@ -683,8 +709,48 @@ static int sph_slot_ranks(const sph_body *h, size_t nkey, int *slot_of)
         slot_of[key] = -1;
     for (int s = 0; s < used; s++)
         slot_of[order[s]] = s;
-    free(sum), free(cnt), free(order);
+    free(sum), free(cnt), free(hi), free(order);
     return used;
+}
+
+/* A body's full pair lists as the device reads them (sphrt.h, fb_*; sph_slot). */
+struct sph_full {
+    int slots, *count, *nb, *k;    /* slot s of particle i: nb[s*n + i], k[s*n + i] */
+    unsigned *mask;                /* or, every pair at i + its slot's offset: mask bits */
+    int *off, *slotk;              /* and the slots' offsets and table entries */
+};
+
+/* The slot masks of a body whose every pair lies at j = i + off[key] (slot_of from
+ * sph_slot_ranks): bit s & 31 of word (s >> 5)*n + i says whether particle i has slot s's
+ * neighbour, and count[i] is its last slot + 1 (holes before it included). */
+static void sph_slot_masks(const sph_body *h, size_t nkey, const int *slot_of, const long *off,
+                           int used, sph_full *f)
+{
+    const size_t n = (size_t)h->n, words = ((size_t)used + 31) / 32;
+    f->slots = used, f->nb = f->k = NULL;
+    f->mask = (unsigned *)calloc(words * n + 1, sizeof(unsigned));
+    f->off = (int *)malloc((size_t)used * sizeof(int));
+    f->slotk = (int *)malloc((size_t)used * sizeof(int));
+    for (size_t key = 0; key < nkey; key++)
+        if (slot_of[key] >= 0) {
+            f->off[slot_of[key]] = (int)off[key];
+            f->slotk[slot_of[key]] = key & 1 ? ~(int)(key >> 1) : (int)(key >> 1);
+        }
+    for (size_t i = 0; i < (size_t)h->nown; i++)
+        for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++) {
+            const int s = slot_of[2 * (size_t)h->hb_k[p]], r = slot_of[2 * (size_t)h->hb_k[p] + 1];
+            f->mask[(size_t)(s >> 5) * n + i] |= 1u << (s & 31);
+            f->mask[(size_t)(r >> 5) * n + (size_t)h->hb[p]] |= 1u << (r & 31);
+        }
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < n; i++) {
+        f->count[i] = 0;
+        for (size_t w = words; w-- > 0;)
+            if (f->mask[w * n + i]) {
+                f->count[i] = (int)(w * 32) + 32 - __builtin_clz(f->mask[w * n + i]);
+                break;
+            }
+    }
 }
 
 /* Full pair lists from the half lists (j > i): i gets (j, k), j gets (i, ~k), laid out slot
@@ -694,8 +760,13 @@ static int sph_slot_ranks(const sph_body *h, size_t nkey, int *slot_of)
  * slot, the same for every particle (sph_slot_ranks), and a particle's missing neighbours
  * are holes: the particle itself with the zero table entry ntab, which adds nothing, so the
  * passes need no branch.  A warp at one slot then reads one offset in every thread, including
- * threads whose particles lie near a surface.  Otherwise the pairs are packed from slot 0. */
-static void sph_full_lists(const sph_body *h, int **count, int **nb, int **k, int *slots)
+ * threads whose particles lie near a surface.  Where moreover every pair lies at i + its
+ * slot's offset (a box; not on many processes, whose halo particles lie elsewhere) the
+ * lists are slot masks instead (sph_slot_masks): 4 bytes a particle for 32 slots instead
+ * of 8 a pair, which the passes would otherwise stream from memory at every step.  Built
+ * with -DSPH_CUDA_LISTS, lists always (bench/cuda's A/B).  Off a lattice the pairs are
+ * packed from slot 0. */
+static void sph_full_lists(const sph_body *h, sph_full *f)
 {
     /* (on many processes the rows of own particles, each with its pairs with the halo too,
      * h->xb: a halo particle has no list) */
@@ -707,15 +778,17 @@ static void sph_full_lists(const sph_body *h, int **count, int **nb, int **k, in
         if (h->xb_start)
             start[i + 1] += (size_t)(h->xb_start[i + 1] - h->xb_start[i]);
     }
-    *count = (int *)malloc((n + 1) * sizeof(int));
-    int maxc = 0, used = 0;
+    int *count = f->count = (int *)malloc((n + 1) * sizeof(int));
+    f->mask = NULL, f->off = f->slotk = NULL;
+    int maxc = 0, used = 0, uniform = 0;
     for (size_t i = 0; i < n; i++) {
-        (*count)[i] = (int)start[i + 1];
+        count[i] = (int)start[i + 1];
         maxc = (int)start[i + 1] > maxc ? (int)start[i + 1] : maxc;
         start[i + 1] += start[i];
     }
     /* the rank of each key the pairs use, when there can be few (not one per pair) */
     int *slot_of = nkey <= 4 * (size_t)maxc + 4 ? (int *)calloc(nkey, sizeof(int)) : NULL;
+    long *off = slot_of ? (long *)calloc(nkey, sizeof(long)) : NULL;
     for (size_t i = 0; slot_of && i < nown; i++) {
         for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++)
             slot_of[2 * (size_t)h->hb_k[p]] = slot_of[2 * (size_t)h->hb_k[p] + 1] = 1;
@@ -723,8 +796,15 @@ static void sph_full_lists(const sph_body *h, int **count, int **nb, int **k, in
             slot_of[2 * (size_t)h->xb_k[p]] = 1;
     }
     if (slot_of)
-        used = sph_slot_ranks(h, nkey, slot_of);
+        used = sph_slot_ranks(h, nkey, slot_of, off, &uniform);
     const int fixed = slot_of && used <= maxc + maxc / 2; /* holes: at most half the slots */
+#ifndef SPH_CUDA_LISTS
+    if (fixed && uniform && !h->xb_start) {
+        sph_slot_masks(h, nkey, slot_of, off, used, f);
+        free(start), free(slot_of), free(off);
+        return;
+    }
+#endif
     uint64_t *packed = (uint64_t *)malloc((start[n] + 1) * sizeof(uint64_t));
     size_t *fill = (size_t *)malloc((n + 1) * sizeof(size_t));
     memcpy(fill, start, n * sizeof(size_t));
@@ -738,11 +818,11 @@ static void sph_full_lists(const sph_body *h, int **count, int **nb, int **k, in
             packed[fill[i]++] = (2 * (uint64_t)h->xb_k[p]) << 32 | (uint64_t)h->xb[p];
     }
     free(fill);
-    *slots = fixed ? used : maxc;
-    *nb = (int *)malloc(((size_t)*slots * n + 1) * sizeof(int));
-    *k = (int *)malloc(((size_t)*slots * n + 1) * sizeof(int));
-    for (size_t e = 0; e < (size_t)*slots * n; e++) /* holes: the particle and a zero entry */
-        (*nb)[e] = (int)(e % n), (*k)[e] = h->ntab;
+    const int slots = f->slots = fixed ? used : maxc;
+    int *nb = f->nb = (int *)malloc(((size_t)slots * n + 1) * sizeof(int));
+    int *k = f->k = (int *)malloc(((size_t)slots * n + 1) * sizeof(int));
+    for (size_t e = 0; e < (size_t)slots * n; e++) /* holes: the particle and a zero entry */
+        nb[e] = (int)(e % n), k[e] = h->ntab;
 #pragma omp parallel for schedule(dynamic, 1024)
     for (size_t i = 0; i < n; i++) {
         std::sort(packed + start[i], packed + start[i + 1]);
@@ -750,14 +830,14 @@ static void sph_full_lists(const sph_body *h, int **count, int **nb, int **k, in
         for (size_t a = 0; a < start[i + 1] - start[i]; a++) {
             const uint64_t w = packed[start[i] + a], key = w >> 32;
             const size_t s = fixed ? (size_t)slot_of[key] : a;
-            (*nb)[s * n + i] = (int)(w & 0xffffffffu);
-            (*k)[s * n + i] = key & 1 ? ~(int)(key >> 1) : (int)(key >> 1);
+            nb[s * n + i] = (int)(w & 0xffffffffu);
+            k[s * n + i] = key & 1 ? ~(int)(key >> 1) : (int)(key >> 1);
             last = s + 1 > last ? s + 1 : last;
         }
         if (fixed)
-            (*count)[i] = (int)last;
+            count[i] = (int)last;
     }
-    free(start), free(packed), free(slot_of);
+    free(start), free(packed), free(slot_of), free(off);
 }
 
 /* The sums of host body h's last step as the device keeps them (b->red[SPH_RED_VMAX2 ..
@@ -815,12 +895,16 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->wtab = sph_dev_table(h->wtab, nt, SPH_ROW(d));
     b->gtab = sph_dev_table(h->gtab, nt, 1);
     b->htab = sph_dev_table(h->htab, nt, 1);
-    int *count, *nb, *k, slots;
-    SPH_TIMED("set-up: the device's full pair lists", sph_full_lists(h, &count, &nb, &k, &slots));
-    b->fb_count = (int *)sph_dev_copy(count, n * sizeof(int));
-    b->fb = (int *)sph_dev_copy(nb, (size_t)slots * n * sizeof(int));
-    b->fb_k = (int *)sph_dev_copy(k, (size_t)slots * n * sizeof(int));
-    free(count), free(nb), free(k);
+    sph_full f;
+    SPH_TIMED("set-up: the device's full pair lists", sph_full_lists(h, &f));
+    const size_t words = ((size_t)f.slots + 31) / 32;
+    b->fb_count = (int *)sph_dev_copy(f.count, n * sizeof(int));
+    b->fb = (int *)sph_dev_copy(f.nb, (size_t)f.slots * n * sizeof(int)); /* NULL with masks */
+    b->fb_k = (int *)sph_dev_copy(f.k, (size_t)f.slots * n * sizeof(int));
+    b->fb_mask = (unsigned *)sph_dev_copy(f.mask, words * n * sizeof(unsigned));
+    b->fb_off = (int *)sph_dev_copy(f.off, (size_t)f.slots * sizeof(int));
+    b->fb_slotk = (int *)sph_dev_copy(f.slotk, (size_t)f.slots * sizeof(int));
+    free(f.count), free(f.nb), free(f.k), free(f.mask), free(f.off), free(f.slotk);
     double red[SPH_NRED];
     sph_host_sums(h, red);
     b->red = (double *)sph_dev_copy(red, sizeof red);

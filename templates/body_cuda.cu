@@ -2,23 +2,23 @@
  * The passes of templates/body_forces.c with one thread per particle: b is the body's device
  * view (runtime/sph_cuda.h), whose full pair lists let every thread sum its own particle's
  * pairs, so no two threads write the same particle.  The pair terms are those of the CPU
- * passes, computed from both sides (w_ji = -w_ij).  Pair s of particle i is entry s*n + i of
- * the lists: a warp reads its particles' pairs as consecutive words; on a lattice slot s is
- * one offset for every particle, and where a particle lacks it the slot holds the particle
+ * passes, computed from both sides (w_ji = -w_ij).  Pair s of particle i is slot s of its
+ * list (sph_slot): a warp reads its particles' pairs as consecutive words; on a lattice slot s
+ * is one offset for every particle, and where a particle lacks it the slot holds the particle
  * itself with a zero table entry (sph_full_lists). */
 
-/* Pair p of particle i: its neighbour (returned), V_j grad_i W_ij (w), and the pair's
- * factor G_ij / ((v_i - v_j) . w) of eq. 60 (g) and Laplacian weight of eq. 62 (l).  From
- * the offset table: entry fb_k[p], or ~fb_k[p] for the reversed pair (w_ji = -w_ij), a few
- * hundred entries that stay in the L1 cache.  Built with -DSPH_CUDA_RECOMPUTE, from the
+/* Slot s of particle i: its neighbour (returned), its table entry (*k: ~k for the reversed
+ * pair), V_j grad_i W_ij (w), and the pair's factor G_ij / ((v_i - v_j) . w) of eq. 60 (g)
+ * and Laplacian weight of eq. 62 (l).  From the offset table: entry k, or ~k for the
+ * reversed pair (w_ji = -w_ij), a few hundred entries that stay in the L1 cache.  Built with -DSPH_CUDA_RECOMPUTE, from the
  * reference positions instead, as the set-up computes the table (runtime/setup.c): no table
  * entry per pair but X_j and a kernel evaluation, the other layout docs/cuda.md weighs
  * (bench/cuda times both).  What a pass does not use of it the compiler drops. */
-SPH_FN int @B@_pair(const sph_body *b, int i, size_t p, sph_real w[@DIM@], sph_real *g,
+SPH_FN int @B@_pair(const sph_body *b, int i, int s, int *k, sph_real w[@DIM@], sph_real *g,
                     sph_real *l)
 {
     enum { D = @DIM@ };
-    const int j = b->fb[p];
+    const int j = sph_slot(b, i, s, k);
 #ifdef SPH_CUDA_RECOMPUTE
     double d[D], wd[D];
     for (int c = 0; c < D; c++)
@@ -29,9 +29,8 @@ SPH_FN int @B@_pair(const sph_body *b, int i, size_t p, sph_real w[@DIM@], sph_r
     *g = (sph_real)sph_viscosity_factor(D, b->h, d, wd);
     *l = (sph_real)(2 * f);
 #else
-    (void)i;
-    const int k = b->fb_k[p], e = k < 0 ? ~k : k;
-    const sph_real sg = k < 0 ? (sph_real)-1 : (sph_real)1;
+    const int e = *k < 0 ? ~*k : *k;
+    const sph_real sg = *k < 0 ? (sph_real)-1 : (sph_real)1;
     for (int c = 0; c < D; c++)
         w[c] = sg * b->wtab[(size_t)e * SPH_ROW(D) + c];
     *g = b->gtab[e];
@@ -68,10 +67,10 @@ static void @B@_stress_pass(sph_body *b)
 //@if FRACTURE
         double lap = 0; /* the Laplacian of the phase field (eq. 62) over the same pairs */
 //@endif
-        const size_t n = (size_t)b->n, end = i + n * (size_t)b->fb_count[i];
-        for (size_t p = i; p < end; p += n) {
+        for (int s = 0, slots = b->fb_count[i]; s < slots; s++) {
             sph_real w[D], g, l;
-            const int j = @B@_pair(b, i, p, w, &g, &l);
+            int k;
+            const int j = @B@_pair(b, i, s, &k, w, &g, &l);
             for (int r = 0; r < D; r++)
                 for (int c = 0; c < D; c++)
                     A[r * D + c] += (u[j * D + r] - u[i * D + r]) * w[c];
@@ -113,7 +112,7 @@ static void @B@_momentum_pass(sph_body *b)
     SPH_FOR(i, b->nown, {
 //@endif
         const sph_real inv_rho = (sph_real)(1.0 / b->rho0);
-        const size_t n = (size_t)b->n, end = i + n * (size_t)b->fb_count[i];
+        const size_t n = (size_t)b->n;
         sph_real Qi[D * D]; /* Q and Cv entry by entry (SPH_TENSOR) */
         for (int r = 0; r < D; r++)
             for (int c = 0; c < D; c++)
@@ -127,9 +126,10 @@ static void @B@_momentum_pass(sph_body *b)
         sph_real pv = 0;
 //@endif
         sph_real fi[D] = {0};
-        for (size_t p = i; p < end; p += n) {
+        for (int s = 0, slots = b->fb_count[i]; s < slots; s++) {
             sph_real w[D], g, l;
-            const int j = @B@_pair(b, i, p, w, &g, &l);
+            int k;
+            const int j = @B@_pair(b, i, s, &k, w, &g, &l);
             sph_real f[D];
             for (int r = 0; r < D; r++) {
                 sph_real s2 = 0;
@@ -162,8 +162,7 @@ static void @B@_momentum_pass(sph_body *b)
             pv -= hpi * vw;
 //@endif
 //@if PAIR_TERMS
-            const int k = b->fb_k[p]; /* its table entry, also with SPH_CUDA_RECOMPUTE */
-            @B@_pair_terms(b, i, j, k < 0 ? ~k : k, f);
+            @B@_pair_terms(b, i, j, k < 0 ? ~k : k, f); /* also with SPH_CUDA_RECOMPUTE */
 //@endif
             for (int r = 0; r < D; r++)
                 fi[r] += f[r];

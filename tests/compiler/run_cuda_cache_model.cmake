@@ -7,8 +7,10 @@
 # The probe is compiled as the emulated builds are (-Wall -Wextra -Werror).
 # MODEL's dp becomes DP.  The offsets' order must draw at most half the bytes from L2 per pair
 # of the momentum pass that the keys' order draws (the 124 416 particles of cases/plate3d.sph
-# at dp 2.5 mm: 64 against 166 bytes), and no more for the stress pass; every hit rate must
-# lie between 0 and 100 %.
+# at dp 2.5 mm: 64 against 166 bytes), and no more for the stress pass; the box's lists must
+# be slot masks (sph_slot_masks), which must draw at most half the stress pass's bytes the
+# lists draw (1.5 against 10.5) and no more of the momentum pass's; every hit rate must lie
+# between 0 and 100 %.
 set(src ${MODEL})
 file(READ ${src} text)
 string(REGEX REPLACE "\n( *dp) [0-9.e-]+" "\n\\1 ${DP}" text "${text}")
@@ -39,15 +41,22 @@ foreach(layout key offset)
   endforeach()
 endforeach()
 foreach(pass momentum stress)
-  if(NOT out MATCHES "\n${pass}: bytes from L2, offset / key ([0-9.]+)")
-    message(FATAL_ERROR "no ratio for ${pass}")
+  if(NOT out MATCHES "\n${pass}: bytes from L2, offset / key ([0-9.]+), masks / offset ([0-9.]+)")
+    message(FATAL_ERROR "no ratios for ${pass} (the box's lists must be slot masks)")
   endif()
-  set(limit 1.0)
+  set(key_limit 1.0)
+  set(mask_limit 1.0)
   if(pass STREQUAL momentum)
-    set(limit 0.5)
+    set(key_limit 0.5)
+  else()
+    set(mask_limit 0.5)
   endif()
-  if(CMAKE_MATCH_1 GREATER ${limit})
+  if(CMAKE_MATCH_1 GREATER ${key_limit})
     message(FATAL_ERROR "${pass}: the offsets' order draws ${CMAKE_MATCH_1} of the bytes from L2 "
-                        "per pair that the keys' order draws (at most ${limit})")
+                        "per pair that the keys' order draws (at most ${key_limit})")
+  endif()
+  if(CMAKE_MATCH_2 GREATER ${mask_limit})
+    message(FATAL_ERROR "${pass}: the slot masks draw ${CMAKE_MATCH_2} of the bytes from L2 per "
+                        "pair that the lists draw (at most ${mask_limit})")
   endif()
 endforeach()
