@@ -14,10 +14,11 @@
  *   packed  each particle's pairs from slot 0 in key order (timed at 4.49; Nsight Compute
  *           measured an L1 hit rate of 57 % for the momentum pass with it: the calibration);
  *   masks   the offsets' order read through slot masks instead of lists (sph_slot_masks: a
- *           box, whose every pair lies at i + its slot's offset; the default where it applies,
- *           the lists then being the layout built with -DSPH_CUDA_LISTS);
- *   soa     the masks with u and v read by component (stride n) instead of particle by
- *           particle: a layout not built, traced to see what it would save.
+ *           box, whose every pair lies at i + its slot's offset; the lists are the layout
+ *           built with -DSPH_CUDA_LISTS);
+ *   soa     the masks with the neighbours' u and v read by component (stride n: `us`, `vs`,
+ *           sph_cuda_components) instead of particle by particle (the layout built with
+ *           -DSPH_CUDA_AOS): the default for a box.
  *
  * The model: blocks of T threads (default 256) of consecutive particles, B of them resident
  * on one multiprocessor (default 2: 128 registers a thread), B blocks far apart in the body

@@ -798,13 +798,14 @@ static void sph_full_lists(const sph_body *h, sph_full *f)
     if (slot_of)
         used = sph_slot_ranks(h, nkey, slot_of, off, &uniform);
     const int fixed = slot_of && used <= maxc + maxc / 2; /* holes: at most half the slots */
-#ifndef SPH_CUDA_LISTS
+#ifdef SPH_CUDA_LISTS
+    uniform = 0; /* lists for every body */
+#endif
     if (fixed && uniform && !h->xb_start) {
         sph_slot_masks(h, nkey, slot_of, off, used, f);
         free(start), free(slot_of), free(off);
         return;
     }
-#endif
     uint64_t *packed = (uint64_t *)malloc((start[n] + 1) * sizeof(uint64_t));
     size_t *fill = (size_t *)malloc((n + 1) * sizeof(size_t));
     memcpy(fill, start, n * sizeof(size_t));
@@ -881,6 +882,8 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->Q = (sph_real *)sph_dev_alloc(n * d * d * sizeof(sph_real)); /* each stress pass */
     b->Cv = (sph_real *)sph_dev_alloc(n * d * d * sizeof(sph_real)); /* writes them whole */
     b->Cs = (sph_real *)sph_dev_alloc(n * sizeof(sph_real));
+    b->us = (double *)sph_dev_alloc(n * d * sizeof(double)); /* each pair pass */
+    b->vs = (double *)sph_dev_alloc(n * d * sizeof(double)); /* writes the one it reads */
     b->lam2 = (double *)sph_dev_copy(h->lam2, n * sizeof(double)); /* NULL without crush */
     b->psi = (double *)sph_dev_copy(h->psi, n * sizeof(double));
     b->fix = (uint8_t *)sph_dev_copy(h->fix, n);
@@ -952,6 +955,33 @@ static void sph_cuda_zero_in(double *d, int n, const char *pass)
     });
 }
 #define sph_cuda_zero(d, n) sph_cuda_zero_in((d), (n), __func__)
+
+/* What a pair pass reads of its neighbours' u or v (D values a particle), by component:
+ * s[r*n + i] = a[i*D + r] over all n particles (the halo's too, which has arrived), copied
+ * by the pass that reads it, so that a warp's load of one component of 32 consecutive
+ * neighbours touches 2 or 3 lines of 128 bytes instead of 6 or 7 (docs/cuda.md); returns
+ * the array to read, through SPH_VEC(i, r, D, n).  Built with -DSPH_CUDA_AOS, no copy: a
+ * itself, particle by particle (bench/cuda's A/B). */
+#ifdef SPH_CUDA_AOS
+#define SPH_VEC(i, r, D, n) ((void)(n), (size_t)(i) * (size_t)(D) + (size_t)(r))
+#else
+#define SPH_VEC(i, r, D, n) ((size_t)(r) * (size_t)(n) + (size_t)(i))
+#endif
+static const double *sph_cuda_components_in(const double *a, double *s, int n, int D,
+                                             const char *pass)
+{
+#ifdef SPH_CUDA_AOS
+    (void)s, (void)n, (void)D, (void)pass;
+    return a;
+#else
+    sph_for(n, pass, [=] __device__(int i) {
+        for (int r = 0; r < D; r++)
+            s[(size_t)r * (size_t)n + (size_t)i] = a[(size_t)i * (size_t)D + (size_t)r];
+    });
+    return s;
+#endif
+}
+#define sph_cuda_components(a, s, n, D) sph_cuda_components_in((a), (s), (n), (D), __func__)
 
 /* The sums of device view d's last step into host body h (the time step of sph_sim_step,
  * the energies; after a batch, the clock's copy has waited already). */

@@ -566,6 +566,9 @@ struct sph_body {
     int *fb_count, *fb, *fb_k;
     unsigned *fb_mask;
     int *fb_off, *fb_slotk;
+    /* Device targets: u and v by component (us[r*n + i]), as the pair passes read their
+     * neighbours' (sph_cuda_components, sph_cuda.h).  NULL on the CPU. */
+    double *us, *vs;
     /* Device targets: the reductions below as the device sums them (SPH_RED_* of
      * sph_cuda.h), read back once per step.  NULL on the CPU. */
     double *red;

@@ -61,8 +61,9 @@ static void @B@_stress_pass(sph_body *b)
     };
     sph_cuda_halo(b, halo_in, sizeof halo_in / sizeof *halo_in);
 //@endif
+    const double *u = sph_cuda_components(b->u, b->us, b->n, D); /* SPH_VEC */
     SPH_FOR(i, b->nown, {
-        const double *u = b->u;
+        const size_t n = (size_t)b->n;
         double A[D * D] = {0};
 //@if FRACTURE
         double lap = 0; /* the Laplacian of the phase field (eq. 62) over the same pairs */
@@ -73,7 +74,7 @@ static void @B@_stress_pass(sph_body *b)
             const int j = @B@_pair(b, i, s, &k, w, &g, &l);
             for (int r = 0; r < D; r++)
                 for (int c = 0; c < D; c++)
-                    A[r * D + c] += (u[j * D + r] - u[i * D + r]) * w[c];
+                    A[r * D + c] += (u[SPH_VEC(j, r, D, n)] - u[SPH_VEC(i, r, D, n)]) * w[c];
 //@if FRACTURE
             lap += l * (b->s[i] - b->s[j]);
 //@endif
@@ -105,6 +106,7 @@ static void @B@_momentum_pass(sph_body *b)
     sph_cuda_halo(b, halo_in, sizeof halo_in / sizeof *halo_in);
 //@endif
 //@if VISCOSITY
+    const double *v = sph_cuda_components(b->v, b->vs, b->n, D); /* SPH_VEC */
     sph_cuda_zero(b->red + SPH_RED_VISC_RATE, 1);
     /* each thread returns its particle's share of the viscous power: one atomic per block */
     SPH_FOR_SUM(i, b->nown, b->red + SPH_RED_VISC_RATE, {
@@ -145,7 +147,7 @@ static void @B@_momentum_pass(sph_body *b)
                 fv[r] = 0;
                 for (int c = 0; c < D; c++)
                     fv[r] += (Ci[r * D + c] + b->Cv[SPH_TENSOR(j, r, c, D, n)]) * w[c];
-                vw += (sph_real)(b->v[i * D + r] - b->v[j * D + r]) * fv[r];
+                vw += (sph_real)(v[SPH_VEC(i, r, D, n)] - v[SPH_VEC(j, r, D, n)]) * fv[r];
             }
             const sph_real cs = Csi + b->Cs[j];
             /* hpi = pi / 2 on approach, the factors folded (templates/body_forces.c) */

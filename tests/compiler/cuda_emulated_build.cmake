@@ -1,5 +1,5 @@
 # Builds a model for both targets (included by run_cuda_emulated*.cmake):
-#   -DSPHC= -DCXX= -DMODEL= -DINCLUDE= -DLIB= -DWORKDIR= [-DDEFINE=NAME]
+#   -DSPHC= -DCXX= -DMODEL= -DINCLUDE= -DLIB= -DWORKDIR= [-DDEFINE=NAME[,NAME...]]
 # Sets `stem`, the model's name, `cpu`, the CPU program, and `emulated`, the CUDA target's
 # model.cu (WORKDIR/STEM.cu) compiled by the host C++ compiler with SPH_CUDA_EMULATE
 # (runtime/sph_cuda.h): the device passes run serially on host memory.  Both programs are
@@ -32,9 +32,10 @@ if(NOT EMIT_ONLY)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "sphc (cpu) failed:\n${err}")
   endif()
-  set(defines "")
-  if(DEFINE)
-    set(defines -D${DEFINE})
-  endif()
+  set(defines "") # (macros given as NAME,NAME)
+  string(REPLACE "," ";" names "${DEFINE}")
+  foreach(name ${names})
+    list(APPEND defines -D${name})
+  endforeach()
   sph_emulated_compile(${emulated} ${WORKDIR}/${stem}.cu ${defines})
 endif()

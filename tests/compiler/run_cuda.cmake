@@ -1,7 +1,7 @@
 # The CUDA target's generated code, checked without a GPU:
-#   -DSPHC= -DMODEL= -DNVCC= -DINCLUDE= -DWORKDIR= [-DDEFINE=NAME] [-DMPI=ON]
+#   -DSPHC= -DMODEL= -DNVCC= -DINCLUDE= -DWORKDIR= [-DDEFINE=NAME[,NAME...]] [-DMPI=ON]
 # `sphc --target cuda --emit-only` writes model.cu, which nvcc must compile warning-free
-# (-Werror all-warnings; host code -Wall -Wextra) for sm_90 and sm_80, with the macro DEFINE
+# (-Werror all-warnings; host code -Wall -Wextra) for sm_90 and sm_80, with the macros DEFINE
 # defined when it is given (SPH_CUDA_RECOMPUTE); with MPI, the program for many processes
 # (sphc --mpi: its halo exchanges staged through the host).  A model using what the
 # target does not run yet must be refused with a clear "does not support yet" error instead.
@@ -23,10 +23,11 @@ if(NOT rc EQUAL 0)
   endif()
   message(FATAL_ERROR "sphc --target cuda failed on ${MODEL}:\n${err}")
 endif()
-set(defines "")
-if(DEFINE)
-  set(defines -D${DEFINE})
-endif()
+set(defines "") # (macros given as NAME,NAME)
+string(REPLACE "," ";" names "${DEFINE}")
+foreach(name ${names})
+  list(APPEND defines -D${name})
+endforeach()
 execute_process(COMMAND ${NVCC} -std=c++20 --extended-lambda -O3 ${defines}
                         -gencode arch=compute_90,code=sm_90 -gencode arch=compute_80,code=sm_80
                         -Werror all-warnings -Xcompiler -fopenmp,-Wall,-Wextra,-Werror
