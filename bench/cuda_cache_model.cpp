@@ -9,8 +9,9 @@
  * are the program's own.  It answers how the order of the fixed slots changes the traffic
  * between L1 and L2 before a GPU times it: each layout of the same pairs is traced.
  *   offset  the fixed slots in the order of their offsets j - i (sph_slot_ranks), as lists;
- *   key     the fixed slots in the order of the table's keys (+o, -o of each entry in turn:
- *           the layout built with -DSPH_CUDA_SLOTS_BY_KEY, timed at 3.94 ns/particle-step);
+ *   key     the fixed slots in the order of the table's keys (+o, -o of each entry in turn),
+ *           holes at i itself: the layout timed at 3.94 ns/particle-step (built with
+ *           -DSPH_CUDA_SLOTS_BY_KEY, but for its holes, sph_hole);
  *   packed  each particle's pairs from slot 0 in key order (timed at 4.49; Nsight Compute
  *           measured an L1 hit rate of 57 % for the momentum pass with it: the calibration);
  *   masks   the offsets' order read through slot masks instead of lists (sph_slot_masks: a
@@ -35,7 +36,8 @@
  * (what the L1 itself must serve, a line a clock at best: 2 or 3 for a load of 32
  * consecutive doubles, 6 or 7 for one component of 32 consecutive particles' u, a warp's
  * lines counted once for its 32 pairs); last, per pass, the offsets' layout's bytes from L2
- * over the keys' (and the masks' over the offsets' lists).  A hole (a missing neighbour: the
+ * over the keys' (and the masks' over the offsets' lists, and the default's L1 lines over the
+ * keys').  A hole (a missing neighbour: the
  * particle itself) is loaded like a pair but not counted as one. */
 #define main generated_main
 #include "model.cu"
@@ -231,7 +233,7 @@ int main(int argc, char **argv)
         int last = 0, fill = 0;
         for (int r = 0; r < slots; r++) { /* r: rank in key order */
             const size_t from = (size_t)order[r] * n + i, to = (size_t)r * n + i;
-            key.nb[to] = nb[from], key.kk[to] = k[from];
+            key.nb[to] = k[from] == h->ntab ? (int)i : nb[from], key.kk[to] = k[from];
             if (k[from] != h->ntab) {
                 last = r + 1;
                 packed.nb[(size_t)fill * n + i] = nb[from], packed.kk[(size_t)fill * n + i] = k[from];
@@ -252,22 +254,23 @@ int main(int argc, char **argv)
     masks = off, masks.name = "masks", masks.masks = true;
     layout soa = masks;
     soa.name = "soa", soa.soa = true;
-    double bytes[5][2];
+    double bytes[5][2], lines[5][2];
     const layout *all[5] = {&packed, &key, &off, &masks, &soa};
     for (int l = 0; l < (f.mask ? 5 : 3); l++)
         for (int mom = 1; mom >= 0; mom--) {
-            double hit, lines;
+            double hit;
             trace(*all[l], n, h->ntab, mom, l1, resident, block, groups, &hit, &bytes[l][mom],
-                  &lines);
+                  &lines[l][mom]);
             printf("%-8s %-9s %8.1f%% %14.1f %16.2f %16.1f\n", all[l]->name,
                    mom ? "momentum" : "stress", 100 * hit, bytes[l][mom],
-                   bytes[l][mom] * pairs / 1e9, lines);
+                   bytes[l][mom] * pairs / 1e9, lines[l][mom]);
         }
     for (int mom = 1; mom >= 0; mom--) {
         printf("%s: bytes from L2, offset / key %.3f", mom ? "momentum" : "stress",
                bytes[2][mom] / bytes[1][mom]);
         if (f.mask)
-            printf(", masks / offset %.3f", bytes[3][mom] / bytes[2][mom]);
+            printf(", masks / offset %.3f; L1 lines, soa / key %.3f", bytes[3][mom] / bytes[2][mom],
+                   lines[4][mom] / lines[1][mom]);
         printf("\n");
     }
     free(f.count), free(f.nb), free(f.k), free(f.mask), free(f.off), free(f.slotk);

@@ -91,16 +91,34 @@ static inline void atomicAdd(double *a, double v) { *a += v; }
 #include "sphrt.h"
 #include "contact_law.h"
 
+/* The neighbour a hole (a slot of offset off that particle i lacks) reads, one of the nown own
+ * particles: the particle at i + off, or the nearest one to it, so that the warp's load
+ * stays as contiguous as at its other lanes (a lane that read i itself would add lines to
+ * the load of every slot with a hole: near a surface, every slot pointing out of it).  A
+ * hole's table entry is the zero entry ntab, so whatever finite values it reads add
+ * nothing.  With SPH_CUDA_RECOMPUTE the pair's gradient comes from X_i - X_j instead, which
+ * would not be zero there: i itself. */
+SPH_FN int sph_hole(int i, int off, int nown)
+{
+#ifdef SPH_CUDA_RECOMPUTE
+    (void)off, (void)nown;
+    return i;
+#else
+    const int j = i + off;
+    return j < 0 ? 0 : j >= nown ? nown - 1 : j;
+#endif
+}
+
 /* Slot s of particle i's full list: its neighbour (returned) and table entry *k (~k for the
- * reversed pair; ntab, the zero entry, for a hole, whose neighbour is i itself).  A body
- * whose every pair lies at i + its slot's offset keeps only masks (sph_full_lists): the same
- * branch for every thread of a launch. */
+ * reversed pair; ntab, the zero entry, for a hole, sph_hole).  A body whose every pair lies
+ * at i + its slot's offset keeps only masks (sph_full_lists): the same branch for every
+ * thread of a launch. */
 SPH_FN int sph_slot(const sph_body *b, int i, int s, int *k)
 {
     if (b->fb_mask) {
         const int in = b->fb_mask[(size_t)(s >> 5) * (size_t)b->n + (size_t)i] >> (s & 31) & 1;
         *k = in ? b->fb_slotk[s] : b->ntab;
-        return in ? i + b->fb_off[s] : i;
+        return in ? i + b->fb_off[s] : sph_hole(i, b->fb_off[s], b->nown);
     }
     const size_t p = (size_t)s * (size_t)b->n + (size_t)i;
     *k = b->fb_k[p];
@@ -758,14 +776,14 @@ static void sph_slot_masks(const sph_body *h, size_t nkey, const int *slot_of, c
  * offset its own key), and each particle's pairs are sorted by key.  When the body's pairs
  * use few distinct keys (a lattice: one table entry per offset) every key gets a fixed
  * slot, the same for every particle (sph_slot_ranks), and a particle's missing neighbours
- * are holes: the particle itself with the zero table entry ntab, which adds nothing, so the
- * passes need no branch.  A warp at one slot then reads one offset in every thread, including
- * threads whose particles lie near a surface.  Where moreover every pair lies at i + its
- * slot's offset (a box; not on many processes, whose halo particles lie elsewhere) the
- * lists are slot masks instead (sph_slot_masks): 4 bytes a particle for 32 slots instead
- * of 8 a pair, which the passes would otherwise stream from memory at every step.  Built
- * with -DSPH_CUDA_LISTS, lists always (bench/cuda's A/B).  Off a lattice the pairs are
- * packed from slot 0. */
+ * are holes: a particle near i + the slot's offset (sph_hole) with the zero table entry
+ * ntab, which adds nothing, so the passes need no branch.  A warp at one slot then reads one
+ * offset in every thread, including threads whose particles lie near a surface.  Where
+ * moreover every pair lies at i + its slot's offset (a box; not on many processes, whose
+ * halo particles lie elsewhere) the lists are slot masks instead (sph_slot_masks): 4 bytes a
+ * particle for 32 slots instead of 8 a pair, which the passes would otherwise stream from
+ * memory at every step.  Built with -DSPH_CUDA_LISTS, lists always (bench/cuda's A/B).  Off
+ * a lattice the pairs are packed from slot 0. */
 static void sph_full_lists(const sph_body *h, sph_full *f)
 {
     /* (on many processes the rows of own particles, each with its pairs with the halo too,
@@ -822,8 +840,16 @@ static void sph_full_lists(const sph_body *h, sph_full *f)
     const int slots = f->slots = fixed ? used : maxc;
     int *nb = f->nb = (int *)malloc(((size_t)slots * n + 1) * sizeof(int));
     int *k = f->k = (int *)malloc(((size_t)slots * n + 1) * sizeof(int));
-    for (size_t e = 0; e < (size_t)slots * n; e++) /* holes: the particle and a zero entry */
-        nb[e] = (int)(e % n), k[e] = h->ntab;
+    int *hole = (int *)calloc((size_t)slots + 1, sizeof(int)); /* each fixed slot's offset */
+    for (size_t key = 0; fixed && key < nkey; key++)
+        if (slot_of[key] >= 0)
+            hole[slot_of[key]] = (int)off[key];
+#pragma omp parallel for schedule(static)
+    for (size_t e = 0; e < (size_t)slots * n; e++) { /* holes: sph_hole and the zero entry */
+        const int i = (int)(e % n);
+        nb[e] = fixed ? sph_hole(i, hole[e / n], h->nown) : i, k[e] = h->ntab;
+    }
+    free(hole);
 #pragma omp parallel for schedule(dynamic, 1024)
     for (size_t i = 0; i < n; i++) {
         std::sort(packed + start[i], packed + start[i + 1]);

@@ -4,8 +4,8 @@
  * pairs, so no two threads write the same particle.  The pair terms are those of the CPU
  * passes, computed from both sides (w_ji = -w_ij).  Pair s of particle i is slot s of its
  * list (sph_slot): a warp reads its particles' pairs as consecutive words; on a lattice slot s
- * is one offset for every particle, and where a particle lacks it the slot holds the particle
- * itself with a zero table entry (sph_full_lists). */
+ * is one offset for every particle, and where a particle lacks it the slot holds a particle
+ * near that offset with a zero table entry (a hole: sph_hole, sph_full_lists). */
 
 /* Slot s of particle i: its neighbour (returned), its table entry (*k: ~k for the reversed
  * pair), V_j grad_i W_ij (w), and the pair's factor G_ij / ((v_i - v_j) . w) of eq. 60 (g)
