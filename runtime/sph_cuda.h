@@ -771,6 +771,99 @@ static void sph_slot_masks(const sph_body *h, size_t nkey, const int *slot_of, c
     }
 }
 
+/* Each particle's count of full-list pairs into count (n), their largest into *maxc; returns
+ * where each particle's pairs start in a packed array (n + 1 prefix sums).  (On many
+ * processes the rows of own particles, each with its pairs with the halo too, h->xb: a halo
+ * particle has no list.) */
+static size_t *sph_pair_starts(const sph_body *h, int *count, int *maxc)
+{
+    const size_t n = (size_t)h->n;
+    size_t *start = (size_t *)calloc(n + 1, sizeof(size_t));
+    for (size_t i = 0; i < (size_t)h->nown; i++) {
+        for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++)
+            start[i + 1]++, start[h->hb[p] + 1]++;
+        if (h->xb_start)
+            start[i + 1] += (size_t)(h->xb_start[i + 1] - h->xb_start[i]);
+    }
+    *maxc = 0;
+    for (size_t i = 0; i < n; i++) {
+        count[i] = (int)start[i + 1];
+        *maxc = count[i] > *maxc ? count[i] : *maxc;
+        start[i + 1] += start[i];
+    }
+    return start;
+}
+
+/* The keys the pairs use, marked 1 among nkey (sph_slot_ranks ranks them), or NULL when
+ * there can be many (not one per offset: off a lattice). */
+static int *sph_used_keys(const sph_body *h, size_t nkey, int maxc)
+{
+    if (nkey > 4 * (size_t)maxc + 4)
+        return NULL;
+    int *used = (int *)calloc(nkey, sizeof(int));
+    for (size_t i = 0; i < (size_t)h->nown; i++) {
+        for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++)
+            used[2 * (size_t)h->hb_k[p]] = used[2 * (size_t)h->hb_k[p] + 1] = 1;
+        for (int p = h->xb_start ? h->xb_start[i] : 0; h->xb_start && p < h->xb_start[i + 1]; p++)
+            used[2 * (size_t)h->xb_k[p]] = 1;
+    }
+    return used;
+}
+
+/* Every pair from both sides, packed as key << 32 | j in each particle's range of start. */
+static uint64_t *sph_packed_pairs(const sph_body *h, const size_t *start)
+{
+    const size_t n = (size_t)h->n;
+    uint64_t *packed = (uint64_t *)malloc((start[n] + 1) * sizeof(uint64_t));
+    size_t *fill = (size_t *)malloc((n + 1) * sizeof(size_t));
+    memcpy(fill, start, n * sizeof(size_t));
+    for (size_t i = 0; i < (size_t)h->nown; i++) {
+        for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++) {
+            const uint64_t j = (uint64_t)h->hb[p], key = 2 * (uint64_t)h->hb_k[p];
+            packed[fill[i]++] = key << 32 | j;
+            packed[fill[j]++] = (key + 1) << 32 | i;
+        }
+        for (int p = h->xb_start ? h->xb_start[i] : 0; h->xb_start && p < h->xb_start[i + 1]; p++)
+            packed[fill[i]++] = (2 * (uint64_t)h->xb_k[p]) << 32 | (uint64_t)h->xb[p];
+    }
+    free(fill);
+    return packed;
+}
+
+/* The lists nb and k of f from the packed pairs: with fixed slots (slot_of, off: the slots and
+ * offsets of the keys) each pair in its key's slot, the rest holes; else packed from slot 0. */
+static void sph_slot_lists(const sph_body *h, const size_t *start, uint64_t *packed,
+                           const int *slot_of, const long *off, size_t nkey, sph_full *f)
+{
+    const size_t n = (size_t)h->n, slots = (size_t)f->slots;
+    int *nb = f->nb = (int *)malloc((slots * n + 1) * sizeof(int));
+    int *k = f->k = (int *)malloc((slots * n + 1) * sizeof(int));
+    int *hole = (int *)calloc(slots + 1, sizeof(int)); /* each fixed slot's offset */
+    for (size_t key = 0; slot_of && key < nkey; key++)
+        if (slot_of[key] >= 0)
+            hole[slot_of[key]] = (int)off[key];
+#pragma omp parallel for schedule(static)
+    for (size_t e = 0; e < slots * n; e++) { /* holes: sph_hole and the zero entry */
+        const int i = (int)(e % n);
+        nb[e] = slot_of ? sph_hole(i, hole[e / n], h->nown) : i, k[e] = h->ntab;
+    }
+    free(hole);
+#pragma omp parallel for schedule(dynamic, 1024)
+    for (size_t i = 0; i < n; i++) {
+        std::sort(packed + start[i], packed + start[i + 1]);
+        size_t last = 0; /* with fixed slots: the last slot used, holes before it included */
+        for (size_t a = 0; a < start[i + 1] - start[i]; a++) {
+            const uint64_t w = packed[start[i] + a], key = w >> 32;
+            const size_t s = slot_of ? (size_t)slot_of[key] : a;
+            nb[s * n + i] = (int)(w & 0xffffffffu);
+            k[s * n + i] = key & 1 ? ~(int)(key >> 1) : (int)(key >> 1);
+            last = s + 1 > last ? s + 1 : last;
+        }
+        if (slot_of)
+            f->count[i] = (int)last;
+    }
+}
+
 /* Full pair lists from the half lists (j > i): i gets (j, k), j gets (i, ~k), laid out slot
  * by slot (sphrt.h, fb_*).  A pair is packed as key << 32 | j, key = 2k or 2~k + 1 (every
  * offset its own key), and each particle's pairs are sorted by key.  When the body's pairs
@@ -786,85 +879,29 @@ static void sph_slot_masks(const sph_body *h, size_t nkey, const int *slot_of, c
  * a lattice the pairs are packed from slot 0. */
 static void sph_full_lists(const sph_body *h, sph_full *f)
 {
-    /* (on many processes the rows of own particles, each with its pairs with the halo too,
-     * h->xb: a halo particle has no list) */
-    const size_t n = (size_t)h->n, nown = (size_t)h->nown, nkey = 2 * (size_t)h->ntab + 2;
-    size_t *start = (size_t *)calloc(n + 1, sizeof(size_t));
-    for (size_t i = 0; i < nown; i++) {
-        for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++)
-            start[i + 1]++, start[h->hb[p] + 1]++;
-        if (h->xb_start)
-            start[i + 1] += (size_t)(h->xb_start[i + 1] - h->xb_start[i]);
-    }
-    int *count = f->count = (int *)malloc((n + 1) * sizeof(int));
-    f->mask = NULL, f->off = f->slotk = NULL;
-    int maxc = 0, used = 0, uniform = 0;
-    for (size_t i = 0; i < n; i++) {
-        count[i] = (int)start[i + 1];
-        maxc = (int)start[i + 1] > maxc ? (int)start[i + 1] : maxc;
-        start[i + 1] += start[i];
-    }
-    /* the rank of each key the pairs use, when there can be few (not one per pair) */
-    int *slot_of = nkey <= 4 * (size_t)maxc + 4 ? (int *)calloc(nkey, sizeof(int)) : NULL;
+    const size_t n = (size_t)h->n, nkey = 2 * (size_t)h->ntab + 2;
+    int maxc, used = 0, uniform = 0;
+    f->count = (int *)malloc((n + 1) * sizeof(int));
+    f->nb = f->k = NULL, f->mask = NULL, f->off = f->slotk = NULL;
+    size_t *start = sph_pair_starts(h, f->count, &maxc);
+    int *slot_of = sph_used_keys(h, nkey, maxc);
     long *off = slot_of ? (long *)calloc(nkey, sizeof(long)) : NULL;
-    for (size_t i = 0; slot_of && i < nown; i++) {
-        for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++)
-            slot_of[2 * (size_t)h->hb_k[p]] = slot_of[2 * (size_t)h->hb_k[p] + 1] = 1;
-        for (int p = h->xb_start ? h->xb_start[i] : 0; h->xb_start && p < h->xb_start[i + 1]; p++)
-            slot_of[2 * (size_t)h->xb_k[p]] = 1;
-    }
     if (slot_of)
         used = sph_slot_ranks(h, nkey, slot_of, off, &uniform);
-    const int fixed = slot_of && used <= maxc + maxc / 2; /* holes: at most half the slots */
+    if (slot_of && used > maxc + maxc / 2) /* fixed slots: holes at most half the slots */
+        free(slot_of), slot_of = NULL;
 #ifdef SPH_CUDA_LISTS
     uniform = 0; /* lists for every body */
 #endif
-    if (fixed && uniform && !h->xb_start) {
+    if (slot_of && uniform && !h->xb_start)
         sph_slot_masks(h, nkey, slot_of, off, used, f);
-        free(start), free(slot_of), free(off);
-        return;
+    else {
+        f->slots = slot_of ? used : maxc;
+        uint64_t *packed = sph_packed_pairs(h, start);
+        sph_slot_lists(h, start, packed, slot_of, off, nkey, f);
+        free(packed);
     }
-    uint64_t *packed = (uint64_t *)malloc((start[n] + 1) * sizeof(uint64_t));
-    size_t *fill = (size_t *)malloc((n + 1) * sizeof(size_t));
-    memcpy(fill, start, n * sizeof(size_t));
-    for (size_t i = 0; i < nown; i++) {
-        for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++) {
-            const uint64_t j = (uint64_t)h->hb[p], key = 2 * (uint64_t)h->hb_k[p];
-            packed[fill[i]++] = key << 32 | j;
-            packed[fill[j]++] = (key + 1) << 32 | i;
-        }
-        for (int p = h->xb_start ? h->xb_start[i] : 0; h->xb_start && p < h->xb_start[i + 1]; p++)
-            packed[fill[i]++] = (2 * (uint64_t)h->xb_k[p]) << 32 | (uint64_t)h->xb[p];
-    }
-    free(fill);
-    const int slots = f->slots = fixed ? used : maxc;
-    int *nb = f->nb = (int *)malloc(((size_t)slots * n + 1) * sizeof(int));
-    int *k = f->k = (int *)malloc(((size_t)slots * n + 1) * sizeof(int));
-    int *hole = (int *)calloc((size_t)slots + 1, sizeof(int)); /* each fixed slot's offset */
-    for (size_t key = 0; fixed && key < nkey; key++)
-        if (slot_of[key] >= 0)
-            hole[slot_of[key]] = (int)off[key];
-#pragma omp parallel for schedule(static)
-    for (size_t e = 0; e < (size_t)slots * n; e++) { /* holes: sph_hole and the zero entry */
-        const int i = (int)(e % n);
-        nb[e] = fixed ? sph_hole(i, hole[e / n], h->nown) : i, k[e] = h->ntab;
-    }
-    free(hole);
-#pragma omp parallel for schedule(dynamic, 1024)
-    for (size_t i = 0; i < n; i++) {
-        std::sort(packed + start[i], packed + start[i + 1]);
-        size_t last = 0; /* with fixed slots: the last slot used, holes before it included */
-        for (size_t a = 0; a < start[i + 1] - start[i]; a++) {
-            const uint64_t w = packed[start[i] + a], key = w >> 32;
-            const size_t s = fixed ? (size_t)slot_of[key] : a;
-            nb[s * n + i] = (int)(w & 0xffffffffu);
-            k[s * n + i] = key & 1 ? ~(int)(key >> 1) : (int)(key >> 1);
-            last = s + 1 > last ? s + 1 : last;
-        }
-        if (fixed)
-            count[i] = (int)last;
-    }
-    free(start), free(packed), free(slot_of), free(off);
+    free(start), free(slot_of), free(off);
 }
 
 /* The sums of host body h's last step as the device keeps them (b->red[SPH_RED_VMAX2 ..
