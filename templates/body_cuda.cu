@@ -10,10 +10,11 @@
 /* Slot s of particle i: its neighbour (returned), its table entry (*k: ~k for the reversed
  * pair), V_j grad_i W_ij (w), and the pair's factor G_ij / ((v_i - v_j) . w) of eq. 60 (g)
  * and Laplacian weight of eq. 62 (l).  From the offset table: entry k, or ~k for the
- * reversed pair (w_ji = -w_ij), a few hundred entries that stay in the L1 cache.  Built with -DSPH_CUDA_RECOMPUTE, from the
- * reference positions instead, as the set-up computes the table (runtime/setup.c): no table
- * entry per pair but X_j and a kernel evaluation, the other layout docs/cuda.md weighs
- * (bench/cuda times both).  What a pass does not use of it the compiler drops. */
+ * reversed pair (w_ji = -w_ij), a few hundred entries that stay in the L1 cache.  Built with
+ * -DSPH_CUDA_RECOMPUTE, from the reference positions instead, as the set-up computes the
+ * table (runtime/setup.c): no table entry per pair but X_j and a kernel evaluation, the other
+ * layout docs/cuda.md weighs (bench/cuda times both).  What a pass does not use of it the
+ * compiler drops. */
 SPH_FN int @B@_pair(const sph_body *b, int i, int s, int *k, sph_real w[@DIM@], sph_real *g,
                     sph_real *l)
 {
@@ -64,7 +65,9 @@ static void @B@_stress_pass(sph_body *b)
     const double *u = sph_cuda_components(b->u, b->us, b->n, D); /* SPH_VEC */
     SPH_FOR(i, b->nown, {
         const size_t n = (size_t)b->n;
-        double A[D * D] = {0};
+        double A[D * D] = {0}, ui[D];
+        for (int r = 0; r < D; r++)
+            ui[r] = u[SPH_VEC(i, r, D, n)];
 //@if FRACTURE
         double lap = 0; /* the Laplacian of the phase field (eq. 62) over the same pairs */
 //@endif
@@ -74,7 +77,7 @@ static void @B@_stress_pass(sph_body *b)
             const int j = @B@_pair(b, i, s, &k, w, &g, &l);
             for (int r = 0; r < D; r++)
                 for (int c = 0; c < D; c++)
-                    A[r * D + c] += (u[SPH_VEC(j, r, D, n)] - u[SPH_VEC(i, r, D, n)]) * w[c];
+                    A[r * D + c] += (u[SPH_VEC(j, r, D, n)] - ui[r]) * w[c];
 //@if FRACTURE
             lap += l * (b->s[i] - b->s[j]);
 //@endif
@@ -125,6 +128,9 @@ static void @B@_momentum_pass(sph_body *b)
             for (int c = 0; c < D; c++)
                 Ci[r * D + c] = b->Cv[SPH_TENSOR(i, r, c, D, n)];
         const sph_real Csi = b->Cs[i];
+        double vi[D];
+        for (int r = 0; r < D; r++)
+            vi[r] = v[SPH_VEC(i, r, D, n)];
         sph_real pv = 0;
 //@endif
         sph_real fi[D] = {0};
@@ -147,7 +153,7 @@ static void @B@_momentum_pass(sph_body *b)
                 fv[r] = 0;
                 for (int c = 0; c < D; c++)
                     fv[r] += (Ci[r * D + c] + b->Cv[SPH_TENSOR(j, r, c, D, n)]) * w[c];
-                vw += (sph_real)(v[SPH_VEC(i, r, D, n)] - v[SPH_VEC(j, r, D, n)]) * fv[r];
+                vw += (sph_real)(vi[r] - v[SPH_VEC(j, r, D, n)]) * fv[r];
             }
             const sph_real cs = Csi + b->Cs[j];
             /* hpi = pi / 2 on approach, the factors folded (templates/body_forces.c) */
