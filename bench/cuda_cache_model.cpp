@@ -102,7 +102,10 @@ struct layout {
 };
 
 /* Array a of the trace lives at its own address range. */
-static uint64_t at(int a, size_t index, size_t bytes) { return ((uint64_t)a << 40) + index * bytes; }
+static uint64_t at(int a, size_t index, size_t bytes)
+{
+    return ((uint64_t)a << 40) + index * bytes;
+}
 
 /* One pass over G groups: mom = 1 the momentum pass's loads, 0 the stress pass's. */
 static void trace(const layout &L, size_t n, int ntab, int mom, size_t l1, int resident,
@@ -151,12 +154,13 @@ static void trace(const layout &L, size_t n, int ntab, int mom, size_t l1, int r
                         const int k = L.kk[base + i];
                         return (size_t)(k < 0 ? ~k : k);
                     };
-                    load(3, [&](size_t i) { return entry(i) * 4; }, sizeof(sph_real)); /* wtab row */
+                    load(3, [&](size_t i) { return entry(i) * 4; }, sizeof(sph_real)); /* wtab */
                     load(4, entry, sizeof(sph_real)); /* gtab */
                     auto j = [&](size_t i) { return (size_t)L.nb[base + i]; };
                     if (!mom) {
                         for (int r = 0; r < 3; r++) /* u */
-                            load(5, [&](size_t i) { return L.soa ? r * n + j(i) : j(i) * 3 + r; }, 8);
+                            load(5, [&](size_t i) { return L.soa ? r * n + j(i) : j(i) * 3 + r; },
+                                 8);
                         continue;
                     }
                     for (int e = 0; e < 9; e++) { /* Q and Cv entry by entry (SPH_TENSOR) */
@@ -236,7 +240,8 @@ int main(int argc, char **argv)
             key.nb[to] = k[from] == h->ntab ? (int)i : nb[from], key.kk[to] = k[from];
             if (k[from] != h->ntab) {
                 last = r + 1;
-                packed.nb[(size_t)fill * n + i] = nb[from], packed.kk[(size_t)fill * n + i] = k[from];
+                packed.nb[(size_t)fill * n + i] = nb[from];
+                packed.kk[(size_t)fill * n + i] = k[from];
                 fill++;
             }
         }

@@ -62,7 +62,7 @@ static void @B@_stress_pass(sph_body *b)
     };
     sph_cuda_halo(b, halo_in, sizeof halo_in / sizeof *halo_in);
 //@endif
-    const double *u = sph_cuda_components(b->u, b->us, b->n, D); /* SPH_VEC */
+    const double *u = sph_cuda_components(b->u, b->us, b->n, D); /* u_x of all, u_y, ... */
     SPH_FOR(i, b->nown, {
         const size_t n = (size_t)b->n;
         double A[D * D] = {0}, ui[D];
@@ -109,7 +109,7 @@ static void @B@_momentum_pass(sph_body *b)
     sph_cuda_halo(b, halo_in, sizeof halo_in / sizeof *halo_in);
 //@endif
 //@if VISCOSITY
-    const double *v = sph_cuda_components(b->v, b->vs, b->n, D); /* SPH_VEC */
+    const double *v = sph_cuda_components(b->v, b->vs, b->n, D); /* v_x of all, v_y, ... */
     sph_cuda_zero(b->red + SPH_RED_VISC_RATE, 1);
     /* each thread returns its particle's share of the viscous power: one atomic per block */
     SPH_FOR_SUM(i, b->nown, b->red + SPH_RED_VISC_RATE, {
