@@ -1,6 +1,7 @@
 /* cuda_cache_model.cpp — what the CUDA target's pair passes ask of a GPU's L1 cache, worked
  * out on the CPU from a model's real pair lists: a trace of the loads of the momentum and
- * stress passes (templates/body_cuda.cu, 3D) through a model of one multiprocessor's L1.
+ * stress passes (templates/body_cuda.cu) of the model's first body, 2D or 3D, through a
+ * model of one multiprocessor's L1.
  *
  *   cuda_cache_model [--l1 KB] [--resident B] [--block T] [--groups G]
  *
@@ -25,7 +26,7 @@
  * on one multiprocessor (default 2: 128 registers a thread), B blocks far apart in the body
  * (the hardware hands out blocks in turn to 132 multiprocessors).  Their warps run in
  * lockstep, slot by slot; at each slot every warp loads its neighbours' values (the momentum
- * pass: Q and cof(F) L entry by entry, 9 + 9 arrays, v particle by particle, Cs; the stress
+ * pass with viscosity: Q and cof(F) L entry by entry, D*D + D*D arrays, v, Cs; the stress
  * pass: u), its slot's neighbour index and table entry, and the table entry's row.  A warp's
  * load touches the 32-byte sectors its 32 lanes address; the cache holds 128-byte lines of
  * four sectors, 16 ways a set, least recently used out first, KB kilobytes (default 200).
@@ -99,6 +100,7 @@ struct layout {
     int slots = 0;
     bool masks = false; /* read as slot masks (sph_slot) instead of lists */
     bool soa = false;   /* u and v by component (stride n) instead of particle by particle */
+    int dim = 3;        /* the body's: D values of u and v, D * D of Q and Cv a particle */
 };
 
 /* Array a of the trace lives at its own address range. */
@@ -113,6 +115,7 @@ static void trace(const layout &L, size_t n, int ntab, int mom, size_t l1, int r
                   double *lines_per_pair)
 {
     uint64_t hits = 0, misses = 0, lines = 0, pairs = 0;
+    const int D = L.dim;
     const size_t nblocks = (n + block - 1) / block;
     for (int g = 0; g < groups; g++) {
         l1_cache c(l1);
@@ -154,21 +157,21 @@ static void trace(const layout &L, size_t n, int ntab, int mom, size_t l1, int r
                         const int k = L.kk[base + i];
                         return (size_t)(k < 0 ? ~k : k);
                     };
-                    load(3, [&](size_t i) { return entry(i) * 4; }, sizeof(sph_real)); /* wtab */
+                    load(3, [&](size_t i) { return entry(i) * SPH_ROW(D); }, sizeof(sph_real));
                     load(4, entry, sizeof(sph_real)); /* gtab */
                     auto j = [&](size_t i) { return (size_t)L.nb[base + i]; };
                     if (!mom) {
-                        for (int r = 0; r < 3; r++) /* u */
-                            load(5, [&](size_t i) { return L.soa ? r * n + j(i) : j(i) * 3 + r; },
+                        for (int r = 0; r < D; r++) /* u */
+                            load(5, [&](size_t i) { return L.soa ? r * n + j(i) : j(i) * D + r; },
                                  8);
                         continue;
                     }
-                    for (int e = 0; e < 9; e++) { /* Q and Cv entry by entry (SPH_TENSOR) */
+                    for (int e = 0; e < D * D; e++) { /* Q and Cv entry by entry (SPH_TENSOR) */
                         load(6, [&](size_t i) { return e * n + j(i); }, sizeof(sph_real));
                         load(7, [&](size_t i) { return e * n + j(i); }, sizeof(sph_real));
                     }
-                    for (int r = 0; r < 3; r++) /* v */
-                        load(8, [&](size_t i) { return L.soa ? r * n + j(i) : j(i) * 3 + r; }, 8);
+                    for (int r = 0; r < D; r++) /* v */
+                        load(8, [&](size_t i) { return L.soa ? r * n + j(i) : j(i) * D + r; }, 8);
                     load(9, j, sizeof(sph_real)); /* Cs */
                 }
         hits += c.hits, misses += c.misses, lines += c.lines;
@@ -219,7 +222,7 @@ int main(int argc, char **argv)
     int *count = f.count, *nb = f.nb, *k = f.k, slots = f.slots;
     layout off{"offset"}, key{"key"}, packed{"packed"}, masks{"masks"};
     off.nb.assign(nb, nb + (size_t)slots * n), off.kk.assign(k, k + (size_t)slots * n);
-    off.count.assign(count, count + n), off.slots = slots;
+    off.count.assign(count, count + n), off.slots = slots, off.dim = h->dim;
     /* the same slots in key order: each slot's key from any pair it holds */
     std::vector<long> skey(slots, -1);
     for (int s = 0; s < slots; s++)
