@@ -683,14 +683,14 @@ static inline void sph_cuda_halo(sph_body *b, const sph_cuda_field *f, int nf)
     });
 }
 
-/* The slots of a lattice's keys (fixed slots, below): slot_of[key] > 0 marks a key the pairs
- * use on entry and holds its slot on return; returns the number used.  The keys go in the
- * order of their mean offset j - i over the own particles' pairs, so that a warp's next slot
- * reads the neighbours of the last one shifted by a particle or a row, which the L1 cache
- * still holds: on a lattice in slab order the offsets of one plane of the support lie within
- * a few rows, and the slots sweep the planes one by one instead of jumping between j - i and
- * i - j at every table entry (docs/cuda.md).  Keys only pairs with the halo use go last.
- * Built with -DSPH_CUDA_SLOTS_BY_KEY, the slots follow the keys (bench/cuda's A/B).
+/* The slots of a lattice's keys (fixed slots, below): slot_of (nkey, zero on entry) holds
+ * each key's slot on return, -1 for a key no pair uses; returns the number used.  The keys
+ * go in the order of their mean offset j - i over the own particles' pairs, so that a warp's
+ * next slot reads the neighbours of the last one shifted by a particle or a row, which the L1
+ * cache still holds: on a lattice in slab order the offsets of one plane of the support lie
+ * within a few rows, and the slots sweep the planes one by one instead of jumping between
+ * j - i and i - j at every table entry (docs/cuda.md).  Keys only pairs with the halo use go
+ * last.  Built with -DSPH_CUDA_SLOTS_BY_KEY, the slots follow the keys (bench/cuda's A/B).
  * off[key] is the key's offset and *uniform says whether every used key's own pairs have
  * the same one (a box in slab order: j = i + off for every pair). */
 static int sph_slot_ranks(const sph_body *h, size_t nkey, int *slot_of, long *off, int *uniform)
@@ -708,11 +708,14 @@ static int sph_slot_ranks(const sph_body *h, size_t nkey, int *slot_of, long *of
             off[key + 1] = std::min(off[key + 1], -d), hi[key + 1] = std::max(hi[key + 1], -d);
             sum[key] += (double)d, sum[key + 1] -= (double)d, cnt[key]++, cnt[key + 1]++;
         }
+    for (size_t i = 0; h->xb_start && i < (size_t)h->nown; i++) /* pairs with the halo */
+        for (int p = h->xb_start[i]; p < h->xb_start[i + 1]; p++)
+            slot_of[2 * (size_t)h->xb_k[p]] = 1;
     int used = 0;
     size_t *order = (size_t *)malloc((nkey + 1) * sizeof(size_t));
     *uniform = 1;
     for (size_t key = 0; key < nkey; key++)
-        if (slot_of[key]) {
+        if (cnt[key] || slot_of[key]) {
             order[used++] = key;
             *uniform = *uniform && cnt[key] && off[key] == hi[key];
         }
@@ -738,22 +741,17 @@ struct sph_full {
     int *off, *slotk;              /* and the slots' offsets and table entries */
 };
 
-/* The slot masks of a body whose every pair lies at j = i + off[key] (slot_of from
+/* The slot masks of a body whose every pair lies at j = i + f->off[its slot] (slot_of from
  * sph_slot_ranks): bit s & 31 of word (s >> 5)*n + i says whether particle i has slot s's
  * neighbour, and count[i] is its last slot + 1 (holes before it included). */
-static void sph_slot_masks(const sph_body *h, size_t nkey, const int *slot_of, const long *off,
-                           int used, sph_full *f)
+static void sph_slot_masks(const sph_body *h, size_t nkey, const int *slot_of, sph_full *f)
 {
-    const size_t n = (size_t)h->n, words = ((size_t)used + 31) / 32;
-    f->slots = used, f->nb = f->k = NULL;
+    const size_t n = (size_t)h->n, words = ((size_t)f->slots + 31) / 32;
     f->mask = (unsigned *)calloc(words * n + 1, sizeof(unsigned));
-    f->off = (int *)malloc((size_t)used * sizeof(int));
-    f->slotk = (int *)malloc((size_t)used * sizeof(int));
+    f->slotk = (int *)malloc(((size_t)f->slots + 1) * sizeof(int));
     for (size_t key = 0; key < nkey; key++)
-        if (slot_of[key] >= 0) {
-            f->off[slot_of[key]] = (int)off[key];
+        if (slot_of[key] >= 0)
             f->slotk[slot_of[key]] = key & 1 ? ~(int)(key >> 1) : (int)(key >> 1);
-        }
     for (size_t i = 0; i < (size_t)h->nown; i++)
         for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++) {
             const int s = slot_of[2 * (size_t)h->hb_k[p]], r = slot_of[2 * (size_t)h->hb_k[p] + 1];
@@ -794,22 +792,6 @@ static size_t *sph_pair_starts(const sph_body *h, int *count, int *maxc)
     return start;
 }
 
-/* The keys the pairs use, marked 1 among nkey (sph_slot_ranks ranks them), or NULL when
- * there can be many (not one per offset: off a lattice). */
-static int *sph_used_keys(const sph_body *h, size_t nkey, int maxc)
-{
-    if (nkey > 4 * (size_t)maxc + 4)
-        return NULL;
-    int *used = (int *)calloc(nkey, sizeof(int));
-    for (size_t i = 0; i < (size_t)h->nown; i++) {
-        for (int p = h->hb_start[i]; p < h->hb_start[i + 1]; p++)
-            used[2 * (size_t)h->hb_k[p]] = used[2 * (size_t)h->hb_k[p] + 1] = 1;
-        for (int p = h->xb_start ? h->xb_start[i] : 0; h->xb_start && p < h->xb_start[i + 1]; p++)
-            used[2 * (size_t)h->xb_k[p]] = 1;
-    }
-    return used;
-}
-
 /* Every pair from both sides, packed as key << 32 | j in each particle's range of start. */
 static uint64_t *sph_packed_pairs(const sph_body *h, const size_t *start)
 {
@@ -830,24 +812,19 @@ static uint64_t *sph_packed_pairs(const sph_body *h, const size_t *start)
     return packed;
 }
 
-/* The lists nb and k of f from the packed pairs: with fixed slots (slot_of, off: the slots and
- * offsets of the keys) each pair in its key's slot, the rest holes; else packed from slot 0. */
+/* The lists nb and k of f from the packed pairs: with fixed slots (slot_of, and f->off the
+ * slots' offsets) each pair in its key's slot, the rest holes; else packed from slot 0. */
 static void sph_slot_lists(const sph_body *h, const size_t *start, uint64_t *packed,
-                           const int *slot_of, const long *off, size_t nkey, sph_full *f)
+                           const int *slot_of, sph_full *f)
 {
     const size_t n = (size_t)h->n, slots = (size_t)f->slots;
     int *nb = f->nb = (int *)malloc((slots * n + 1) * sizeof(int));
     int *k = f->k = (int *)malloc((slots * n + 1) * sizeof(int));
-    int *hole = (int *)calloc(slots + 1, sizeof(int)); /* each fixed slot's offset */
-    for (size_t key = 0; slot_of && key < nkey; key++)
-        if (slot_of[key] >= 0)
-            hole[slot_of[key]] = (int)off[key];
 #pragma omp parallel for schedule(static)
     for (size_t e = 0; e < slots * n; e++) { /* holes: sph_hole and the zero entry */
         const int i = (int)(e % n);
-        nb[e] = slot_of ? sph_hole(i, hole[e / n], h->nown) : i, k[e] = h->ntab;
+        nb[e] = slot_of ? sph_hole(i, f->off[e / n], h->nown) : i, k[e] = h->ntab;
     }
-    free(hole);
 #pragma omp parallel for schedule(dynamic, 1024)
     for (size_t i = 0; i < n; i++) {
         std::sort(packed + start[i], packed + start[i + 1]);
@@ -884,22 +861,30 @@ static void sph_full_lists(const sph_body *h, sph_full *f)
     f->count = (int *)malloc((n + 1) * sizeof(int));
     f->nb = f->k = NULL, f->mask = NULL, f->off = f->slotk = NULL;
     size_t *start = sph_pair_starts(h, f->count, &maxc);
-    int *slot_of = sph_used_keys(h, nkey, maxc);
+    /* few keys (one per offset: a lattice): fixed slots, if holes fill at most half of them */
+    int *slot_of = nkey <= 4 * (size_t)maxc + 4 ? (int *)calloc(nkey, sizeof(int)) : NULL;
     long *off = slot_of ? (long *)calloc(nkey, sizeof(long)) : NULL;
     if (slot_of)
         used = sph_slot_ranks(h, nkey, slot_of, off, &uniform);
-    if (slot_of && used > maxc + maxc / 2) /* fixed slots: holes at most half the slots */
+    if (slot_of && used > maxc + maxc / 2)
         free(slot_of), slot_of = NULL;
+    f->slots = slot_of ? used : maxc;
+    if (slot_of) { /* each slot's offset: the masks' neighbours, the lists' holes */
+        f->off = (int *)calloc((size_t)used + 1, sizeof(int));
+        for (size_t key = 0; key < nkey; key++)
+            if (slot_of[key] >= 0)
+                f->off[slot_of[key]] = (int)off[key];
+    }
 #ifdef SPH_CUDA_LISTS
     uniform = 0; /* lists for every body */
 #endif
     if (slot_of && uniform && !h->xb_start)
-        sph_slot_masks(h, nkey, slot_of, off, used, f);
+        sph_slot_masks(h, nkey, slot_of, f);
     else {
-        f->slots = slot_of ? used : maxc;
         uint64_t *packed = sph_packed_pairs(h, start);
-        sph_slot_lists(h, start, packed, slot_of, off, nkey, f);
+        sph_slot_lists(h, start, packed, slot_of, f);
         free(packed);
+        free(f->off), f->off = NULL; /* (the device reads the lists) */
     }
     free(start), free(slot_of), free(off);
 }

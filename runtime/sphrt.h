@@ -559,10 +559,11 @@ struct sph_body {
      * particles (where a particle lacks that neighbour, near a surface or a notch, the slot
      * holds a particle near i + the offset, sph_hole, and the zero table entry ntab the
      * device tables end with), so a warp's threads at one slot read j = i + const,
-     * consecutive words; off a lattice each particle's pairs are packed and sorted by entry.  Where every pair of a body lies
-     * at i + its slot's offset (a box), fb and fb_k are NULL and fb_mask holds the pairs:
-     * bit s & 31 of fb_mask[(s >> 5)*n + i] says whether particle i has slot s's neighbour
-     * i + fb_off[s], of table entry fb_slotk[s] (sph_slot, sph_cuda.h).  NULL on the CPU. */
+     * consecutive words; off a lattice each particle's pairs are packed and sorted by entry.
+     * Where every pair of a body lies at i + its slot's offset (a box), fb and fb_k are NULL
+     * and fb_mask holds the pairs: bit s & 31 of fb_mask[(s >> 5)*n + i] says whether
+     * particle i has slot s's neighbour i + fb_off[s], of table entry fb_slotk[s] (sph_slot,
+     * sph_cuda.h).  NULL on the CPU. */
     int *fb_count, *fb, *fb_k;
     unsigned *fb_mask;
     int *fb_off, *fb_slotk;
