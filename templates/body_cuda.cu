@@ -75,9 +75,10 @@ static void @B@_stress_pass(sph_body *b)
             sph_real w[D], g, l;
             int k;
             const int j = @B@_pair(b, i, s, &k, w, &g, &l);
+            double d[D]; /* u_j - u_i */
             for (int r = 0; r < D; r++)
-                for (int c = 0; c < D; c++)
-                    A[r * D + c] += (u[SPH_VEC(j, r, D, n)] - ui[r]) * w[c];
+                d[r] = u[SPH_VEC(j, r, D, n)] - ui[r];
+            @B@_gradient_term_d(A, d, w);
 //@if FRACTURE
             lap += l * (b->s[i] - b->s[j]);
 //@endif
@@ -138,36 +139,19 @@ static void @B@_momentum_pass(sph_body *b)
             sph_real w[D], g, l;
             int k;
             const int j = @B@_pair(b, i, s, &k, w, &g, &l);
-            sph_real f[D];
-            for (int r = 0; r < D; r++) {
-                sph_real s2 = 0;
-                for (int c = 0; c < D; c++)
-                    s2 += (Qi[r * D + c] + b->Q[SPH_TENSOR(j, r, c, D, n)]) * w[c];
-                f[r] = s2 * inv_rho;
-            }
-//@if VISCOSITY
-            /* G_ij along the viscous direction fv = (cof F_i + cof F_j) w, scaled by the
-             * pair's mean Cs, as in templates/body_forces.c */
-            sph_real fv[D], vw = 0;
-            for (int r = 0; r < D; r++) {
-                fv[r] = 0;
-                for (int c = 0; c < D; c++)
-                    fv[r] += (Ci[r * D + c] + b->Cv[SPH_TENSOR(j, r, c, D, n)]) * w[c];
-                vw += (sph_real)(vi[r] - v[SPH_VEC(j, r, D, n)]) * fv[r];
-            }
-            const sph_real cs = Csi + b->Cs[j];
-            /* hpi = pi / 2 on approach, the factors folded (templates/body_forces.c) */
-//@if BETA2
-            const sph_real g2 = g * (sph_real)0.5 * cs * vw;
-            const sph_real d = g2 - fabs(g2); /* 4 min(G, 0) */
-            const sph_real hpi = d * ((sph_real)(-0.125 * @BETA1@ * @C0@) + d * (sph_real)(0.03125 * @BETA2@));
-//@else
-            const sph_real x = g * (sph_real)(-0.125 * @BETA1@ * @C0@) * cs * vw;
-            const sph_real hpi = x > 0 ? x : 0;
-//@endif
+            sph_real Qj[D * D], f[D];
             for (int r = 0; r < D; r++)
-                f[r] -= hpi * fv[r];
-            pv -= hpi * vw;
+                for (int c = 0; c < D; c++)
+                    Qj[r * D + c] = b->Q[SPH_TENSOR(j, r, c, D, n)];
+            @B@_momentum_term_@RS@(Qi, Qj, w, inv_rho, f);
+//@if VISCOSITY
+            sph_real Cj[D * D], dv[D];
+            for (int r = 0; r < D; r++) {
+                for (int c = 0; c < D; c++)
+                    Cj[r * D + c] = b->Cv[SPH_TENSOR(j, r, c, D, n)];
+                dv[r] = (sph_real)(vi[r] - v[SPH_VEC(j, r, D, n)]);
+            }
+            pv += @B@_viscosity_term_@RS@(Ci, Cj, Csi + b->Cs[j], dv, w, g, f);
 //@endif
 //@if PAIR_TERMS
             @B@_pair_terms(b, i, j, k < 0 ? ~k : k, f); /* also with SPH_CUDA_RECOMPUTE */

@@ -96,17 +96,16 @@ static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
  * instead of the half lists.  Block B's particles i0 .. i0 + 7 in the lanes of vectors of
  * eight; a task of the block is one offset j - i and one table entry w, the same for the
  * lanes of its mask, so u_j - u_i is one unaligned vector load from u by component (copied
- * into b->ob_u first) less u_i, and its product with w nine multiply-adds into A's nine
- * entries, which stay in registers over the block's tasks and are written once (a lane not
- * in the mask adds zeros).  Each pair is summed from both of its particles, the full lists,
+ * into b->ob_u first) less u_i, and its product with w (@B@_gradient_term_v8) nine
+ * multiply-adds into A's nine entries, which stay in registers over the block's tasks and
+ * are written once (a lane not in the mask adds zeros).  Each pair is summed from both of its particles, the full lists,
  * and nothing is written to j: no stripes.  Overwrites A_i of own particles with the sums
  * of their own pairs (the sums of the lists, in another order).  The Taylor bar's stress
  * pass (this in it) took 0.6 of its time with the half lists, its step 0.84 (one thread). */
 static void @B@_gradient_blocks(sph_body *b)
 {
-    typedef double dv8 __attribute__((vector_size(SPH_OB_LANES * sizeof(double)),
-                                      aligned(sizeof(double)), may_alias));
-    typedef long long lv8 __attribute__((vector_size(SPH_OB_LANES * sizeof(long long))));
+    typedef @B@_v8 dv8;
+    typedef @B@_v8m lv8;
     enum { D = 3, R = SPH_ROW(D) };
     const int n = b->nown, S = b->ob_stride;
     const double *restrict u = b->u;
@@ -127,14 +126,14 @@ static void @B@_gradient_blocks(sph_body *b)
         for (int r = 0; r < D; r++)
             ui[r] = *(const dv8 *)(U + (size_t)r * S + i0);
         for (int t = os[B]; t < os[B + 1]; t++) {
-            const sph_real *w = wtab + (size_t)(ob[t].key >> 8) * R;
+            const sph_real *wk = wtab + (size_t)(ob[t].key >> 8) * R;
+            const double w[D] = {wk[0], wk[1], wk[2]};
             const lv8 in = (lane & (long long)(ob[t].key & 255)) != 0;
             const double *uj = U + i0 + ob[t].off;
-            for (int r = 0; r < D; r++) {
-                const dv8 d = (dv8)((lv8)(*(const dv8 *)(uj + (size_t)r * S) - ui[r]) & in);
-                for (int c = 0; c < D; c++)
-                    a[r * D + c] += d * (double)w[c];
-            }
+            dv8 d[D]; /* u_j - u_i, zero in the lanes without the pair */
+            for (int r = 0; r < D; r++)
+                d[r] = (dv8)((lv8)(*(const dv8 *)(uj + (size_t)r * S) - ui[r]) & in);
+            @B@_gradient_term_v8(a, d, w);
         }
         for (int l = 0; l < SPH_OB_LANES && i0 + l < n; l++)
             for (int r = 0; r < D; r++)
@@ -494,23 +493,8 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
         /* Cs_i + Cs_j, in 3D from the columns' padding entries (@B@_spare_Cs; fv's padding
          * entry, and so f's, is not a number anything reads) */
         const sph_real cs = R > D ? (Ci[0] + Cj[0])[R - 1] : Csi + Cs[j];
-        /* hpi = pi / 2 of eq. 58 (times rho0) on approach (G < 0), zero as the pair separates
-         * (Monaghan and Gingold's viscosity, the paper's [61]): pi = -beta1 c0 G + beta2 G^2,
-         * G = gtab vw (Cs_i + Cs_j) / 4, the constant factors folded.  What does not wait for
-         * vw is multiplied first: the pass is as slow as its longest chain of dependent
-         * operations, and one product more on the way from vw to hpi cost the 3D cases' pass
-         * a third.  The select picks between two values, not two products, which the compiler
-         * makes a compare-and-move: a branch there (taken for about every other pair, at
-         * random) cost the 3D column's momentum pass a quarter of its time. */
-//@if BETA2
-        const sph_real g = gtab[k] * (sph_real)0.5 * cs * vw;
-        const sph_real d = g - fabs(g); /* 2 G - 2 |G| = 4 min(G, 0) */
-        const sph_real hpi = d * ((sph_real)(-0.125 * @BETA1@ * @C0@) + d * (sph_real)(0.03125 * @BETA2@));
-//@else
-        const sph_real gc = gtab[k] * (sph_real)(-0.125 * @BETA1@ * @C0@) * cs;
-        const sph_real x = gc * vw; /* hpi, either way */
-        const sph_real hpi = x > 0 ? x : 0;
-//@endif
+        /* half the viscous pressure (eq. 58-60; templates/physics/pairs.c) */
+        const sph_real hpi = @B@_viscous_pressure_@RS@(gtab[k], cs, vw);
         f -= hpi * fv;
         pv -= hpi * vw;
 //@endif
@@ -568,10 +552,7 @@ static void @B@_momentum_halo_pairs(sph_body *b)
 }
 
 //@endif
-//@if DIM3
-//@else
-//@if PAIR_TERMS
-//@else
+//@if STENCIL_MOMENTUM
 /* Run particles a .. e - 1 of the lattice stencil (runtime/stencil.c): by the stencil in
  * vectors (@B@_stencil_momentum, body_stencil.c), and the last few, fewer than a vector's
  * four, pair by pair along the stencil's offsets (not their half lists, whose cache lines
@@ -598,7 +579,6 @@ static void @B@_stencil_momentum_run(sph_body *b, int a, int e, double *power)
 }
 
 //@endif
-//@endif
 /* The pairs of stripe s's particles (their half lists); returns their viscous power,
  * f_visc . (v_i - v_j) summed over them. */
 static double @B@_momentum_stripe(sph_body *b, int s)
@@ -608,21 +588,14 @@ static double @B@_momentum_stripe(sph_body *b, int s)
     double *restrict acc = b->a;
     double power = 0;
     const int end = b->stripe[s + 1];
-//@if DIM3
-//@else
-//@if PAIR_TERMS
-//@else
+//@if STENCIL_MOMENTUM
     /* with the lattice stencil: its runs by the stencil, the rest by the rest lists */
     int r = sph_run_after(b, b->stripe[s]), c = b->rest ? sph_rest_after(b, b->stripe[s]) : 0;
-//@endif
 //@endif
     for (int i = b->stripe[s]; i < end; i++) {
         int p0 = hs[i], p1 = hs[i + 1];
         const int *lj = hb, *lk = hk;
-//@if DIM3
-//@else
-//@if PAIR_TERMS
-//@else
+//@if STENCIL_MOMENTUM
         while (r < b->nruns && b->st_run[2 * r + 1] <= i)
             r++;
         if (r < b->nruns && b->st_run[2 * r] <= i) {
@@ -636,7 +609,6 @@ static double @B@_momentum_stripe(sph_body *b, int s)
                 c++;
             p0 = b->rest_start[c], p1 = b->rest_start[c + 1], lj = b->rest_j, lk = b->rest_k;
         }
-//@endif
 //@endif
         sph_real pv = 0;
         @B@_vec fi;
@@ -656,14 +628,13 @@ static double @B@_momentum_stripe(sph_body *b, int s)
  * pair once): Q, cof F, Cs and v of the 8 j are unaligned loads from their copies by
  * component (b->mb_soa, @B@_momentum_copy), the block's own values and its three sums stay
  * in registers over its tasks, and j's share is subtracted from j's sums by component, as
- * the lists do.  A lane not in the mask adds zeros (its force and viscous power masked).
- * The same forces as @B@_momentum_pairs, in vectors of eight pairs instead of one pair in
- * vectors of four: the Taylor bar's momentum pass took about 0.8 of its time. */
+ * the lists do.  The pair terms are those of every layout (templates/physics/pairs.c, _v8:
+ * eight pairs in a vector); a lane not in the mask adds zeros (its Cs_i + Cs_j and force
+ * masked).  The Taylor bar's momentum pass took about 0.8 of the lists' time. */
 static double @B@_momentum_blocks(sph_body *b, int s)
 {
-    typedef double dv8 __attribute__((vector_size(SPH_OB_LANES * sizeof(double)),
-                                      aligned(sizeof(double)), may_alias));
-    typedef long long lv8 __attribute__((vector_size(SPH_OB_LANES * sizeof(long long))));
+    typedef @B@_v8 dv8;
+    typedef @B@_v8m lv8;
     enum { D = 3, R = SPH_ROW(D) };
     const size_t S = (size_t)b->mb_stride;
     double *const M = b->mb_soa + b->mb_pad; /* row k from M + k S */
@@ -674,7 +645,6 @@ static double @B@_momentum_blocks(sph_body *b, int s)
     const sph_real *restrict wtab = b->wtab, *restrict gtab = b->gtab;
     const double inv_rho = 1.0 / b->rho0;
     const lv8 lane = {1, 2, 4, 8, 16, 32, 64, 128};
-    const dv8 zero = {0};
     dv8 pv = {0};
     for (int B = b->mb_stripe[s]; B < b->mb_stripe[s + 1]; B++) {
         const int i = b->mb_i0[B];
@@ -688,25 +658,19 @@ static double @B@_momentum_blocks(sph_body *b, int s)
         for (int t = b->mb_start[B]; t < b->mb_start[B + 1]; t++) {
             const int j = i + mb[t].off, k = (int)(mb[t].key >> 8);
             const lv8 in = (lane & (long long)(mb[t].key & 255)) != 0;
-            const double w0 = wtab[(size_t)k * R], w1 = wtab[(size_t)k * R + 1],
-                         w2 = wtab[(size_t)k * R + 2];
-            dv8 f[D], fv[D]; /* (Q_i + Q_j) w and (cof F_i + cof F_j) w, row by row */
+            const double w[D] = {wtab[(size_t)k * R], wtab[(size_t)k * R + 1],
+                                 wtab[(size_t)k * R + 2]};
+            dv8 qj[D * D], cj[D * D], dv[D], f[D];
+            for (int e = 0; e < D * D; e++)
+                qj[e] = *(const dv8 *)(Q + e * S + j), cj[e] = *(const dv8 *)(C + e * S + j);
+            for (int r = 0; r < D; r++)
+                dv[r] = vi[r] - *(const dv8 *)(v + r * S + j);
+            @B@_momentum_term_v8(qi, qj, w, inv_rho, f);
+            /* Cs_i + Cs_j zero in the lanes without the pair: no viscous pressure there */
+            const dv8 cs = (dv8)((lv8)(csi + *(const dv8 *)(Cs + j)) & in);
+            pv += @B@_viscosity_term_v8(ci, cj, cs, dv, w, gtab[k], f);
             for (int r = 0; r < D; r++) {
-                const double *Qr = Q + (size_t)(D * r) * S + j, *Cr = C + (size_t)(D * r) * S + j;
-                f[r] = (qi[D * r] + *(const dv8 *)Qr) * w0 + (qi[D * r + 1] + *(const dv8 *)(Qr + S)) * w1 +
-                       (qi[D * r + 2] + *(const dv8 *)(Qr + 2 * S)) * w2;
-                fv[r] = (ci[D * r] + *(const dv8 *)Cr) * w0 + (ci[D * r + 1] + *(const dv8 *)(Cr + S)) * w1 +
-                        (ci[D * r + 2] + *(const dv8 *)(Cr + 2 * S)) * w2;
-            }
-            /* (v_i - v_j) . fv and hpi as in @B@_momentum_pairs, eight pairs at a time */
-            dv8 vw = (vi[0] - *(const dv8 *)(v + j)) * fv[0];
-            for (int r = 1; r < D; r++)
-                vw += (vi[r] - *(const dv8 *)(v + r * S + j)) * fv[r];
-            const dv8 x = (double)gtab[k] * (-0.125 * @BETA1@ * @C0@) * (csi + *(const dv8 *)(Cs + j)) * vw;
-            const dv8 hpi = (dv8)((lv8)(x > zero) & (lv8)x & in);
-            pv -= hpi * vw;
-            for (int r = 0; r < D; r++) {
-                const dv8 fr = (dv8)((lv8)(f[r] * inv_rho - hpi * fv[r]) & in);
+                const dv8 fr = (dv8)((lv8)f[r] & in);
                 fi[r] += fr;
                 double *aj = a + r * S + j;
                 if (m == SPH_OB_LANES)

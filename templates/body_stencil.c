@@ -55,9 +55,8 @@ static void @B@_stencil_gradient_one(sph_body *b, int i)
 }
 
 #ifndef SPH_SINGLE
-typedef double @B@_v8 __attribute__((vector_size(64), aligned(8), may_alias));
+/* (@B@_v8, eight doubles: templates/physics/pairs.c) */
 typedef double @B@_v4 __attribute__((vector_size(32), aligned(8), may_alias));
-typedef long long @B@_v8m __attribute__((vector_size(64)));
 #endif
 
 /* Particles a .. e - 1 of a run: @B@_stencil_gradient_one's sums, four particles at a time
@@ -113,8 +112,7 @@ static void @B@_stencil_gradient(sph_body *b, int i0, int i1)
     }
 }
 
-//@if PAIR_TERMS
-//@else
+//@if STENCIL_MOMENTUM
 /* The momentum pass (eq. 55, 57-60; @B@_momentum_pairs has the physics and its comments) on
  * the half lists of run particles a .. a + 4 t - 1 (at most @B@_STENCIL particles; the rest
  * of a run goes by the lists): offset by offset, each pair's force added to i, and after
@@ -138,7 +136,6 @@ static int @B@_stencil_momentum(sph_body *b, int a, int e, double *power)
     double f_run[2 * @B@_STENCIL]; /* the offset's forces on i, x and y */
 //@if VISCOSITY
     typedef @B@_v4 v4;
-    typedef @B@_v8m v8m;
     const double *restrict Cv = b->Cv, *restrict Cs = b->Cs, *restrict v = b->v;
     v8 pv = {0}; /* (each pair's twice: x and y lanes) */
 //@endif
@@ -147,11 +144,7 @@ static int @B@_stencil_momentum(sph_body *b, int a, int e, double *power)
         const double w0 = b->wtab[2 * k], w1 = b->wtab[2 * k + 1];
         const v8 w = {w0, w0, w1, w1, w0, w0, w1, w1};
 //@if VISCOSITY
-//@if BETA2
-        const double g = b->gtab[k] * 0.5;
-//@else
-        const double gc = b->gtab[k] * (-0.125 * @BETA1@ * @C0@);
-//@endif
+        const double g = b->gtab[k];
 //@endif
         for (int i = a; i < a + t; i += 4) {
             const int j = i + o;
@@ -169,14 +162,9 @@ static int @B@_stencil_momentum(sph_body *b, int a, int e, double *power)
             const v8 vw = p + __builtin_shufflevector(p, p, 1, 0, 3, 2, 5, 4, 7, 6);
             const v4 cs4 = *(const v4 *)(Cs + i) + *(const v4 *)(Cs + j);
             const v8 cs = __builtin_shufflevector(cs4, cs4, 0, 0, 1, 1, 2, 2, 3, 3);
-//@if BETA2
-            const v8 gg = g * cs * vw;
-            const v8 d = gg - (v8)((v8m)gg & ~(v8m)(v8){-0.0, -0.0, -0.0, -0.0, -0.0, -0.0, -0.0, -0.0});
-            const v8 hpi = d * ((-0.125 * @BETA1@ * @C0@) + d * (0.03125 * @BETA2@));
-//@else
-            const v8 x = gc * cs * vw;
-            const v8 hpi = (v8)((v8m)x & (x > 0)); /* max(x, 0) */
-//@endif
+            /* half the viscous pressure, each pair's in its x and y lanes (eq. 58-60,
+             * templates/physics/pairs.c) */
+            const v8 hpi = @B@_viscous_pressure_v8(g, cs, vw);
             f -= hpi * fv;
             pv -= hpi * vw;
 //@endif

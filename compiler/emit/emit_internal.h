@@ -18,6 +18,8 @@ typedef enum {
     PIECE_LAW,      /* its material law (emit_functions.c) */
     PIECE_GRAVITY,  /* its gravity as a table the passes read */
     PIECE_TEMPLATE, /* a file of templates/ filled for it */
+    PIECE_LANES,    /* a file of templates/ filled for it once per element type its loops
+                     * use (the pair terms: emit_body.c) */
     PIECE_BCS,      /* its boundary-condition values and passes */
     PIECE_RESTRICT, /* the lower bound of its phase field */
     PIECE_END
@@ -25,7 +27,7 @@ typedef enum {
 
 typedef struct {
     PieceKind kind;
-    const char *file; /* PIECE_TEMPLATE */
+    const char *file; /* PIECE_TEMPLATE, PIECE_LANES */
 } BodyPiece;
 
 /* What differs between the targets; every member must be set (emit_program checks). */
@@ -76,6 +78,9 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p);
 /* ---- a body's templates (emit_body.c) */
 /* templates/FILE filled for body b (its features and numbers); -1 after reporting. */
 int emit_template(Emitter *E, const char *file, const BodyModel *b, const BodyPlan *p);
+/* templates/FILE filled once for each element type body b's pair loops use; -1 after
+ * reporting. */
+int emit_template_lanes(Emitter *E, const char *file, const BodyModel *b, const BodyPlan *p);
 void emit_gravity(Emitter *E, const BodyModel *b, const BodyPlan *p);
 
 /* ---- boundary conditions (emit_bcs.c) */

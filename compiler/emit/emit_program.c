@@ -33,6 +33,7 @@ static int body_piece(Emitter *E, const BodyPiece *piece, const BodyModel *b, co
     case PIECE_LAW: emit_material(E, b, p); return 0;
     case PIECE_GRAVITY: emit_gravity(E, b, p); return 0;
     case PIECE_TEMPLATE: return emit_template(E, piece->file, b, p);
+    case PIECE_LANES: return emit_template_lanes(E, piece->file, b, p);
     case PIECE_BCS: emit_bc_passes(E, b, p); return 0;
     case PIECE_RESTRICT: emit_fracture_restrict(E, b); return 0;
     case PIECE_END: return 0;

@@ -74,6 +74,7 @@ static const BodyPiece BODY_CPU[] = {
     {PIECE_LAW, NULL},
     {PIECE_GRAVITY, NULL},
     {PIECE_TEMPLATE, "body_particle.c"},
+    {PIECE_LANES, "physics/pairs.c"},
     {PIECE_TEMPLATE, "body_pairs.c"},
     {PIECE_TEMPLATE, "body_stencil.c"},
     {PIECE_TEMPLATE, "body_forces.c"},
@@ -137,6 +138,7 @@ static void pass_cuda(FILE *out, const char *body, const char *pass, const char 
 static const BodyPiece BODY_CUDA[] = {
     {PIECE_LAW, NULL},
     {PIECE_TEMPLATE, "body_particle.c"},
+    {PIECE_LANES, "physics/pairs.c"},
     {PIECE_TEMPLATE, "body_cuda.cu"},
     {PIECE_TEMPLATE, "body_output.c"},
     {PIECE_BCS, NULL},

@@ -32,6 +32,11 @@ void tpl_set(TplEnv *e, const char *key, const char *fmt, ...)
 
 void tpl_switch(TplEnv *e, const char *name, int on)
 {
+    for (int i = 0; i < e->nswitches; i++)
+        if (!strcmp(e->switches[i].name, name)) {
+            e->switches[i].on = on;
+            return;
+        }
     if (e->nswitches == e->switches_cap) {
         e->switches_cap = e->switches_cap ? 2 * e->switches_cap : 32;
         e->switches = realloc(e->switches, (size_t)e->switches_cap * sizeof *e->switches);

@@ -31,7 +31,7 @@ typedef struct {
 
 /* Bind @key@ to the formatted value (a key bound again takes the new value). */
 void tpl_set(TplEnv *e, const char *key, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
-/* Declare switch `name` (a static string), on or off. */
+/* Declare switch `name` (a static string), on or off (declared again: the new state). */
 void tpl_switch(TplEnv *e, const char *name, int on);
 void tpl_free(TplEnv *e);
 

@@ -34,9 +34,12 @@
     X(dim3, NULL, DIM3, m->dim == 3) /* else 2D (plane strain) */                               \
     X(staged, NULL, STAGED, stress_staged(m, r, &p->law)) /* the CPU's stress pass by blocks */ \
     X(rare, NULL, RARE, p->staged && !p->fracture && r->nrare > 0) /* and its law's fast path */ \
-    X(offset_blocks, NULL, OFFSET_BLOCKS, m->dim == 3 && !p->fracture) /* the CPU's gradient */ \
-    X(momentum_blocks, NULL, MOMENTUM_BLOCKS, /* and momentum pass by offset blocks */        \
-      m->dim == 3 && !p->fracture && p->viscosity && !p->beta2 && !p->pair_terms)
+    X(stencil_momentum, NULL, STENCIL_MOMENTUM, /* the CPU's 2D momentum pass by the stencil */ \
+      !layout_stencil_momentum_refused(m, p))                                                  \
+    X(offset_blocks, NULL, OFFSET_BLOCKS, /* the CPU's gradient by offset blocks */            \
+      !layout_gradient_blocks_refused(m, p))                                                   \
+    X(momentum_blocks, NULL, MOMENTUM_BLOCKS, /* and momentum pass (layouts.c) */              \
+      !layout_momentum_blocks_refused(m, p))
 
 /* The numbers of a body's code that the templates read, one row each:
  *
@@ -80,6 +83,16 @@ typedef struct {
     int contact;        /* contact between the bodies (model_has_contact) */
     int fracture;       /* some body has phase-field fracture */
 } Plan;
+
+/* Why the CPU's offset blocks cannot run body p's gradient or momentum pass, or the 2D
+ * lattice stencil its momentum pass (a phrase for --dump=plan), or NULL where they can; the
+ * features above that follow from them are computed first (layouts.c). */
+const char *layout_gradient_blocks_refused(const Model *m, const BodyPlan *p);
+const char *layout_momentum_blocks_refused(const Model *m, const BodyPlan *p);
+const char *layout_stencil_momentum_refused(const Model *m, const BodyPlan *p);
+/* The layout of each of body p's pair passes on the CPU, with its reason (--dump=plan; the
+ * CUDA target's passes go by the device's full lists). */
+void layouts_dump(const Model *m, const BodyPlan *p, FILE *out);
 
 /* Returns 0, or -1 after reporting (and freeing what it built). */
 int lower_model(const Model *m, Plan *plan);

@@ -85,6 +85,7 @@ void plan_dump(const Plan *plan, FILE *out)
         PLAN_FEATURES(PLAN_DUMP)
 #undef PLAN_DUMP
         fputs("\n", out);
+        layouts_dump(m, p, out);
         law_summary(p, b->law, out);
         plan_law_print(p, 0, 0, out);
         if (p->rare) {

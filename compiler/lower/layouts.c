@@ -1,0 +1,71 @@
+/* layouts.c — which loop layout runs each pair pass of a body on the CPU, and why.
+ *
+ * The pair terms are written once (templates/physics/pairs.c); the layouts are the loops
+ * that call them: the half lists (every body), the lattice stencil (2D: runs of particles
+ * whose neighbours lie at the same offsets) and the offset blocks (3D: eight particles of a
+ * lattice in the lanes of a vector).  A layout that cannot serve a body's features is a
+ * decision made here, once, with its reason: the plan's switches (OFFSET_BLOCKS,
+ * MOMENTUM_BLOCKS) follow from it, and --dump=plan prints it.  (Where a body's particles do
+ * not fill a layout's lanes well enough, the run-time set-up keeps the lists: runtime/
+ * offset_blocks.c, runtime/stencil.c; summary.json counts the pairs each layout took.) */
+#include <stdio.h>
+
+#include "plan.h"
+
+const char *layout_gradient_blocks_refused(const Model *m, const BodyPlan *p)
+{
+    if (m->dim != 3)
+        return "2D (the lattice stencil serves 2D)";
+    if (p->fracture)
+        return "fracture (the phase field's Laplacian rides with the lists' pairs)";
+    return NULL;
+}
+
+const char *layout_momentum_blocks_refused(const Model *m, const BodyPlan *p)
+{
+    if (m->dim != 3)
+        return "2D (the lattice stencil serves 2D)";
+    if (p->fracture)
+        return "fracture";
+    if (!p->viscosity)
+        return "no viscosity (the blocks' break-even was measured with it)";
+    if (p->pair_terms)
+        return "pair terms (hourglass control reads F and X of both particles, which the "
+               "blocks do not copy)";
+    return NULL;
+}
+
+const char *layout_stencil_momentum_refused(const Model *m, const BodyPlan *p)
+{
+    if (m->dim != 2)
+        return "3D";
+    if (p->pair_terms)
+        return "pair terms (hourglass control)";
+    return NULL;
+}
+
+static void line(FILE *out, const char *pass, const char *layout, const char *why)
+{
+    fprintf(out, "  %s pass (CPU): %s", pass, layout);
+    if (why)
+        fprintf(out, ", because %s", why);
+    fputs("\n", out);
+}
+
+/* (the set-up measures how well the body's particles fill the blocks' lanes) */
+#define BLOCKS "offset blocks if they fill their lanes well enough, else half lists"
+#define STENCIL "lattice stencil on its runs, half lists for the rest"
+
+void layouts_dump(const Model *m, const BodyPlan *p, FILE *out)
+{
+    if (m->dim == 2) {
+        line(out, "gradient", STENCIL, NULL);
+        const char *why = layout_stencil_momentum_refused(m, p);
+        line(out, "momentum", why ? "half lists" : STENCIL, why);
+        return;
+    }
+    const char *gw = layout_gradient_blocks_refused(m, p);
+    line(out, "gradient", gw ? "half lists" : BLOCKS, gw);
+    const char *mw = layout_momentum_blocks_refused(m, p);
+    line(out, "momentum", mw ? "half lists" : BLOCKS, mw);
+}
