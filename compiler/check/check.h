@@ -1,9 +1,10 @@
 /* check.h — the second stage, the syntax tree checked into the Model (model/model.h); the
- * helpers its files share (check*.c, elastic.c); the elastic constants and admissibility
- * rules the XML importer shares. */
+ * helpers its files share (check*.c). */
 #ifndef SPHC_CHECK_H
 #define SPHC_CHECK_H
 
+#include "model/admissible.h"
+#include "model/elastic.h"
 #include "model/model.h"
 
 /* Check the program; returns 0 and fills *m when there are no errors. */
@@ -47,32 +48,5 @@ int check_fracture_body(const BodyModel *b, const BodyDecl *d);
 
 /* A reference solution's (t, value) rows from a CSV file (reference_csv.c); errors at loc. */
 int reference_csv_read(const char *path, SrcLoc loc, double **t, double **v, int *n);
-
-/* Elastic constants (elastic.c): from the named arguments of a material use. */
-typedef struct {
-    int has_E, has_nu, has_lambda, has_mu, has_K;
-    double E, nu, lambda, mu, K;
-} ElasticInput;
-int elastic_complete(const ElasticInput *in, SrcLoc loc, BodyModel *b);
-/* Lame's lambda and mu of a pair in dim dimensions: mu = E / (2 (1 + nu)),
- * lambda = E nu / ((1 + nu)(1 - (dim - 1) nu)) or K - 2 mu / dim.  dim 3 is the sph
- * language's reading; dim 2 that of 2D elasticity (SoliDualSPHysics' 2D cases). */
-void elastic_lame(const ElasticInput *in, int dim, double *lambda, double *mu);
-/* The reference sound speed, eq. 59: c0 = sqrt((K + 4 mu / 3) / rho0). */
-double elastic_sound_speed(double K, double mu, double rho0);
-
-/* Physical admissibility of a body's numbers (elastic.c), one rule each, shared with the
- * XML importer: NULL when v is admissible as q, else the reason, a predicate that follows
- * the number's name ("must be positive"). */
-typedef enum {
-    Q_DENSITY, Q_YOUNG, Q_POISSON, Q_SHEAR, Q_BULK, Q_VISCOSITY, Q_RESTITUTION, Q_FRICTION,
-    Q_GC, Q_LENGTH, Q_LIMIT
-} Quantity;
-const char *inadmissible(Quantity q, double v);
-/* Reports "NAME REASON (got V)" at loc when v is not admissible: 0, or -1 after reporting. */
-int check_admissible(SrcLoc loc, const char *name, Quantity q, double v);
-
-/* The largest whole-number body setting (refine, nbsrange). */
-enum { SETTING_INT_MAX = 1000 };
 
 #endif
