@@ -285,9 +285,51 @@ int sg_ext(SGraph *g, const char *fn, const int *args, int nargs, int nout)
     return intern(g, s);
 }
 
+/* Whether node id is the constant 0. */
+static int is_zero(const SGraph *g, int id)
+{
+    double v;
+    return sg_is_const(g, id, &v) && v == 0.0;
+}
+
+/* Whether the 3x3 tensor args[0 .. 8] has the plane-strain structure: no y coupling, and (yy)
+ * 0 unless any_yy. */
+static int plane(const SGraph *g, const int *args, int any_yy)
+{
+    return is_zero(g, args[1]) && is_zero(g, args[3]) && is_zero(g, args[5]) &&
+           is_zero(g, args[7]) && (any_yy || is_zero(g, args[4]));
+}
+
+/* Output k of routine ext folded where its arguments allow: the 3D positive part (and its
+ * adjoint) of a plane-strain tensor (no y coupling, yy zero) is the 2D closed form's, with
+ * zeros in the y row and column.  Returns the node, or -1 (sg_part keeps the part). */
+static int fold_spectral_part(SGraph *g, int ext, int k)
+{
+    const SNode s = g->nodes[ext]; /* a copy: g grows */
+    const int pos = s.nargs == 9 && !strcmp(s.name, SPECTRAL_POS3);
+    const int adj = s.nargs == 18 && !strcmp(s.name, SPECTRAL_POS3_ADJOINT);
+    if (!(pos || adj) || !plane(g, s.args, 0) || (adj && !plane(g, s.args + 9, 1)))
+        return -1;
+    /* y is an eigenvector of eigenvalue 0: pos_yy = 0, and the adjoint's y row and column
+     * are 0 (Gamma(0, 0) = f'(0) = 0, eq. 13-16 differentiated) */
+    if (k != 0 && k != 2 && k != 6 && k != 8)
+        return sg_const(g, 0.0);
+    const int out = k == 0 ? 0 : k == 8 ? 2 : 1;
+    if (pos) {
+        const int args[3] = {s.args[0], s.args[2], s.args[8]};
+        return sg_part(g, sg_ext(g, SPECTRAL_POS2, args, 3, 3), out);
+    }
+    /* the adjoint of pos2's xz output is that of pos3's (x, z) and (z, x) outputs together;
+     * its xz adjoint stands for both entries: half each */
+    const int b_xz = sg_binary(g, SN_ADD, s.args[9 + 2], s.args[9 + 6]);
+    const int args[6] = {s.args[0], s.args[2], s.args[8], s.args[9], b_xz, s.args[9 + 8]};
+    const int part = sg_part(g, sg_ext(g, SPECTRAL_POS2_ADJOINT, args, 6, 3), out);
+    return out == 1 ? sg_binary(g, SN_MUL, sg_const(g, 0.5), part) : part;
+}
+
 int sg_part(SGraph *g, int ext, int k)
 {
-    const int folded = spectral_fold_part(g, ext, k); /* pos of a plane-strain tensor */
+    const int folded = fold_spectral_part(g, ext, k); /* pos of a plane-strain tensor */
     if (folded >= 0)
         return folded;
     SNode s = node(SN_PART, ext, -1, -1);
