@@ -4,6 +4,7 @@
  * The passes themselves are in templates/ under //@if FRACTURE. */
 
 #include "emit_internal.h"
+#include "emit_law.h"
 #include "util/source.h"
 
 /* static inline void B_material(F, s, S, psi, psip): S = s^2 S+ + S- (eq. 18), psi = s^2 psi+
@@ -17,7 +18,7 @@ void emit_fracture_material(FILE *out, const BodyModel *b, const BodyPlan *p)
                  "double *psi, double *psip)\n{\n",
             b->name);
     fputs("    (void)F;\n    (void)s;\n", out);
-    plan_law_print(p, 1, 1, out);
+    emit_law_body(out, p, 1);
     fputs("}\n\n", out);
 }
 
