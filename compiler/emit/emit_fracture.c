@@ -3,8 +3,9 @@
  * restriction of the phase field, and the fracture part of the body description (notches).
  * The passes themselves are in templates/ under //@if FRACTURE. */
 
-#include "emit_internal.h"
+#include "emit_fracture.h"
 #include "emit_law.h"
+#include "emit_quote.h"
 #include "util/source.h"
 
 /* static inline void B_material(F, s, S, psi, psip): S = s^2 S+ + S- (eq. 18), psi = s^2 psi+

@@ -3,14 +3,11 @@
  * material law from its folded scalar graph. */
 #include <string.h>
 
+#include "emit_fracture.h"
 #include "emit_internal.h"
 #include "emit_law.h"
+#include "emit_quote.h"
 #include "util/source.h"
-
-const char *emit_line_of(SrcLoc loc)
-{
-    return source_line_trimmed(loc.file, loc.line);
-}
 
 static int names(const Expr *e, const char *name)
 {
