@@ -5,6 +5,10 @@
 #include <string.h>
 
 #include "check.h"
+#include "check_body.h"
+#include "check_expr.h"
+#include "reference_csv.h"
+#include "seen_settings.h"
 #include "util/diag.h"
 #include "mesh.h"
 #include "util/source.h"
@@ -216,27 +220,6 @@ static int scene_setting(Model *m, const Setting *s)
             return scene_number(m, s, nums[i].dst, 1);
     diag_error(s->loc, "unknown scene setting '%s'", s->key);
     return -1;
-}
-
-int setting_once(SeenSettings *seen, const Setting *s, const char *where)
-{
-    const int k = name_index_get(&seen->keys, s->key);
-    if (k >= 0) {
-        diag_error(s->loc, "'%s' is given twice in %s", s->key, where);
-        diag_note(seen->first[k]->loc, "first given here");
-        return -1;
-    }
-    seen->first = realloc(seen->first, (size_t)(seen->n + 1) * sizeof *seen->first);
-    seen->first[seen->n] = s;
-    name_index_put(&seen->keys, s->key, seen->n++);
-    return 0;
-}
-
-void seen_settings_free(SeenSettings *seen)
-{
-    name_index_free(&seen->keys);
-    free(seen->first);
-    memset(seen, 0, sizeof *seen);
 }
 
 /* Where the scene sets KEY (its value), or NULL when it keeps the default. */

@@ -8,7 +8,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check.h"
+#include "check_body.h"
+#include "check_expr.h"
+#include "check_fracture.h"
+#include "quad.h"
+#include "seen_settings.h"
+#include "model/admissible.h"
+#include "model/elastic.h"
 #include "util/diag.h"
 #include "util/source.h"
 #include "mesh.h"
@@ -324,7 +330,7 @@ static int flatten(const Model *m, const ShapeExpr *s, int subtract, Region *r)
     return flatten(m, s->rhs, s->op == '-' ? 1 : subtract, r);
 }
 
-int check_region(const Model *m, const ShapeExpr *s, Region *r)
+static int check_region(const Model *m, const ShapeExpr *s, Region *r)
 {
     memset(r, 0, sizeof *r);
     if (flatten(m, s, 0, r))
@@ -654,38 +660,6 @@ static int check_bc(const Model *m, const BcDecl *d, BcModel *bc)
         bad |= check_region(m, d->near, &bc->near);
     }
     return bad ? -1 : 0;
-}
-
-/* The four corners of a quad (a measurement plane, a notch) must be four points spanning an
- * area: two equal or three in a line measure nothing (select.c would find no particle, or
- * divide by a zero normal).  0, or -1 after reporting. */
-int quad_spans(const double p[4][3], SrcLoc loc, const char *what)
-{
-    double size = 0, area = 0;
-    for (int a = 0; a < 4; a++)
-        for (int c = 0; c < 3; c++)
-            size = fmax(size, fabs(p[a][c] - p[0][c]));
-    for (int a = 0; a < 4; a++)
-        for (int b = a + 1; b < 4; b++)
-            if (p[a][0] == p[b][0] && p[a][1] == p[b][1] && p[a][2] == p[b][2]) {
-                diag_error(loc, "the %s has corners %d and %d at the same point", what, a + 1, b + 1);
-                return -1;
-            }
-    for (int t = 0; t < 2; t++) { /* the triangles (0, 1, 2) and (0, 2, 3) */
-        double u[3], v[3];
-        for (int c = 0; c < 3; c++) {
-            u[c] = p[t + 1][c] - p[0][c];
-            v[c] = p[t + 2][c] - p[0][c];
-        }
-        const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-                             u[0] * v[1] - u[1] * v[0]};
-        area += 0.5 * sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    }
-    if (!(area > 1e-9 * size * size)) {
-        diag_error(loc, "the %s's corners lie on a line: they span no area", what);
-        return -1;
-    }
-    return 0;
 }
 
 static int check_measure(const Model *m, const MeasureDecl *d, MeasureModel *ms)

@@ -2,7 +2,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "check.h"
+#include "check_expr.h"
 #include "util/diag.h"
 #include "model/eval.h"
 #include "lang/builtins.h"

@@ -10,7 +10,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check.h"
+#include "check_expr.h"
+#include "check_fracture.h"
+#include "quad.h"
+#include "model/admissible.h"
 #include "util/diag.h"
 
 /* The phase-field limit s_l when a model does not give one (paper eq. 63). */

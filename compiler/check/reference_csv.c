@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check.h"
+#include "reference_csv.h"
 #include "util/diag.h"
 #include "regular_file.h"
 

@@ -5,6 +5,7 @@
 #include <stdio.h>
 
 #include "emit_internal.h"
+#include "emit_quote.h"
 #include "util/source.h"
 
 /* Compact component index of 3D axis `axis` (0 x, 1 y, 2 z) in a dim-D body. */

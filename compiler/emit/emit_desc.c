@@ -6,29 +6,10 @@
 
 #include <string.h>
 
+#include "emit_fracture.h"
 #include "emit_internal.h"
+#include "emit_quote.h"
 #include "util/source.h"
-
-/* A C string literal (emit_internal.h). */
-void emit_c_string(FILE *out, const char *s)
-{
-    fputc('"', out);
-    for (; *s; s++)
-        if (*s == '"' || *s == '\\')
-            fprintf(out, "\\%c", *s);
-        else if ((unsigned char)*s < 0x20 || (unsigned char)*s >= 0x7f)
-            fprintf(out, "\\%03o", (unsigned char)*s);
-        else
-            fputc(*s, out);
-    fputc('"', out);
-}
-
-void emit_where(FILE *out, SrcLoc loc)
-{
-    char buf[300];
-    snprintf(buf, sizeof buf, "%s:%d", source_basename(loc.file), loc.line);
-    emit_c_string(out, buf);
-}
 
 /* The corners of the prisms and pyramids of region `name`, and the maps that move its
  * surfaces (4 vectors: sph_mesh_load_moved), one table each (NAME_corners_K), which its

@@ -3,7 +3,9 @@
  * restriction of the phase field, and the fracture part of the body description (notches).
  * The passes themselves are in templates/ under //@if FRACTURE. */
 
-#include "emit_internal.h"
+#include "emit_fracture.h"
+#include "emit_law.h"
+#include "emit_quote.h"
 #include "util/source.h"
 
 /* static inline void B_material(F, s, S, psi, psip): S = s^2 S+ + S- (eq. 18), psi = s^2 psi+
@@ -17,7 +19,7 @@ void emit_fracture_material(FILE *out, const BodyModel *b, const BodyPlan *p)
                  "double *psi, double *psip)\n{\n",
             b->name);
     fputs("    (void)F;\n    (void)s;\n", out);
-    plan_law_print(p, 1, 1, out);
+    emit_law_body(out, p, 1);
     fputs("}\n\n", out);
 }
 

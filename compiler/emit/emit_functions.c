@@ -3,13 +3,11 @@
  * material law from its folded scalar graph. */
 #include <string.h>
 
+#include "emit_fracture.h"
 #include "emit_internal.h"
+#include "emit_law.h"
+#include "emit_quote.h"
 #include "util/source.h"
-
-const char *emit_line_of(SrcLoc loc)
-{
-    return source_line_trimmed(loc.file, loc.line);
-}
 
 static int names(const Expr *e, const char *name)
 {
@@ -99,7 +97,7 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
                 b->name);
     }
     fputs(p->nstate ? "    (void)F;\n    (void)st;\n" : "    (void)F;\n", out);
-    plan_law_print(p, 0, 1, out);
+    emit_law_body(out, p, 0);
     fputs("}\n\n", out);
     if (!p->rare)
         return;
@@ -112,6 +110,6 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
                  "double *st_new,\n                                        double S[9], "
                  "double *psi, double *rare)\n{\n", b->name);
     fputs("    (void)F;\n    (void)st;\n", out);
-    plan_law_print_fast(p, 1, out);
+    emit_law_fast_body(out, p);
     fputs("}\n\n", out);
 }

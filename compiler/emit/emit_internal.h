@@ -1,6 +1,7 @@
 /* emit_internal.h — the pieces of the emitter: constants, functions and laws (SPH_FN), a
  * body's templates, its boundary-condition passes, the step and the scene description,
- * shared by both targets, and the table of what differs between the targets. */
+ * shared by both targets, and the table of what differs between the targets.  The pieces
+ * these call have headers of their own: emit_fracture.h, emit_law.h, emit_quote.h. */
 #ifndef SPHC_EMIT_INTERNAL_H
 #define SPHC_EMIT_INTERNAL_H
 
@@ -70,8 +71,6 @@ void emit_scene_cpu(Emitter *E);  /* emit_step.c */
 void emit_scene_cuda(Emitter *E); /* emit_cuda.c */
 
 /* ---- constants, user functions and material laws (emit_functions.c) */
-/* The model line at loc, trimmed, for a comment. */
-const char *emit_line_of(SrcLoc loc);
 void emit_consts_fns(Emitter *E);
 void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p);
 
@@ -94,20 +93,7 @@ void emit_step_bodies(Emitter *E, const char *body, const char *contact);
 /* model_stress_output: every body's Cauchy stress for output (`from`: where it is read). */
 void emit_stress_output(Emitter *E, const char *from);
 
-/* ---- phase-field fracture (emit_fracture.c) */
-/* The rest of the material function after its opening comment line. */
-void emit_fracture_material(FILE *out, const BodyModel *b, const BodyPlan *p);
-/* B_phase_min and B_restrict(b, t, dt), when the body restricts its phase field. */
-void emit_fracture_restrict(Emitter *E, const BodyModel *b);
-/* B_notches and B_fracture for the body description. */
-void emit_fracture_desc(FILE *out, const BodyModel *b);
-
 /* ---- the scene description and main() (emit_desc.c) */
-/* s as a C string literal (quotes, backslashes and control characters escaped). */
-void emit_c_string(FILE *out, const char *s);
-/* "file.sph:LINE" of loc as a C string literal: where a model item is, for the runtime's
- * messages. */
-void emit_where(FILE *out, SrcLoc loc);
 void emit_model_desc(Emitter *E);
 
 #endif

@@ -8,6 +8,7 @@
 #include <stdio.h>
 
 #include "emit.h"
+#include "emit_fracture.h"
 #include "emit_internal.h"
 #include "util/diag.h"
 

@@ -6,9 +6,11 @@
  * the same folding and hash-consing as the law itself: x * 0 vanishes, a factor shared by
  * several entries is computed once.  A runtime routine (SN_EXT, pos of eq. 13-16) has
  * several outputs, its parts (SN_PART, newer than it): their adjoints are gathered when the
- * descent reaches the routine, and its rule (spectral.c) gives its arguments' at once. */
+ * descent reaches the routine, and its rule gives its arguments' at once: the parts of its
+ * adjoint routine (spectral.h), one more SN_EXT node. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "lang/builtins.h"
 #include "scalar.h"
@@ -98,6 +100,33 @@ static int propagate(SGraph *g, SNode s, int id, int d, int *adj)
     }
 }
 
+/* The rule of runtime routine ext: given the adjoints of its outputs (bar[k], a node, or -1
+ * where output k has none), the adjoints of its arguments (into arg_bar[k]) as the parts of
+ * its adjoint routine (spectral.h).  Returns 0, or -1 for a routine without one. */
+static int ext_rule(SGraph *g, int ext, const int *bar, int *arg_bar)
+{
+    const SNode s = g->nodes[ext]; /* a copy: g grows */
+    const char *adjoint = spectral_adjoint_of(s.name, s.nargs);
+    if (!adjoint || s.nargs + s.b > SG_MAX_ARGS)
+        return -1;
+    int args[SG_MAX_ARGS], any = 0;
+    memcpy(args, s.args, (size_t)s.nargs * sizeof(int));
+    for (int q = 0; q < s.b; q++) {
+        double v;
+        args[s.nargs + q] = bar[q] >= 0 ? bar[q] : sg_const(g, 0.0);
+        any |= !sg_is_const(g, args[s.nargs + q], &v) || v != 0.0;
+    }
+    if (!any) { /* no adjoint reaches the routine */
+        for (int q = 0; q < s.nargs; q++)
+            arg_bar[q] = sg_const(g, 0.0);
+        return 0;
+    }
+    const int adj = sg_ext(g, adjoint, args, s.nargs + s.b, s.nargs);
+    for (int q = 0; q < s.nargs; q++)
+        arg_bar[q] = sg_part(g, adj, q);
+    return 0;
+}
+
 /* The adjoint of runtime routine ext (its parts' adjoints, adj[] of the SN_PART nodes of ext
  * between ext and y that are not held) passed to its arguments.  Returns 0, or -1 for a
  * routine without a rule. */
@@ -114,7 +143,7 @@ static int routine_adjoint(SGraph *g, int ext, int y, const char *stop, int *adj
     }
     if (!any)
         return 0;
-    if (spectral_adjoint(g, ext, bar, arg_bar))
+    if (ext_rule(g, ext, bar, arg_bar))
         return -1;
     const SNode s = g->nodes[ext]; /* a copy: g grew */
     for (int k = 0; k < s.nargs; k++)

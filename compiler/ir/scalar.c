@@ -1,4 +1,5 @@
-/* scalar.c — building, folding and emitting the scalar expression graph. */
+/* scalar.c — building and folding the scalar expression graph, and its passes over the
+ * nodes some roots need. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -7,7 +8,6 @@
 #include "spectral.h"
 #include "lang/arith.h"
 #include "lang/builtins.h"
-#include "util/source.h"
 
 void sg_init(SGraph *g)
 {
@@ -285,9 +285,51 @@ int sg_ext(SGraph *g, const char *fn, const int *args, int nargs, int nout)
     return intern(g, s);
 }
 
+/* Whether node id is the constant 0. */
+static int is_zero(const SGraph *g, int id)
+{
+    double v;
+    return sg_is_const(g, id, &v) && v == 0.0;
+}
+
+/* Whether the 3x3 tensor args[0 .. 8] has the plane-strain structure: no y coupling, and (yy)
+ * 0 unless any_yy. */
+static int plane(const SGraph *g, const int *args, int any_yy)
+{
+    return is_zero(g, args[1]) && is_zero(g, args[3]) && is_zero(g, args[5]) &&
+           is_zero(g, args[7]) && (any_yy || is_zero(g, args[4]));
+}
+
+/* Output k of routine ext folded where its arguments allow: the 3D positive part (and its
+ * adjoint) of a plane-strain tensor (no y coupling, yy zero) is the 2D closed form's, with
+ * zeros in the y row and column.  Returns the node, or -1 (sg_part keeps the part). */
+static int fold_spectral_part(SGraph *g, int ext, int k)
+{
+    const SNode s = g->nodes[ext]; /* a copy: g grows */
+    const int pos = s.nargs == 9 && !strcmp(s.name, SPECTRAL_POS3);
+    const int adj = s.nargs == 18 && !strcmp(s.name, SPECTRAL_POS3_ADJOINT);
+    if (!(pos || adj) || !plane(g, s.args, 0) || (adj && !plane(g, s.args + 9, 1)))
+        return -1;
+    /* y is an eigenvector of eigenvalue 0: pos_yy = 0, and the adjoint's y row and column
+     * are 0 (Gamma(0, 0) = f'(0) = 0, eq. 13-16 differentiated) */
+    if (k != 0 && k != 2 && k != 6 && k != 8)
+        return sg_const(g, 0.0);
+    const int out = k == 0 ? 0 : k == 8 ? 2 : 1;
+    if (pos) {
+        const int args[3] = {s.args[0], s.args[2], s.args[8]};
+        return sg_part(g, sg_ext(g, SPECTRAL_POS2, args, 3, 3), out);
+    }
+    /* the adjoint of pos2's xz output is that of pos3's (x, z) and (z, x) outputs together;
+     * its xz adjoint stands for both entries: half each */
+    const int b_xz = sg_binary(g, SN_ADD, s.args[9 + 2], s.args[9 + 6]);
+    const int args[6] = {s.args[0], s.args[2], s.args[8], s.args[9], b_xz, s.args[9 + 8]};
+    const int part = sg_part(g, sg_ext(g, SPECTRAL_POS2_ADJOINT, args, 6, 3), out);
+    return out == 1 ? sg_binary(g, SN_MUL, sg_const(g, 0.5), part) : part;
+}
+
 int sg_part(SGraph *g, int ext, int k)
 {
-    const int folded = spectral_fold_part(g, ext, k); /* pos of a plane-strain tensor */
+    const int folded = fold_spectral_part(g, ext, k); /* pos of a plane-strain tensor */
     if (folded >= 0)
         return folded;
     SNode s = node(SN_PART, ext, -1, -1);
@@ -295,100 +337,11 @@ int sg_part(SGraph *g, int ext, int k)
     return intern(g, s);
 }
 
-/* ------------------------------------------------------------------ emission */
+/* ------------------------------------------------------------------ passes */
 
-static int is_leaf(const SNode *s)
-{
-    return s->op == SN_CONST || s->op == SN_INPUT || s->op == SN_PARAM;
-}
-
-void sg_ref(const SGraph *g, int id, FILE *out)
-{
-    const SNode *s = &g->nodes[id];
-    if (s->op == SN_CONST) {
-        if (s->v < 0)
-            fprintf(out, "(%.17g)", s->v);
-        else
-            fprintf(out, "%.17g", s->v);
-    } else if (s->op == SN_INPUT) {
-        if (s->v < 0)
-            fputs(s->name, out);
-        else
-            fprintf(out, "%s[%d]", s->name, (int)s->v);
-    } else if (s->op == SN_PARAM) {
-        fprintf(out, "p%d", (int)s->v);
-    } else if (s->op == SN_PART) {
-        fprintf(out, "t%d[%d]", s->a, (int)s->v);
-    } else {
-        fprintf(out, "t%d", id);
-    }
-}
-
-/* A function's argument: constants written as doubles (2.0, not 2), so that C++ (the CUDA
- * target) picks the double overload of fmax, pow, ... on the device too. */
-static void arg_ref(const SGraph *g, int id, FILE *out)
-{
-    const SNode *s = &g->nodes[id];
-    if (s->op != SN_CONST || s->v != floor(s->v) || fabs(s->v) >= 1e15) {
-        sg_ref(g, id, out);
-        return;
-    }
-    if (s->v < 0)
-        fprintf(out, "(%.17g.0)", s->v);
-    else
-        fprintf(out, "%.17g.0", s->v);
-}
-
-static const char *infix(SnOp op)
-{
-    static const char *const ops[] = {
-        [SN_ADD] = "+", [SN_SUB] = "-", [SN_MUL] = "*", [SN_DIV] = "/", [SN_LT] = "<",
-        [SN_LE] = "<=", [SN_GT] = ">", [SN_GE] = ">=", [SN_EQ] = "==", [SN_NE] = "!=",
-        [SN_AND] = "&&", [SN_OR] = "||",
-    };
-    return (size_t)op < sizeof ops / sizeof ops[0] ? ops[op] : NULL;
-}
-
-static void emit_node(const SGraph *g, int id, FILE *out)
-{
-    const SNode *s = &g->nodes[id];
-    const char *op = infix(s->op);
-    if (op) {
-        sg_ref(g, s->a, out);
-        fprintf(out, " %s ", op);
-        sg_ref(g, s->b, out);
-        return;
-    }
-    switch (s->op) {
-    case SN_NEG: fputs("-", out); sg_ref(g, s->a, out); return;
-    case SN_NOT: fputs("!", out); sg_ref(g, s->a, out); return;
-    case SN_POW: fputs("pow(", out); break;
-    case SN_MIN: fputs("sph_min(", out); break;
-    case SN_MAX: fputs("sph_max(", out); break;
-    case SN_CALL:
-        fprintf(out, "%s(", BUILTIN_FUNCTION[s->fn].c);
-        arg_ref(g, s->a, out);
-        fputs(")", out);
-        return;
-    case SN_SELECT:
-        sg_ref(g, s->a, out);
-        fputs(" ? ", out);
-        sg_ref(g, s->b, out);
-        fputs(" : ", out);
-        sg_ref(g, s->c, out);
-        return;
-    default: return;
-    }
-    arg_ref(g, s->a, out);
-    fputs(", ", out);
-    arg_ref(g, s->b, out);
-    fputs(")", out);
-}
-
-/* The nodes the roots need, in live[]: a node's operands were made before it (smaller ids),
- * so one sweep from the last node down marks them all, without recursion however deep the
- * graph. */
-static void mark_live(const SGraph *g, const int *roots, int nroots, char *live)
+/* A node's operands were made before it (smaller ids), so one sweep from the last node down
+ * marks them all, without recursion however deep the graph. */
+void sg_mark_live(const SGraph *g, const int *roots, int nroots, char *live)
 {
     for (int k = 0; k < nroots; k++)
         if (roots[k] >= 0)
@@ -412,7 +365,7 @@ static void mark_live(const SGraph *g, const int *roots, int nroots, char *live)
 int sg_operations(const SGraph *g, const int *roots, int nroots)
 {
     char *live = calloc((size_t)g->n + 1, 1);
-    mark_live(g, roots, nroots, live);
+    sg_mark_live(g, roots, nroots, live);
     int ops = 0;
     for (int id = 0; id < g->n; id++)
         ops += live[id] && g->nodes[id].op > SN_PARAM && g->nodes[id].op != SN_PART;
@@ -428,7 +381,7 @@ static void rebuild(SGraph *g, const int *roots, int nroots,
     const int n = g->n;
     char *live = calloc((size_t)n + 1, 1);
     int *map = malloc((size_t)(n + 1) * sizeof *map);
-    mark_live(g, roots, nroots, live);
+    sg_mark_live(g, roots, nroots, live);
     const int line = g->line;
     const char *file = g->file;
     for (int id = 0; id < n; id++) {
@@ -515,77 +468,11 @@ void sg_replace(SGraph *g, const int *roots, int nroots, const int *from, const 
 int sg_first_nonfinite(const SGraph *g, const int *roots, int nroots)
 {
     char *live = calloc((size_t)g->n + 1, 1);
-    mark_live(g, roots, nroots, live);
+    sg_mark_live(g, roots, nroots, live);
     int found = -1;
     for (int id = 0; id < g->n && found < 0; id++)
         if (live[id] && g->nodes[id].op == SN_CONST && !isfinite(g->nodes[id].v))
             found = id;
     free(live);
     return found;
-}
-
-/* double tN[nout]; fn(a0, a1, a2, tN);  or, with more than four arguments (a tensor),
- * const double aN[n] = {a0, ...}; double tN[nout]; fn(aN, tN);  (valid C and C++) */
-static void emit_ext(const SGraph *g, int id, FILE *out, const char *indent)
-{
-    const SNode *s = &g->nodes[id];
-    int packed = s->nargs > 4;
-    if (packed)
-        fprintf(out, "%sconst double a%d[%d] = {", indent, id, s->nargs);
-    for (int k = 0; packed && k < s->nargs; k++) {
-        if (k)
-            fputs(", ", out);
-        sg_ref(g, s->args[k], out);
-    }
-    fprintf(out, "%s%sdouble t%d[%d];\n%s%s(", packed ? "};\n" : "", indent, id, s->b, indent,
-            s->name);
-    if (packed)
-        fprintf(out, "a%d", id);
-    for (int k = 0; !packed && k < s->nargs; k++) {
-        if (k)
-            fputs(", ", out);
-        sg_ref(g, s->args[k], out);
-    }
-    fprintf(out, ", t%d);\n", id);
-}
-
-void sg_emit(const SGraph *g, const int *roots, int nroots, FILE *out, const char *indent)
-{
-    char *live = calloc((size_t)g->n + 1, 1);
-    mark_live(g, roots, nroots, live);
-    int line = -1;
-    const char *file = NULL;
-    for (int id = 0; id < g->n; id++) {
-        const SNode *s = &g->nodes[id];
-        if (!live[id] || is_leaf(s) || s->op == SN_PART)
-            continue;
-        if (s->line != line || s->file != file) {
-            line = s->line;
-            file = s->file;
-            if (file)
-                fprintf(out, "%s/* %s:%d: %s */\n", indent, source_basename(file), line,
-                        source_line_trimmed(file, line));
-        }
-        if (s->op == SN_EXT) {
-            emit_ext(g, id, out, indent);
-            continue;
-        }
-        fprintf(out, "%sconst double t%d = ", indent, id);
-        emit_node(g, id, out);
-        fputs(";\n", out);
-    }
-    free(live);
-}
-
-void sg_emit_outputs(const SGraph *g, const char *indent, const char *name, const int *ids, int n,
-                     const char *end, FILE *out)
-{
-    for (int k = 0; k < (n < 0 ? 1 : n); k++) {
-        if (n < 0)
-            fprintf(out, "%s%s = ", indent, name);
-        else
-            fprintf(out, "%s%s[%d] = ", indent, name, k);
-        sg_ref(g, ids[k], out);
-        fprintf(out, "%s\n", end);
-    }
 }

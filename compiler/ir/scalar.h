@@ -3,11 +3,9 @@
  * Material laws are evaluated symbolically into this graph: every tensor becomes nine
  * scalar nodes.  Nodes are hash-consed (common subexpressions are shared) and folded as they
  * are built (constants, x*0, x*1, x+0, known plane-strain zeros), so the emitted C holds
- * only the arithmetic a given body needs. */
+ * only the arithmetic a given body needs.  The graph is printed as C by lower/graph_print.c. */
 #ifndef SPHC_SCALAR_H
 #define SPHC_SCALAR_H
-
-#include <stdio.h>
 
 typedef enum {
     SN_CONST,  /* v */
@@ -74,6 +72,9 @@ typedef double (*SgInput)(const char *name, int index, void *ctx);
 void sg_eval(const SGraph *g, int upto, SgInput input, void *ctx, const double *params,
              double *val);
 
+/* Marks in live[0 .. g->n - 1] (zeroed by the caller) the nodes that roots[0 .. nroots-1]
+ * need (a root < 0 needs none): the nodes a printer of the graph writes. */
+void sg_mark_live(const SGraph *g, const int *roots, int nroots, char *live);
 /* The operations computing roots[0 .. nroots-1] takes: the nodes they reach, less constants,
  * inputs, parameters and a runtime routine's outputs (its call counts once). */
 int sg_operations(const SGraph *g, const int *roots, int nroots);
@@ -105,15 +106,5 @@ int sg_derivatives_held(SGraph *g, int y, const int *x, int n, const int *held, 
 /* The first constant the roots need that is not finite (a division by zero folded, ...),
  * or -1. */
 int sg_first_nonfinite(const SGraph *g, const int *roots, int nroots);
-
-/* Emit the nodes reachable from roots as `const double tN = ...;` lines, with a comment
- * naming the model line each group came from.  name_of(root k) is printed by the caller;
- * use sg_ref to print an operand (constant, input, or temporary). */
-void sg_emit(const SGraph *g, const int *roots, int nroots, FILE *out, const char *indent);
-void sg_ref(const SGraph *g, int id, FILE *out);
-/* `<indent>name[k] = <ref of ids[k]><end>` for k < n, one line each; `<indent>name = ...` for
- * n = -1 (one value, ids[0]): the outputs of an emitted function or a plan dump. */
-void sg_emit_outputs(const SGraph *g, const char *indent, const char *name, const int *ids, int n,
-                     const char *end, FILE *out);
 
 #endif

@@ -1,7 +1,6 @@
 /* lower.c — from the checked model to per-body kernel plans: dead-feature elimination
  * (only what the body uses is switched on) and the material law folded for the body's
  * constants and dimension. */
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -155,25 +154,4 @@ int plan_output_roots(const LawOutput *o, int no, int roots[PLAN_MAX_ROOTS])
         for (int q = 0; q < (o[k].n < 0 ? 1 : o[k].n); q++)
             roots[nroots++] = o[k].ids[q];
     return nroots;
-}
-
-static void print_outputs(const SGraph *law, const LawOutput *o, int no, int as_c, FILE *out)
-{
-    int roots[PLAN_MAX_ROOTS];
-    sg_emit(law, roots, plan_output_roots(o, no, roots), out, "    ");
-    for (int k = 0; k < no; k++)
-        sg_emit_outputs(law, "    ", as_c ? o[k].c_name : o[k].label, o[k].ids, o[k].n,
-                        as_c ? ";" : "", out);
-}
-
-void plan_law_print(const BodyPlan *p, int degraded, int as_c, FILE *out)
-{
-    LawOutput o[LAW_MAX_OUTPUTS];
-    print_outputs(&p->law, o, plan_law_outputs(p, degraded, o), as_c, out);
-}
-
-void plan_law_print_fast(const BodyPlan *p, int as_c, FILE *out)
-{
-    LawOutput o[LAW_MAX_OUTPUTS + 1];
-    print_outputs(&p->law, o, plan_law_fast_outputs(p, o), as_c, out);
 }

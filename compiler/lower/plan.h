@@ -4,6 +4,8 @@
 #ifndef SPHC_PLAN_H
 #define SPHC_PLAN_H
 
+#include <stdio.h>
+
 #include "model/model.h"
 #include "ir/law.h"
 
@@ -117,13 +119,9 @@ int plan_law_outputs(const BodyPlan *p, int degraded, LawOutput out[LAW_MAX_OUTP
 /* The outputs of its fast path (a body with `rare`): S, psi, the state and `*rare`, the flag
  * that a rare `if` was due. */
 int plan_law_fast_outputs(const BodyPlan *p, LawOutput out[LAW_MAX_OUTPUTS + 1]);
-/* The graph nodes of outputs o[0 .. no-1], in order, into roots; returns their number. */
+/* The graph nodes of outputs o[0 .. no-1], in order, into roots; returns their number.  (The
+ * graph computing them is printed by graph_print.h.) */
 int plan_output_roots(const LawOutput *o, int no, int roots[PLAN_MAX_ROOTS]);
-/* The law's graph computing those outputs, then the outputs: as C statements (as_c, at the
- * indent of a function body) or as the dump shows them. */
-void plan_law_print(const BodyPlan *p, int degraded, int as_c, FILE *out);
-/* The same for the law's fast path (a body with `rare`): its outputs and `*rare`, the flag. */
-void plan_law_print_fast(const BodyPlan *p, int as_c, FILE *out);
 
 /* Print the plan (sphc --dump=plan): each body's features and its law's graph. */
 void plan_dump(const Plan *plan, FILE *out);

@@ -3,6 +3,7 @@
  * generated function computes, and the law's graph as the generated code will compute it. */
 #include <string.h>
 
+#include "graph_print.h"
 #include "plan.h"
 
 /* The law's top-level energy statement, or its tension block. */
@@ -70,6 +71,21 @@ static int fast_operations(const BodyPlan *p)
     return sg_operations(&p->law, roots, n);
 }
 
+/* The law's graph and its outputs (degraded: those of eq. 7 and 18) as the generated function
+ * computes them, the outputs named as the dump names them. */
+static void law_graph(const BodyPlan *p, int degraded, FILE *out)
+{
+    LawOutput o[LAW_MAX_OUTPUTS];
+    graph_print(&p->law, o, plan_law_outputs(p, degraded, o), 0, out);
+}
+
+/* The same for the law's fast path: its outputs and `rare`, the flag. */
+static void fast_graph(const BodyPlan *p, FILE *out)
+{
+    LawOutput o[LAW_MAX_OUTPUTS + 1];
+    graph_print(&p->law, o, plan_law_fast_outputs(p, o), 0, out);
+}
+
 void plan_dump(const Plan *plan, FILE *out)
 {
     const Model *m = plan->model;
@@ -87,15 +103,15 @@ void plan_dump(const Plan *plan, FILE *out)
         fputs("\n", out);
         layouts_dump(m, p, out);
         law_summary(p, b->law, out);
-        plan_law_print(p, 0, 0, out);
+        law_graph(p, 0, out);
         if (p->rare) {
             fprintf(out, "  fast path (the CPU's stress pass; no `if` without `else` taken, rare "
                          "the flag that one was due): %d operations\n", fast_operations(p));
-            plan_law_print_fast(p, 0, out);
+            fast_graph(p, out);
         }
         if (p->roots.has_tension) {
             fputs("  degraded by the phase field (eq. 7, 18):\n", out);
-            plan_law_print(p, 1, 0, out);
+            law_graph(p, 1, out);
         }
     }
 }

@@ -23,6 +23,7 @@
 #include <string.h>
 
 #include "util/diag.h"
+#include "model/elastic.h"
 #include "xml_internal.h"
 
 enum { EL_E, EL_NU, EL_LAMBDA, EL_MU, EL_K, EL_N };

@@ -19,8 +19,8 @@
 
 #include <libxml/tree.h>
 
-#include "check/check.h"
 #include "front/ast.h"
+#include "model/admissible.h"
 #include "xml.h"
 
 /* One drawing of the mainlist.  lo..hi: the GenCase lattice nodes a <drawbox> covers, per
@@ -143,7 +143,7 @@ int xml_integer(const XmlCtx *x, const xmlNode *n, const char *attr, int require
 int xml_card_number(const XmlCtx *x, const xmlNode *n, double *out);
 /* The same, and the value must be positive. */
 int xml_card_positive(const XmlCtx *x, const xmlNode *n, double *out);
-/* Whether v, the value of attribute attr of n, is admissible as q (check.h): 0, or -1 after
+/* Whether v, the value of attribute attr of n, is admissible as q (model/admissible.h): 0, or -1 after
  * reporting "<elem> attribute 'attr': REASON (got v)". */
 int xml_admissible(const XmlCtx *x, const xmlNode *n, const char *attr, Quantity q, double v);
 /* A card <name value="..."/> whose value is admissible as q. */

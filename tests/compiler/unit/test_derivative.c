@@ -251,7 +251,7 @@ static int plane_input(const SNode *n, void *ctx)
 
 /* The derivative of tr(WP pos(A)), tr(WP neg(A)), tr(W pos(A)) taken in 3D, then folded
  * for a plane-strain A (pos, and its adjoint where the output's adjoint has the plane
- * structure too, become the 2D closed forms, spectral_fold_part), against the one taken in
+ * structure too, become the 2D closed forms as sg_part folds them), against the one taken in
  * 2D: max relative difference over 150 random tensors. */
 static double plane_fold_error(void)
 {
