@@ -15,7 +15,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "partition.h"
+#include "geom/partition.h"
 
 typedef struct {
     sph_shape shape;

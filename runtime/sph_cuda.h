@@ -89,7 +89,7 @@ static inline void atomicAdd(double *a, double v) { *a += v; }
 #define SPH_TENSOR(i, r, c, D, n) ((size_t)((r) * (D) + (c)) * (size_t)(n) + (size_t)(i))
 #define SPH_TIME_DEFINED /* sph_time: below, a value or the device clock's */
 #include "sphrt.h"
-#include "contact_law.h"
+#include "contact/contact_law.h"
 
 /* The neighbour a hole (a slot of offset off that particle i lacks) reads, one of the nown own
  * particles: the particle at i + off, or the nearest one to it, so that the warp's load

@@ -22,7 +22,7 @@
 
 #include <vector>
 
-#include "contact_law.h"
+#include "contact/contact_law.h"
 #ifndef SPH_CUDA_EMULATE
 #include <cub/device/device_radix_sort.cuh>
 #else

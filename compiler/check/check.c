@@ -6,7 +6,7 @@
 
 #include "check.h"
 #include "util/diag.h"
-#include "mesh.h"
+#include "geom/mesh.h"
 #include "util/source.h"
 #include "model/eval.h"
 #include "ir/law.h"

@@ -11,8 +11,8 @@
 #include "check.h"
 #include "util/diag.h"
 #include "util/source.h"
-#include "mesh.h"
-#include "sph_limits.h"
+#include "geom/mesh.h"
+#include "core/limits.h"
 
 /* ------------------------------------------------------------------ shapes */
 

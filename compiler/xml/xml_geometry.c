@@ -28,7 +28,7 @@
 #include <string.h>
 
 #include "util/diag.h"
-#include "mesh.h"
+#include "geom/mesh.h"
 #include "util/source.h"
 #include "xml_internal.h"
 

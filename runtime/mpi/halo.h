@@ -19,7 +19,7 @@
 #include <mpi.h>
 #include <stdint.h>
 
-#include "partition.h"
+#include "geom/partition.h"
 
 typedef struct {
     MPI_Comm comm;

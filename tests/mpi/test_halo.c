@@ -13,7 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "halo.h"
+#include "mpi/halo.h"
 
 static double value(const double *x, int dim, int c)
 {

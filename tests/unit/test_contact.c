@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "contact_search.h"
+#include "contact/contact_search.h"
 #include "sphrt.h"
 
 #ifndef M_PI

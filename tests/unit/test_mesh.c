@@ -18,7 +18,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "mesh.h"
+#include "geom/mesh.h"
 #include "sphrt.h"
 
 static int failures = 0;

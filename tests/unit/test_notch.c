@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <omp.h>
-#include "notch.h"
+#include "pairs/notch.h"
 #include "sphrt.h"
 
 static int failures = 0;

@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "partition.h"
+#include "geom/partition.h"
 #include "unit_check.h"
 
 /* A body of the test: its region, dimension, spacing, kernel support and nbsrange. */

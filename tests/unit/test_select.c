@@ -2,7 +2,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include "select.h"
+#include "geom/select.h"
 
 static int failures = 0;
 

@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mesh.h"
+#include "geom/mesh.h"
 #include "sphrt.h"
 
 static int failures = 0;

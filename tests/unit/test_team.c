@@ -4,7 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "team.h"
+#include "par/team.h"
 #include "unit_check.h"
 
 typedef struct {

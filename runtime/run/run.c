@@ -18,7 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "checkpoint.h"
+#include "io/checkpoint.h"
 #include "run_state.h"
 
 /* The stability monitor's periodic check: every this many steps (and before every output). */

@@ -9,8 +9,8 @@
 #include <unistd.h>
 
 #include "internal.h"
-#include "notch.h"
-#include "select.h"
+#include "pairs/notch.h"
+#include "geom/select.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846

@@ -7,10 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "checkpoint.h"
-#include "compat.h"
+#include "io/checkpoint.h"
+#include "io/compat.h"
 #include "internal.h"
-#include "team.h"
+#include "par/team.h"
 
 typedef struct {
     const sph_model *m;

@@ -30,8 +30,8 @@
 #include <string.h>
 
 #include "checkpoint.h"
-#include "partition.h"
-#include "regular_file.h"
+#include "geom/partition.h"
+#include "core/regular_file.h"
 
 static const char MAGIC[8] = {'S', 'P', 'H', 'C', 'K', 'P', 'T', '\n'};
 enum { VERSION = 3 }; /* 3: bodies in pieces by global id; 2: the contact's closeness */

@@ -22,7 +22,7 @@
 #include <string.h>
 
 #include "mesh.h"
-#include "regular_file.h"
+#include "core/regular_file.h"
 
 typedef struct {
     const char *path;

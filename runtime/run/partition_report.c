@@ -9,7 +9,7 @@
 #include <stdlib.h>
 
 #include "internal.h"
-#include "partition.h"
+#include "geom/partition.h"
 
 /* One body's report; 0, or -1 after a message. */
 static int body_report(const sph_model *m, const sph_body_desc *d, int nparts)

@@ -25,7 +25,7 @@
 #include <stdlib.h>
 #include "internal.h"
 #include "partition.h"
-#include "sph_limits.h"
+#include "core/limits.h"
 
 /* The lattice: box minimum, spacing, points and tiles per compact component. */
 typedef struct {
