@@ -15,7 +15,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "geom/fill.h"
 #include "geom/partition.h"
+#include "geom/region.h"
 
 typedef struct {
     sph_shape shape;

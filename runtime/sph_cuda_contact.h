@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "contact/contact_law.h"
+#include "contact/device.h"
 #ifndef SPH_CUDA_EMULATE
 #include <cub/device/device_radix_sort.cuh>
 #else

@@ -1,4 +1,4 @@
-/* contact.c — contact between the particles of different bodies (sphrt.h).
+/* contact.c — contact between the particles of different bodies (contact.h).
  *
  * Particles are spheres of diameter dx (3D) or cylinders of diameter dx and unit length
  * (2D, plane strain).  Particles i of body A and j of body B, at distance r = |x_i - x_j|
@@ -27,9 +27,16 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "contact.h"
 #include "contact_law.h"
 #include "contact_search.h"
-#include "internal.h"
+#include "device.h"
+#include "core/exit_codes.h"
+#include "core/message.h"
+#include "scene/body.h"
+#include "scene/body_desc.h"
+#include "scene/model.h"
+#include "scene/sim.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846

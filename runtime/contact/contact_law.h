@@ -1,13 +1,13 @@
 /* contact_law.h — the contact force of one particle pair (the law is described at the top of
- * runtime/contact.c), and the search's cell of a coordinate.  One source for both targets:
- * runtime/contact.c and contact_search.c call them on the CPU and runtime/sph_cuda_contact.h on
- * the device (SPH_HD: __host__ __device__ under nvcc). */
+ * contact.c), and the search's cell of a coordinate.  One source for both targets: contact.c
+ * and contact_search.c call them on the CPU and cuda/contact.h on the device (SPH_HD:
+ * __host__ __device__ under nvcc). */
 #ifndef SPHRT_CONTACT_LAW_H
 #define SPHRT_CONTACT_LAW_H
 
 #include <math.h>
 
-#include "sphrt.h"
+#include "core/defs.h"
 
 /* The law of a pair of bodies. */
 typedef struct {
@@ -83,7 +83,7 @@ SPH_HD static inline void sph_contact_pair(const sph_pair_law *L, int D, const d
     *w2 = fmax(*w2, kt / L->mstar);
 }
 
-/* The contact's sums of a step, in this order on the device (runtime/sph_cuda_contact.h; the
+/* The contact's sums of a step, in this order on the device (cuda/contact.h; the
  * first four are zeroed before each step's pairs): the stored energy, the largest omega^2 of
  * a pair in contact, the closeness of the closest pair (below), the dissipated power; then
  * the dissipated energy so far and the closeness's level (constants of the scene). */
@@ -112,27 +112,5 @@ SPH_HD static inline double sph_contact_bound(double w2, double w2ref, int near)
     const double w = near ? fmax(w2, w2ref) : w2;
     return w > 0 ? 1.0 / sqrt(w) : INFINITY;
 }
-
-/* For device targets, which compute contact themselves (runtime/sph_cuda_contact.h): the
- * pair laws of scene s, nbodies x nbodies (made on the first call), and the state the device
- * computed, handed back for sph_contact_dt and sph_contact_energies. */
-#ifdef __cplusplus
-extern "C" {
-#endif
-const sph_pair_law *sph_contact_laws(sph_sim *s);
-void sph_contact_set(sph_sim *s, double stored, double dissipated, double w2max, double close);
-/* The level of the contact's closeness (sph_contact_closeness): half the search's skin. */
-double sph_contact_level(const sph_sim *s);
-/* The closeness of the closest pair at the last step (the level before the first). */
-double sph_contact_close(const sph_sim *s);
-/* On many processes (contact_partners.c): the particles of other processes within `reach` of
- * the box of this process's n particles (bodies body[], positions x, velocities v; D values
- * each) of another body, as records of 1 + 2 D doubles (body, position, velocity) in
- * *partners (malloc'd; free it); returns how many.  Collective. */
-int sph_contact_partners(const sph_par *par, int D, int nbodies, int n, const int *body,
-                         const double *x, const double *v, double reach, double **partners);
-#ifdef __cplusplus
-}
-#endif
 
 #endif

@@ -7,7 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "contact_law.h"
+#include "device.h"
+#include "core/exit_codes.h"
+#include "core/message.h"
+#include "par/par.h"
 
 static void *alloc_or_exit(size_t bytes)
 {

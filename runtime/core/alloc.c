@@ -11,7 +11,7 @@
 #include <string.h>
 #include <sys/mman.h>
 
-#include "internal.h"
+#include "alloc.h"
 
 void *sph_alloc_large(size_t bytes, int zero)
 {

@@ -12,7 +12,8 @@
  *  Everything is 0 for q >= 2.
  */
 #include <math.h>
-#include "sphrt.h"
+
+#include "kernel.h"
 
 double sph_kernel_w(sph_kernel_kind k, int dim, double r, double h)
 {

@@ -3,7 +3,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 
-#include "sphrt.h"
+#include "message.h"
 
 static const char *program = "sph";
 

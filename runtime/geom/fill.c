@@ -23,9 +23,13 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include "internal.h"
+
+#include "fill.h"
 #include "partition.h"
+#include "region.h"
+#include "core/defs.h"
 #include "core/limits.h"
+#include "core/message.h"
 
 /* The lattice: box minimum, spacing, points and tiles per compact component. */
 typedef struct {

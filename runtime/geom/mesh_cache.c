@@ -12,7 +12,8 @@
 #include <string.h>
 
 #include "mesh.h"
-#include "sphrt.h"
+#include "core/exit_codes.h"
+#include "core/message.h"
 
 static struct {
     const char *file;  /* a surface file, or NULL */

@@ -4,8 +4,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "internal.h"
+#include "fill.h"
 #include "partition.h"
+#include "region.h"
 
 int sph_fill_part(const sph_region *r, int dim, double dx, double y_plane, double radius,
                   int range, int part, int nparts, sph_part_fill *out)

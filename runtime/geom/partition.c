@@ -15,8 +15,10 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "internal.h"
+
 #include "partition.h"
+#include "region.h"
+#include "core/defs.h"
 
 /* Boxes of fewer lattice points are visited by one thread: the many small nodes deep in the
  * tree cost more to share out than to count (much more on a machine whose cores are busy). */

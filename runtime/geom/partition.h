@@ -23,7 +23,8 @@
 #define SPH_PARTITION_H
 
 #include <stdint.h>
-#include "sphrt.h"
+
+#include "region.h"
 
 /* The fill lattice of a region: point k along compact component c (x, z in 2D) at
  * lo[c] + (k + 1/2) dx, k = 0 .. nk[c] - 1; beyond dim nk is 1. */

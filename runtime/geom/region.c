@@ -28,11 +28,12 @@
  * a cylinder becomes the rectangle of half-width r around its x-z projected axis, or the disc
  * of radius r when the axis is along y (projected axis of zero length), and a mesh is cut by
  * the plane.
- * The *_dim functions below are exported for fill.c and select.c (declared in internal.h).
+ * The *_dim functions below are exported for fill.c and select.c (declared in region.h).
  */
 #include <math.h>
-#include "internal.h"
+
 #include "mesh.h"
+#include "region.h"
 
 /* Signed distance to an axis-aligned box (exact). */
 static double box_sd(const sph_shape *s, const double p[3])

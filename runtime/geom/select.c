@@ -15,7 +15,8 @@
  */
 #include <math.h>
 #include <stdlib.h>
-#include "internal.h"
+
+#include "region.h"
 #include "select.h"
 
 /* 3D point of particle i (2D: (x, y, z) with the given y). */

@@ -2,7 +2,7 @@
 #ifndef SPHRT_SELECT_H
 #define SPHRT_SELECT_H
 
-#include "sphrt.h"
+#include "region.h"
 
 /* Particles (of X, n×dim) whose distance to region r is <= dx (the BC's `near`).
  * Returns the count; *idx is malloc'ed (may be NULL when the count is 0). */

@@ -30,8 +30,14 @@
 #include <string.h>
 
 #include "checkpoint.h"
-#include "geom/partition.h"
+#include "contact/contact.h"
+#include "core/message.h"
 #include "core/regular_file.h"
+#include "geom/partition.h"
+#include "par/par.h"
+#include "scene/body.h"
+#include "scene/sim.h"
+#include "scene/state_arrays.h"
 
 static const char MAGIC[8] = {'S', 'P', 'H', 'C', 'K', 'P', 'T', '\n'};
 enum { VERSION = 3 }; /* 3: bodies in pieces by global id; 2: the contact's closeness */

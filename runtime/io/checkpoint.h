@@ -5,7 +5,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "internal.h"
+#include "scene/sim.h"
 
 /* Writing: records (a name and bytes) into PATH.part, renamed to PATH at the commit.  An I/O
  * error is reported at the commit, which then returns -1 and leaves the previous PATH. */

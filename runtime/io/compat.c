@@ -14,6 +14,8 @@
 #include <string.h>
 
 #include "compat.h"
+#include "csv.h"
+#include "scene/model.h"
 
 int sph_compat_mk(const sph_model *m, int i)
 {

@@ -3,8 +3,8 @@
 #ifndef SPHRT_COMPAT_H
 #define SPHRT_COMPAT_H
 
-#include "output.h"
-#include "sphrt.h"
+#include "csv.h"
+#include "scene/model.h"
 
 typedef struct {
     sph_csv energies;     /* DeformStruc_Energies.csv */

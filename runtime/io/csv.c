@@ -6,7 +6,6 @@
  *
  * A checkpoint records how long every open file is (sph_csv_open_files); a run resumed from
  * it keeps those files, cut back to that length, and appends to them (sph_csv_resume). */
-#include "output.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -14,6 +13,9 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include "csv.h"
+#include "core/message.h"
 
 /* The files open now (for a checkpoint), and those a resumed run keeps. */
 static struct {

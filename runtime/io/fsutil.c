@@ -1,6 +1,5 @@
 /* fsutil.c — file-system helpers: folders, files written whole (beside their name, then
  * renamed), and the files a run leaves in its output folder. */
-#include "output.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -10,6 +9,9 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/types.h>
+
+#include "fsutil.h"
+#include "core/message.h"
 
 /* Creates one directory; an existing directory is fine. */
 static int mkdir_one(const char *dir)

@@ -3,13 +3,16 @@
  * member yet, which decides where commas go.  Nesting is limited to 31 levels.  The file is
  * written beside its name and renamed over it when closed (sph_open_whole): a reader, or a
  * run killed while writing it, never sees a part of one. */
-#include "output.h"
 
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "fsutil.h"
+#include "json.h"
+#include "core/message.h"
 
 #define JSON_MAX_DEPTH 31
 

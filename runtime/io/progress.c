@@ -1,4 +1,4 @@
-/* progress.c — the progress line and the wall clock.
+/* progress.c — the progress line of a run (progress.h).
  *
  * Two kinds of line: on a terminal (stderr is one, not quiet) one line rewritten in place
  * four times a second, as wide as the terminal allows; in a log (stdout is not a terminal: a
@@ -9,45 +9,17 @@
  *
  * p->enabled is 0 when no terminal line is shown, 1 when lines may be shown, and 2 once one
  * has been printed (so finish ends it with a newline). */
-#include "output.h"
-
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/ioctl.h>
-#include <time.h>
 #include <unistd.h>
+
+#include "progress.h"
+#include "core/clock.h"
 
 #define PROGRESS_INTERVAL 0.25 /* seconds between updates on a terminal: 4 Hz */
 #define LOG_WIDTH 80           /* a log's lines, and a terminal's of unknown width */
-
-double sph_wall_time(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-double sph_cpu_time(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-double sph_idle_time(void)
-{
-    /* Linux: the first line of /proc/stat, "cpu user nice system idle iowait ...", in ticks
-     * of 1/sysconf(_SC_CLK_TCK) s, summed over the cores */
-    FILE *f = fopen("/proc/stat", "r");
-    if (!f)
-        return -1;
-    unsigned long long user, nice, sys, idle, iowait;
-    const int n = fscanf(f, "cpu %llu %llu %llu %llu %llu", &user, &nice, &sys, &idle, &iowait);
-    fclose(f);
-    const long tick = sysconf(_SC_CLK_TCK);
-    return n == 5 && tick > 0 ? (double)(idle + iowait) / (double)tick : -1;
-}
 
 void sph_progress_start(sph_progress *p, double t_end, int quiet, double log_every)
 {

@@ -7,7 +7,6 @@
  *
  * Both files are written beside their name and renamed over it once complete
  * (sph_open_whole): ParaView, or a run killed while writing, never sees a part of one. */
-#include "output.h"
 
 #include <errno.h>
 #include <math.h>
@@ -15,6 +14,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "fsutil.h"
+#include "vtu.h"
+#include "core/defs.h"
+#include "core/message.h"
+#include "scene/body.h"
+#include "scene/body_desc.h"
 
 #define VTK_VERTEX 1
 

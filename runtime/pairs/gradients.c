@@ -11,7 +11,11 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include "sphrt.h"
+
+#include "gradients.h"
+#include "core/exit_codes.h"
+#include "core/kernel.h"
+#include "core/message.h"
 
 /* Cofactor matrix of the dim×dim matrix m (row-major) into c; returns det m. */
 static double cofactor(const double *m, int dim, double *c)

@@ -27,7 +27,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "internal.h"
+
+#include "neighbours.h"
+#include "core/alloc.h"
+#include "core/exit_codes.h"
+#include "core/message.h"
 
 /* The search: points, pair criterion and (for the cell list) the grid. */
 typedef struct {

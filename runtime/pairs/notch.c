@@ -32,8 +32,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
 #include "notch.h"
-#include "sphrt.h"
+#include "core/exit_codes.h"
+#include "core/message.h"
 
 #define NOTCH_TOL 1e-9
 

@@ -1,5 +1,5 @@
 /* offset_blocks.c — the offset blocks of a 3D body's pair passes (sph_body's ob_* and mb_*,
- * sphrt.h; templates/body_forces.c, OFFSET_BLOCKS and MOMENTUM_BLOCKS).
+ * scene/body.h; templates/body_forces.c, OFFSET_BLOCKS and MOMENTUM_BLOCKS).
  *
  * On a lattice, blocks of 8 consecutive particles share most of their offsets: the
  * neighbour at a given lattice offset is j = i + o for the block's particles, with the same
@@ -29,7 +29,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "internal.h"
+#include "offset_blocks.h"
+#include "stencil.h"
+#include "core/alloc.h"
+#include "core/exit_codes.h"
+#include "core/message.h"
+#include "scene/body.h"
 
 /* the lanes' share (per mille) the masks must fill: the gradient's blocks, the momentum's */
 enum { LANES = SPH_OB_LANES, OB_PERMILLE = 450, MB_PERMILLE = 650, KBITS = 24, OBITS = 28 };

@@ -1,4 +1,4 @@
-/* stencil.c — the lattice stencil of a body's pair passes (sph_body's st_*, sphrt.h).
+/* stencil.c — the lattice stencil of a body's pair passes (sph_body's st_*, scene/body.h).
  *
  * On a lattice the particles are ordered slab by slab (setup.c), so away from the surfaces,
  * notches and the halo the neighbour at a given lattice offset is j = i + o, the same o for
@@ -20,7 +20,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "sphrt.h"
+#include "stencil.h"
+#include "core/exit_codes.h"
+#include "core/message.h"
+#include "scene/body.h"
 
 int sph_stencil_off;
 
@@ -110,7 +113,7 @@ static inline int rest_pair(const uint8_t *in, int i, int j)
     return !in[i] || !in[j];
 }
 
-/* The rest lists (sphrt.h), from the half lists; in[i]: particle i is in a run. */
+/* The rest lists (scene/body.h), from the half lists; in[i]: particle i is in a run. */
 static void rest_lists(sph_body *b, const uint8_t *in)
 {
     const int n = b->nown;

@@ -1,9 +1,9 @@
 /* par.c — the processes of a run on one process (sph_par_one): every agreement is this
- * process's own, and there is no halo.  The many-process version is runtime/mpi/par_mpi.c. */
+ * process's own, and there is no halo.  The many-process version is mpi/par_mpi.c. */
 #include <stdlib.h>
 #include <string.h>
 
-#include "sphrt.h"
+#include "par.h"
 
 static void one_values(double *x, int n) { (void)x, (void)n; }
 static int one_agree(int bad) { return bad; }

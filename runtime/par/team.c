@@ -1,8 +1,9 @@
 /* team.c — the number of threads of a run's steps, from the share of its threads' time the
  * machine gives it and from timed trials (team.h). */
-#include "team.h"
 
 #include <string.h>
+
+#include "team.h"
 
 void sph_team_init(sph_team *t, int max, int fixed)
 {

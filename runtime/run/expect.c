@@ -4,7 +4,11 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "internal.h"
+#include "expect.h"
+#include "measure.h"
+#include "table.h"
+#include "io/json.h"
+#include "scene/model.h"
 
 static double column(const sph_series *s, int row, int col)
 {

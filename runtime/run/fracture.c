@@ -11,7 +11,10 @@
  * a kernel-averaged gradient would do.  Called at output times only. */
 #include <stdlib.h>
 
-#include "sphrt.h"
+#include "measure.h"
+#include "par/par.h"
+#include "scene/body.h"
+#include "scene/body_desc.h"
 
 double sph_fracture_energy(const sph_body *b)
 {

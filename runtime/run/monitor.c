@@ -12,7 +12,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "internal.h"
+#include "measure.h"
+#include "monitor.h"
+#include "core/tensor3.h"
+#include "par/par.h"
+#include "scene/body.h"
+#include "scene/model.h"
+#include "scene/sim.h"
 
 typedef struct {
     int particle;

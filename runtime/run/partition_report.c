@@ -8,8 +8,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "internal.h"
+#include "partition_report.h"
+#include "core/clock.h"
+#include "core/message.h"
+#include "geom/fill.h"
 #include "geom/partition.h"
+#include "scene/body_desc.h"
+#include "scene/model.h"
 
 /* One body's report; 0, or -1 after a message. */
 static int body_report(const sph_model *m, const sph_body_desc *d, int nparts)

@@ -18,8 +18,36 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/checkpoint.h"
+#include "expect.h"
+#include "main.h"
+#include "measure.h"
+#include "monitor.h"
+#include "options.h"
+#include "partition_report.h"
 #include "run_state.h"
+#include "setup.h"
+#include "sim.h"
+#include "time_step.h"
+#include "contact/contact.h"
+#include "core/clock.h"
+#include "core/defs.h"
+#include "core/exit_codes.h"
+#include "core/message.h"
+#include "core/profile.h"
+#include "io/checkpoint.h"
+#include "io/compat.h"
+#include "io/csv.h"
+#include "io/fsutil.h"
+#include "io/json.h"
+#include "io/profile_report.h"
+#include "io/progress.h"
+#include "io/vtu.h"
+#include "pairs/stencil.h"
+#include "par/par.h"
+#include "par/team.h"
+#include "scene/body.h"
+#include "scene/model.h"
+#include "scene/sim.h"
 
 /* The stability monitor's periodic check: every this many steps (and before every output). */
 enum { CHECK_EVERY = 20 };
@@ -421,8 +449,8 @@ static void body_summary(sph_json *j, const sph_body *b, const body_stats *st)
     sph_json_int(j, "particles", (long)st->particles);
     sph_json_int(j, "pairs", (long)st->pairs);
     sph_json_num(j, "mean_neighbours", st->pairs / st->particles);
-    sph_json_int(j, "stencil_particles", (long)st->stencil); /* (runtime/stencil.c) */
-    sph_json_int(j, "offset_block_pairs", (long)st->blocked); /* (runtime/offset_blocks.c) */
+    sph_json_int(j, "stencil_particles", (long)st->stencil); /* (pairs/stencil.c) */
+    sph_json_int(j, "offset_block_pairs", (long)st->blocked); /* (pairs/offset_blocks.c) */
     sph_json_int(j, "momentum_block_pairs", (long)st->mblocked);
     sph_json_num(j, "dx", b->dx);
     sph_json_num(j, "h", b->h);

@@ -6,7 +6,14 @@
 #include <errno.h>
 #include <math.h>
 
+#include "measure.h"
 #include "run_state.h"
+#include "core/clock.h"
+#include "core/message.h"
+#include "io/checkpoint.h"
+#include "io/csv.h"
+#include "io/vtu.h"
+#include "par/par.h"
 
 enum { RUN_TIMES = 10 }; /* the doubles of the record "run.times" */
 

@@ -7,10 +7,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "expect.h"
+#include "monitor.h"
+#include "options.h"
 #include "io/checkpoint.h"
 #include "io/compat.h"
-#include "internal.h"
+#include "io/csv.h"
 #include "par/team.h"
+#include "scene/model.h"
+#include "scene/sim.h"
 
 typedef struct {
     const sph_model *m;

@@ -3,7 +3,17 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "internal.h"
+#include "setup.h"
+#include "sim.h"
+#include "time_step.h"
+#include "contact/contact.h"
+#include "core/exit_codes.h"
+#include "core/message.h"
+#include "core/tensor3.h"
+#include "par/par.h"
+#include "scene/body.h"
+#include "scene/model.h"
+#include "scene/sim.h"
 
 static void initial_speeds(sph_sim *s)
 {

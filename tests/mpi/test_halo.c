@@ -13,7 +13,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "geom/partition.h"
+#include "geom/region.h"
 #include "mpi/halo.h"
+#include "par/par.h"
 
 static double value(const double *x, int dim, int c)
 {

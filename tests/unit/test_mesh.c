@@ -18,8 +18,9 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "geom/fill.h"
 #include "geom/mesh.h"
-#include "sphrt.h"
+#include "geom/region.h"
 
 static int failures = 0;
 static char tmpdir[64];

@@ -2,6 +2,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include "geom/fill.h"
+#include "geom/region.h"
 #include "geom/select.h"
 
 static int failures = 0;

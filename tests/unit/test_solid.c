@@ -16,8 +16,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "geom/fill.h"
 #include "geom/mesh.h"
-#include "sphrt.h"
+#include "geom/region.h"
 
 static int failures = 0;
 
