@@ -2,7 +2,7 @@
  *
  * The CPU target's step wraps every pass it calls in SPH_PASS (profile.h), which adds the
  * pass's wall time here; the CUDA target times its kernels on the device instead (events
- * between launches, runtime/sph_cuda.h) and adds them here by the name of the pass that
+ * between launches, cuda/launch.h) and adds them here by the name of the pass that
  * launched them.  The set-up's stages are timed the same way (SPH_TIMED, run/setup.c).
  * Each entry belongs to the phase it ran in (sph_profile_phase: the set-up, the steps, or the
  * stability checks and outputs between them).  sph_main prints the table at the end of the

@@ -4,7 +4,7 @@
  * 3 the run went unstable (stopped by the monitor; the last good output is kept);
  * 4 output could not be written (or the output folder holds an earlier run's outputs, without
  * --overwrite) or set-up failed; 6 a run with checkpoints stopped by a signal, after writing
- * one; 7 a run without checkpoints stopped by a signal (5, a CUDA failure, is sph_cuda.h's).
+ * one; 7 a run without checkpoints stopped by a signal (5, a CUDA failure, is cuda/check.h's).
  *
  * A run never leaves a mix of two runs or a part of a file: summary.json says "running"
  * from before the first output, and how the run ended at its end; the files written whole

@@ -143,7 +143,7 @@ int sph_sim_advance(sph_sim *s, sph_advance *a)
 {
     const long step0 = s->step;
     a->collapsed = 0;
-    /* the device chooses the time steps (runtime/sph_cuda.h); on many processes they must
+    /* the device chooses the time steps (cuda/advance.h); on many processes they must
      * agree on each, so the host chooses it after every step, as on the CPU */
     if (s->m->advance && s->par->size == 1) {
         s->m->advance(s, a);

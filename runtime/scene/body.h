@@ -131,15 +131,15 @@ struct sph_body {
      * Where every pair of a body lies at i + its slot's offset (a box), fb and fb_k are NULL
      * and fb_mask holds the pairs: bit s & 31 of fb_mask[(s >> 5)*n + i] says whether
      * particle i has slot s's neighbour i + fb_off[s], of table entry fb_slotk[s] (sph_slot,
-     * sph_cuda.h).  NULL on the CPU. */
+     * cuda/slots.h).  NULL on the CPU. */
     int *fb_count, *fb, *fb_k;
     unsigned *fb_mask;
     int *fb_off, *fb_slotk;
     /* Device targets: u and v by component (us[r*n + i]), as the pair passes read their
-     * neighbours' (sph_cuda_components, sph_cuda.h).  NULL on the CPU. */
+     * neighbours' (sph_cuda_components, cuda/components.h).  NULL on the CPU. */
     double *us, *vs;
     /* Device targets: the reductions below as the device sums them (SPH_RED_* of
-     * sph_cuda.h), read back once per step.  NULL on the CPU. */
+     * cuda/sums.h), read back once per step.  NULL on the CPU. */
     double *red;
 
     double *state;        /* n*nstate state of the material law (NULL without state) */

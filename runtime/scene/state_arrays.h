@@ -10,8 +10,8 @@
 SPH_C_BEGIN
 
 /* The arrays of body b that its passes carry from one step to the next: what a checkpoint
- * saves (checkpoint.c) and a device target copies both ways for it (sph_cuda.h), in this
- * order, those the body has.  nstate: the law's state values per particle (b->desc->nstate;
+ * saves (io/checkpoint.c) and a device target copies both ways for it (cuda/transfer.h), in
+ * this order, those the body has.  nstate: the law's state values per particle (b->desc->nstate;
  * a device view has no desc).  The rest (Q, Cv, A, sigma) every step or output makes anew. */
 #define SPH_STATE_ARRAYS 15
 typedef struct {
