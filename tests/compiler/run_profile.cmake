@@ -1,4 +1,4 @@
-# --profile on both targets (runtime/profile.c):
+# --profile on both targets (runtime/core/profile.c):
 #   -DSPHC= -DCXX= -DMODEL= -DINCLUDE= -DLIB= -DWORKDIR= -DEND= -DPASSES=a,b,...
 # The CPU program and the CUDA target's emulated one (the device's passes run on the host,
 # timed by the events of runtime/sph_cuda.h) run the model to END with --profile.  Each must

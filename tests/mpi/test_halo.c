@@ -1,5 +1,5 @@
 /* The halo exchange of runs on many processes (runtime/mpi/halo.h), run on 1 to 4 processes:
- * each process fills its part of a body (runtime/partition.h: by counting, not the whole
+ * each process fills its part of a body (runtime/geom/partition.h: by counting, not the whole
  * body) and its halo, makes the exchange plan, and exchanges values computed from the
  * particles' positions, held as a body holds them (own particles first, then the halo: the
  * fields of sph_halo_post/wait).  Checked on every process:

@@ -1,4 +1,4 @@
-/* test_mesh.c — closed surfaces from VTK and STL files (runtime/mesh.h) and their fill.
+/* test_mesh.c — closed surfaces from VTK and STL files (runtime/geom/mesh.h) and their fill.
  *
  * Closed forms: a unit cube (volume 1) written as ASCII STL with some triangles reversed,
  * as ASCII and BINARY VTK with quads; an octahedron |x| + |y| + |z| <= 1 (volume 4/3) whose

@@ -1,4 +1,4 @@
-/* test_solid.c — prisms and pyramids given by their corners (runtime/mesh_solid.c) and
+/* test_solid.c — prisms and pyramids given by their corners (runtime/geom/mesh_solid.c) and
  * their fill.
  *
  * Closed forms: an L-shaped prism (a base that is not convex) of volume 4 x 2 = 8, filled
