@@ -1,4 +1,4 @@
-/* sph_limits.h — limits the compiler checks and the program enforces, written once. */
+/* limits.h — limits the compiler checks and the program enforces, written once. */
 #ifndef SPH_LIMITS_H
 #define SPH_LIMITS_H
 

@@ -39,7 +39,7 @@ typedef struct {
 } lattice;
 
 /* The most lattice points a body's bounding box may hold (particle indices are ints):
- * SPH_MAX_LATTICE_POINTS, sph_limits.h. */
+ * SPH_MAX_LATTICE_POINTS, core/limits.h. */
 
 /* Sets up the lattice of region r; returns 0 when it is empty or invalid, -1 when it holds
  * more than SPH_MAX_LATTICE_POINTS points (about *total). */
