@@ -6,8 +6,8 @@
  *   cuda_cache_model [--l1 KB] [--resident B] [--block T] [--groups G]
  *
  * Built by bench/cuda-cache (g++, the CUDA target's model.cu emulated on the host, which this
- * file includes): the set-up and the device's full lists (sph_full_lists, runtime/sph_cuda.h)
- * are the program's own.  It answers how the order of the fixed slots changes the traffic
+ * file includes): the set-up and the device's full lists (sph_full_lists,
+ * runtime/cuda/full_lists.h) are the program's own.  It answers how the order of the fixed slots changes the traffic
  * between L1 and L2 before a GPU times it: each layout of the same pairs is traced.
  *   offset  the fixed slots in the order of their offsets j - i (sph_slot_ranks), as lists;
  *   key     the fixed slots in the order of the table's keys (+o, -o of each entry in turn),

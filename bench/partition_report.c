@@ -1,13 +1,13 @@
-/* partition_report.c — the decomposition of one body into parts (runtime/partition.h) for a
- * list of part counts: particles per part, balance, halo per part and the halo fraction, the
- * time each step takes, and what one process computes alone.  Built and run by
+/* partition_report.c — the decomposition of one body into parts (runtime/geom/partition.h)
+ * for a list of part counts: particles per part, balance, halo per part and the halo
+ * fraction, the time each step takes, and what one process computes alone.  Built and run by
  * bench/partition; not part of the test suite.
  *
  *   partition_report [--parts 8,64,512,4096] [--coefh C] [--range R] [--no-count]
  *                    box DIM DX X0 Y0 Z0 X1 Y1 Z1
  *   partition_report [options] surface FILE DX
  *
- * The kernel support is 2h, h = coefh sqrt(dim) dx (runtime/setup.c); --range is nbsrange.
+ * The kernel support is 2h, h = coefh sqrt(dim) dx (runtime/run/setup.c); --range is nbsrange.
  * --no-count leaves out the whole tree by counting (the points' tree and one process's
  * share by counting are still computed). */
 #include <math.h>
@@ -15,7 +15,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "partition.h"
+#include "geom/fill.h"
+#include "geom/partition.h"
+#include "geom/region.h"
 
 typedef struct {
     sph_shape shape;

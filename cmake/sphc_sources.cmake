@@ -19,8 +19,8 @@ macro(sphc_sources name)
                               COMPILE_OPTIONS "-Wno-unused-function;-Wno-sign-compare")
   # One folder per stage (docs/architecture.md); files include each other as "stage/file.h".
   file(GLOB_RECURSE SPHC_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/compiler/*.c)
-  # The compiler checks surface files and solids with the runtime's code (runtime/mesh.h).
-  set(SPHC_MESH_SOURCES ${PROJECT_SOURCE_DIR}/runtime/mesh_read.c
-      ${PROJECT_SOURCE_DIR}/runtime/mesh_check.c ${PROJECT_SOURCE_DIR}/runtime/mesh_ray.c
-      ${PROJECT_SOURCE_DIR}/runtime/mesh_solid.c)
+  # The compiler checks surface files and solids with the runtime's code (runtime/geom/mesh.h).
+  set(SPHC_MESH_SOURCES ${PROJECT_SOURCE_DIR}/runtime/geom/mesh_read.c
+      ${PROJECT_SOURCE_DIR}/runtime/geom/mesh_check.c ${PROJECT_SOURCE_DIR}/runtime/geom/mesh_ray.c
+      ${PROJECT_SOURCE_DIR}/runtime/geom/mesh_solid.c)
 endmacro()

@@ -32,7 +32,7 @@
 
 #include <math.h>
 
-#include "sphrt.h" /* SPH_HD: these run on the device too (CUDA target); sph_max, sph_min */
+#include "core/defs.h" /* SPH_HD: these run on the device too (CUDA target); sph_max, sph_min */
 
 /* Off-diagonal entries at or below this (relative to the largest entry) count as zero. */
 #define SPH_EIG_TOL 1e-18

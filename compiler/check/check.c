@@ -10,7 +10,7 @@
 #include "reference_csv.h"
 #include "seen_settings.h"
 #include "util/diag.h"
-#include "mesh.h"
+#include "geom/mesh.h"
 #include "util/source.h"
 #include "model/eval.h"
 #include "ir/law.h"
@@ -247,7 +247,7 @@ static int check_scene(Model *m, const Item *scene)
     if (!(m->t_out > 0))
         m->t_out = m->t_end / 100.0;
     /* The program reaches its output times by adding the interval, which stalls where it is
-     * below the spacing of doubles near t (runtime/run.c, too_many_outputs). */
+     * below the spacing of doubles near t (runtime/run/run.c, too_many_outputs). */
     if (m->t_end / m->t_out > 1e9) {
         const SrcLoc *at = setting_loc(scene, "output");
         diag_error(at ? *at : scene->loc, "the output interval %g s gives %.3g outputs up "
@@ -399,7 +399,7 @@ static int check_scene_item(Model *m, const Program *p)
     return check_scene(m, scene) != 0;
 }
 
-/* Surfaces region r adds to the program's cache (runtime/mesh_cache.c) beyond those in
+/* Surfaces region r adds to the program's cache (runtime/geom/mesh_cache.c) beyond those in
  * seen[0..*nseen-1], the files of unmoved surfaces counted so far (each counted once). */
 static int meshes_of(const Region *r, const char **seen, int *nseen)
 {

@@ -17,8 +17,8 @@
 #include "model/elastic.h"
 #include "util/diag.h"
 #include "util/source.h"
-#include "mesh.h"
-#include "sph_limits.h"
+#include "geom/mesh.h"
+#include "core/limits.h"
 
 /* ------------------------------------------------------------------ shapes */
 
@@ -170,7 +170,7 @@ static int surface_map(const Model *m, const NamedCall *c, ShapePrim *p)
 }
 
 /* surface(file "name" [scale s | matrix [r1] [r2] [r3]] [move [b]]): the closed surface in a
- * VTK or STL file (runtime/mesh.h), each point x of it moved to A x + b (A = s I or the
+ * VTK or STL file (runtime/geom/mesh.h), each point x of it moved to A x + b (A = s I or the
  * matrix), read and checked now and read again by the program, which gets its absolute
  * path. */
 static int check_surface(const Model *m, const NamedCall *c, ShapePrim *p)
@@ -212,7 +212,7 @@ static int corners(const Model *m, const Setting *s, ShapePrim *p)
 }
 
 /* prism(base [p1] [p2] .. top [q1] [q2] ..) and pyramid(apex [a] base [p1] [p2] ..), the
- * solids of GenCase's <drawprism> and <drawpyramid>: their surface (runtime/mesh_solid.c)
+ * solids of GenCase's <drawprism> and <drawpyramid>: their surface (runtime/geom/mesh_solid.c)
  * is built and checked now, and again by the program from the same corners. */
 static int check_solid(const Model *m, const NamedCall *c, ShapePrim *p)
 {

@@ -13,7 +13,7 @@
 
 #include "reference_csv.h"
 #include "util/diag.h"
-#include "regular_file.h"
+#include "core/regular_file.h"
 
 static int blank(const char *s)
 {

@@ -6,7 +6,7 @@
 #include "arith.h"
 #include "builtins.h"
 
-/* Order matters: it is the field order of sph_pt in runtime/sphrt.h. */
+/* Order matters: it is the field order of sph_pt in runtime/scene/point.h. */
 const char *const BUILTIN_VARIABLES[] = {
     "x0", "y0", "z0", "x", "y", "z", "ux", "uy", "uz", "t", "dt", "dx",
 };

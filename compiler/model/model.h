@@ -8,13 +8,13 @@
 #include "front/ast.h"
 #include "util/name_index.h"
 
-/* in the order of sph_shape_kind (runtime/sphrt.h) */
+/* in the order of sph_shape_kind (runtime/geom/region.h) */
 typedef enum { SHAPE_BOX, SHAPE_CYLINDER, SHAPE_SPHERE, SHAPE_SURFACE, SHAPE_PRISM,
                SHAPE_PYRAMID } ShapeKind;
 
 typedef struct {
     ShapeKind kind;
-    double a[3], b[3], r;   /* as sph_shape (runtime/sphrt.h); a surface, prism or pyramid:
+    double a[3], b[3], r;   /* as sph_shape (runtime/geom/region.h); a surface, prism or pyramid:
                              * its bounding box */
     int subtract;
     char *file;             /* surface: the file, absolute (read by the program at run time) */

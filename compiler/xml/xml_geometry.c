@@ -28,7 +28,7 @@
 #include <string.h>
 
 #include "util/diag.h"
-#include "mesh.h"
+#include "geom/mesh.h"
 #include "util/source.h"
 #include "xml_internal.h"
 
@@ -592,7 +592,7 @@ static int solid_ok(const XmlDraw *d, const char *tag)
 }
 
 /* <drawprism> (the base's corners, then the top's, as many) and <drawpyramid> (the apex,
- * then the base's corners): the sph prism and pyramid (runtime/mesh_solid.c).  The card's
+ * then the base's corners): the sph prism and pyramid (runtime/geom/mesh_solid.c).  The card's
  * mask chooses the faces GenCase draws in its face mode; a body is the filled solid. */
 static int drawsolid(XmlCtx *x, const xmlNode *n, int mk)
 {

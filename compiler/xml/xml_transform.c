@@ -16,7 +16,7 @@
 #include <string.h>
 
 #include "util/diag.h"
-#include "mesh.h"
+#include "geom/mesh.h"
 #include "xml_internal.h"
 
 /* Nesting of <matrixsave/> without <matrixload/>: far beyond any case, and finite. */

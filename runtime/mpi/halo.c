@@ -1,9 +1,12 @@
 /* halo.c — the exchange plan of a part's halo and the exchange itself (halo.h). */
-#include "halo.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "halo.h"
+#include "geom/partition.h"
+#include "par/par.h"
 
 enum { TAG_COUNT = 1, TAG_IDS = 2, TAG_VALUES = 3 };
 

@@ -1,7 +1,7 @@
 /* halo.h — the exchange of a part's halo between processes (MPI), for runs on many processes
  * (docs/mpi.md).
  *
- * A part (runtime/partition.h, sph_rcb_local) holds its own particles and its halo, the
+ * A part (geom/partition.h, sph_rcb_local) holds its own particles and its halo, the
  * particles of other parts within the kernel support of its own.  Neighbours in the
  * reference configuration never change, so the plan of what to send where is made once:
  * every process tells each part it takes halo particles from which ids it needs (the
@@ -12,14 +12,14 @@
  * can go on, a wait ends it and puts the halo's values in place.
  *
  * The values are fields of arrays that hold the own particles first and the halo after them
- * (a body's: sph_field of sphrt.h), or packed by the caller (a device target's). */
+ * (a body's: sph_field of par/par.h), or packed by the caller (a device target's). */
 #ifndef SPH_MPI_HALO_H
 #define SPH_MPI_HALO_H
 
 #include <mpi.h>
 #include <stdint.h>
 
-#include "partition.h"
+#include "par/par.h"
 
 typedef struct {
     MPI_Comm comm;

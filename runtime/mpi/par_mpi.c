@@ -8,6 +8,12 @@
 #include <unistd.h>
 
 #include "halo.h"
+#include "core/exit_codes.h"
+#include "core/message.h"
+#include "par/par.h"
+#include "run/main.h"
+#include "scene/body.h"
+#include "scene/model.h"
 
 #if defined(__has_include)
 #if __has_include(<mpi-ext.h>)

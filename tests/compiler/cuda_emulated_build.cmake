@@ -2,7 +2,7 @@
 #   -DSPHC= -DCXX= -DMODEL= -DINCLUDE= -DLIB= -DWORKDIR= [-DDEFINE=NAME[,NAME...]]
 # Sets `stem`, the model's name, `cpu`, the CPU program, and `emulated`, the CUDA target's
 # model.cu (WORKDIR/STEM.cu) compiled by the host C++ compiler with SPH_CUDA_EMULATE
-# (runtime/sph_cuda.h): the device passes run serially on host memory.  Both programs are
+# (runtime/cuda/emulate.h): the device passes run serially on host memory.  Both programs are
 # named for the model.  With EMIT_ONLY set, only model.cu is written.  DEFINE: a macro the
 # emulated build defines too (SPH_CUDA_RECOMPUTE: the pair gradients from the positions).
 

@@ -1,4 +1,4 @@
-# The order of the CUDA target's fixed slots does what it is for (runtime/sph_cuda.h,
+# The order of the CUDA target's fixed slots does what it is for (runtime/cuda/full_lists.h,
 # sph_slot_ranks): bench/cuda_cache_model.cpp traces the 3D momentum and stress passes' loads
 # over the model's own pair lists through a model of a GPU's L1 cache (200 KB, two blocks of
 # 256 threads), with the slots in the order of their offsets (the layout the target builds)

@@ -1,4 +1,4 @@
-# The CUDA target's passes run without a GPU (SPH_CUDA_EMULATE, runtime/sph_cuda.h):
+# The CUDA target's passes run without a GPU (SPH_CUDA_EMULATE, runtime/cuda/emulate.h):
 #   -DSPHC= -DCXX= -DMODEL= -DINCLUDE= -DLIB= -DWORKDIR= -DEND= [-DHOSTSTEP=ON]
 # The model is built for both targets: the CPU program, and model.cu compiled by the host
 # C++ compiler with the device passes run serially on host memory (full pair lists, device

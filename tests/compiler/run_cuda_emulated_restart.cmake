@@ -1,4 +1,4 @@
-# Checkpoints of the CUDA target (SPH_CUDA_EMULATE, runtime/sph_cuda.h):
+# Checkpoints of the CUDA target (SPH_CUDA_EMULATE, runtime/cuda/emulate.h):
 #   -DSPHC= -DCXX= -DMODEL= -DINCLUDE= -DLIB= -DWORKDIR= -DEND= -DMID=
 # The emulated program resumed from its own checkpoint writes exactly what its whole run
 # writes (tests/physics/run_restart.cmake, on the device state the checkpoint copies both

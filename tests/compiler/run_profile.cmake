@@ -1,7 +1,7 @@
-# --profile on both targets (runtime/profile.c):
+# --profile on both targets (runtime/core/profile.c):
 #   -DSPHC= -DCXX= -DMODEL= -DINCLUDE= -DLIB= -DWORKDIR= -DEND= -DPASSES=a,b,...
 # The CPU program and the CUDA target's emulated one (the device's passes run on the host,
-# timed by the events of runtime/sph_cuda.h) run the model to END with --profile.  Each must
+# timed by the events of runtime/cuda/launch.h) run the model to END with --profile.  Each must
 # list every pass of PASSES in summary.json's "profile", in the steps, and print the table;
 # on the CPU every one of them once per step (SPH_PASS around each call of the step), and
 # the passes' times add up to at most the step timer's and to most of it (the passes are

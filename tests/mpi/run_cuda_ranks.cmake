@@ -1,6 +1,6 @@
 # The CUDA target on many processes, checked without a GPU: the model's model.cu for many
 # processes (sphc --mpi --target cuda) compiled by MPI's C++ wrapper with SPH_CUDA_EMULATE
-# (runtime/sph_cuda.h: the device passes run serially on host memory, cudaMemcpy a copy), so
+# (runtime/cuda/emulate.h: the device passes run serially on host memory, cudaMemcpy a copy), so
 # that the device's halo exchange (packed on the device, staged through the host) and its
 # host-chosen time steps run as on GPUs; then run_ranks.cmake against the serial CPU program
 # on 1 to 3 processes.

@@ -1,7 +1,7 @@
 # A run checkpointed on 2 processes and resumed on 3, and on 1, gives the whole run's results:
 #   -DSERIAL= -DPROGRAM= (built with sphc --mpi) -DMPIEXEC= -DNPFLAG= -DMPIFLAGS= -DSAME_CSV=
 #   -DOUT= -DEND= -DAT= (the checkpoint's time) [-DARGS=...]
-# Checkpoints hold each body's particles by global id (runtime/checkpoint.c), so a run
+# Checkpoints hold each body's particles by global id (runtime/io/checkpoint.c), so a run
 # resumes on any number of processes.  The resumed runs' energies.csv and measurement files
 # agree with those of the whole serial run within 2e-9 of each column's scale (same_csv.c,
 # run_ranks.cmake), their .pvd lists every frame, and each frame after the checkpoint has one

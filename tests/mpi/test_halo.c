@@ -1,5 +1,5 @@
 /* The halo exchange of runs on many processes (runtime/mpi/halo.h), run on 1 to 4 processes:
- * each process fills its part of a body (runtime/partition.h: by counting, not the whole
+ * each process fills its part of a body (runtime/geom/partition.h: by counting, not the whole
  * body) and its halo, makes the exchange plan, and exchanges values computed from the
  * particles' positions, held as a body holds them (own particles first, then the halo: the
  * fields of sph_halo_post/wait).  Checked on every process:
@@ -13,7 +13,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "halo.h"
+#include "geom/partition.h"
+#include "geom/region.h"
+#include "mpi/halo.h"
+#include "par/par.h"
 
 static double value(const double *x, int dim, int c)
 {

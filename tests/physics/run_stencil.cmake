@@ -1,5 +1,5 @@
-# The pair passes on the lattice stencil's runs (templates/body_stencil.c, runtime/stencil.c)
-# and the 3D gradient's offset blocks (runtime/offset_blocks.c) give the lists' sums in
+# The pair passes on the lattice stencil's runs (templates/body_stencil.c,
+# runtime/pairs/stencil.c) and the 3D gradient's offset blocks (runtime/pairs/offset_blocks.c) give the lists' sums in
 # another order: a model run with them and with --no-stencil agrees within round-off.
 # -DSPHC= -DMODEL= -DOUT= -DEND= -DLEAST= [-DTOL=1e-9] [-DARGS=] [-DBLOCKS=ON [-DMLEAST=]]
 # The model is built once and run to END on one thread both ways; every value of

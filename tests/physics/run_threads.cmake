@@ -1,5 +1,5 @@
 # A run's outputs do not depend on its number of threads (the program takes fewer while the
-# machine is busy, runtime/team.h): -DPROGRAM= -DOUT= -DEND= [-DARGS=...].  The program runs
+# machine is busy, runtime/par/team.h): -DPROGRAM= -DOUT= -DEND= [-DARGS=...].  The program runs
 # to END on 1, 2 and 3 threads (3 on a machine with fewer cores: threads that lose their
 # core) and must write the same energies.csv, measurement files, particle files and .pvd
 # lists, byte for byte: every sum of the passes (the viscous power, the contact's energies,

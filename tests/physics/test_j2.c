@@ -20,7 +20,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "output.h"
+#include "io/vtu.h"
 
 enum { D = 2, NS = 11 }; /* Cp (9), ep, wp */
 

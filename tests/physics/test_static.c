@@ -15,7 +15,7 @@
 #undef main
 
 #include "check.h"
-#include "internal.h"
+#include "run/measure.h"
 
 enum { D = 2 };
 

@@ -12,7 +12,7 @@
 
 #include "check.h"
 #include "contact_checks.h"
-#include "internal.h" /* the stability monitor */
+#include "run/monitor.h" /* the stability monitor */
 
 int main(void)
 {

@@ -1,4 +1,4 @@
-/* test_contact.c — contact between bodies (runtime/contact.c, contact_search.c):
+/* test_contact.c — contact between bodies (runtime/contact/contact.c, contact_search.c):
  *  - the candidate search against brute force (2D and 3D, three bodies, different sizes);
  *  - a 3D head-on collision of two particles against Hertz's solution: largest overlap
  *    (5 m* v^2 / (4 k))^{2/5} and contact time 2.9432 delta_max / v, speed kept (e = 1),
@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "contact_search.h"
+#include "contact/contact_search.h"
 #include "sphrt.h"
 
 #ifndef M_PI

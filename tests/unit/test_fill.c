@@ -2,7 +2,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include "sphrt.h"
+#include "geom/fill.h"
+#include "geom/region.h"
 
 #define PI 3.14159265358979323846
 

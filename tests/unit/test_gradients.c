@@ -6,7 +6,11 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include "sphrt.h"
+#include "core/kernel.h"
+#include "geom/fill.h"
+#include "geom/region.h"
+#include "pairs/gradients.h"
+#include "pairs/neighbours.h"
 #include "unit_check.h"
 
 /* Deterministic uniform random numbers in [-1, 1). */

@@ -1,7 +1,7 @@
 /* test_kernel.c — kernel normalisation, continuity, support and derivative checks. */
 #include <math.h>
 #include <stdio.h>
-#include "sphrt.h"
+#include "core/kernel.h"
 #include "unit_check.h"
 
 static const char *kname(sph_kernel_kind k) { return k == SPH_CUBIC ? "cubic" : "wendland"; }

@@ -1,4 +1,4 @@
-/* test_mesh.c — closed surfaces from VTK and STL files (runtime/mesh.h) and their fill.
+/* test_mesh.c — closed surfaces from VTK and STL files (runtime/geom/mesh.h) and their fill.
  *
  * Closed forms: a unit cube (volume 1) written as ASCII STL with some triangles reversed,
  * as ASCII and BINARY VTK with quads; an octahedron |x| + |y| + |z| <= 1 (volume 4/3) whose
@@ -18,8 +18,9 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "mesh.h"
-#include "sphrt.h"
+#include "geom/fill.h"
+#include "geom/mesh.h"
+#include "geom/region.h"
 
 static int failures = 0;
 static char tmpdir[64];

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <omp.h>
-#include "sphrt.h"
+#include "pairs/neighbours.h"
 
 static int failures = 0;
 

@@ -6,8 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <omp.h>
-#include "notch.h"
-#include "sphrt.h"
+#include "pairs/neighbours.h"
+#include "pairs/notch.h"
 
 static int failures = 0;
 

@@ -1,7 +1,7 @@
 /* test_options.c — command-line parsing of generated programs: defaults, both option
  * spellings, --help, and the rejection of bad input with an error and the usage. */
 #define _POSIX_C_SOURCE 200809L
-#include "output.h"
+#include "run/options.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -2,7 +2,11 @@
  * appended blocks and values checked; .pvd, CSV and JSON files are compared with the
  * expected text; sph_mkdirs creates nested folders. */
 #define _POSIX_C_SOURCE 200809L
-#include "output.h"
+#include "io/csv.h"
+#include "io/fsutil.h"
+#include "io/json.h"
+#include "io/vtu.h"
+#include "scene/body.h"
 
 #include <math.h>
 #include <stdint.h>

@@ -8,7 +8,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "partition.h"
+#include "geom/fill.h"
+#include "geom/partition.h"
+#include "geom/region.h"
+#include "pairs/neighbours.h"
 #include "unit_check.h"
 
 /* A body of the test: its region, dimension, spacing, kernel support and nbsrange. */

@@ -2,7 +2,9 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include "select.h"
+#include "geom/fill.h"
+#include "geom/region.h"
+#include "geom/select.h"
 
 static int failures = 0;
 

@@ -1,4 +1,4 @@
-/* test_solid.c — prisms and pyramids given by their corners (runtime/mesh_solid.c) and
+/* test_solid.c — prisms and pyramids given by their corners (runtime/geom/mesh_solid.c) and
  * their fill.
  *
  * Closed forms: an L-shaped prism (a base that is not convex) of volume 4 x 2 = 8, filled
@@ -16,8 +16,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mesh.h"
-#include "sphrt.h"
+#include "geom/fill.h"
+#include "geom/mesh.h"
+#include "geom/region.h"
 
 static int failures = 0;
 

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
+#include "core/tensor3.h"
 #include "sph_tensor.h"
 #include "unit_check.h"
 

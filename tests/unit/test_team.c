@@ -1,10 +1,10 @@
-/* The number of threads a run's steps take (runtime/team.h), on made-up machines: a step's
+/* The number of threads a run's steps take (runtime/par/team.h), on made-up machines: a step's
  * wall time and the share of its threads' time the process gets, as functions of the
  * thread count and of the time, with noise; batches of 20 steps as the run takes them. */
 #include <math.h>
 #include <stdio.h>
 
-#include "team.h"
+#include "par/team.h"
 #include "unit_check.h"
 
 typedef struct {

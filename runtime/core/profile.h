@@ -1,0 +1,47 @@
+/* profile.h — where the time of a run goes (the program's --profile; profile.c).  The CPU
+ * target's step calls its passes through SPH_PASS(fn, (args)), and the set-up times its stages
+ * with SPH_TIMED(name, statement): when profiling is on, the wall time of the call is added to
+ * its entry (found once per call site) in the phase the run is in; otherwise it costs one
+ * test.  The CUDA target's SPH_PASS is the bare call: its kernels are timed on the device
+ * (cuda/launch.h).  io/profile_report.h reports the entries. */
+#ifndef SPHRT_CORE_PROFILE_H
+#define SPHRT_CORE_PROFILE_H
+
+#include "clock.h"
+#include "defs.h"
+
+SPH_C_BEGIN
+
+enum { SPH_PHASE_STEPS, SPH_PHASE_CHECKS, SPH_PHASE_SETUP }; /* sph_profile_phase */
+extern int sph_profile_on, sph_profile_phase;
+int sph_profile_slot(const char *pass);
+double sph_profile_start(int *slot, const char *pass); /* the wall clock, and *slot found */
+void sph_profile_add(int slot, double seconds);
+
+/* The entries so far, in the order they were first timed (*n of them, at most
+ * SPH_PROFILE_MAX: a few per body, a few for the scene). */
+#define SPH_PROFILE_MAX 128
+typedef struct {
+    const char *name;
+    int phase;
+    double seconds;
+    long calls;
+} sph_profile_entry;
+const sph_profile_entry *sph_profile_entries(int *n);
+
+SPH_C_END
+
+#define SPH_TIMED(name, statement)                                                             \
+    do {                                                                                       \
+        if (sph_profile_on) {                                                                  \
+            static int slot_ = -1;                                                             \
+            const double t0_ = sph_profile_start(&slot_, name);                                \
+            statement;                                                                         \
+            sph_profile_add(slot_, sph_wall_time() - t0_);                                     \
+        } else {                                                                               \
+            statement;                                                                         \
+        }                                                                                      \
+    } while (0)
+#define SPH_PASS(fn, args) SPH_TIMED(#fn, fn args)
+
+#endif

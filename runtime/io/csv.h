@@ -1,0 +1,28 @@
+/* csv.h — CSV time series (csv.c).  0 on success, -1 on an I/O error (reported). */
+#ifndef SPHRT_IO_CSV_H
+#define SPHRT_IO_CSV_H
+
+#include <stdio.h>
+
+/* A CSV time series: opened once with a header line, appended row by row, each line with
+ * one write (no half row is left by a run killed between two).
+ * Fields are separated by commas, or by `sep` with sph_csv_open_sep. */
+typedef struct {
+    FILE *f;
+    int ncols;
+    char sep;
+    char *path;
+} sph_csv;
+int sph_csv_open(sph_csv *c, const char *path, const char *const *columns, int ncols);
+int sph_csv_open_sep(sph_csv *c, const char *path, const char *const *columns, int ncols,
+                     char sep);
+int sph_csv_row(sph_csv *c, const double *values); /* ncols values, %.10g */
+void sph_csv_close(sph_csv *c);
+/* The CSV files open now and their lengths in bytes, for a checkpoint: n, with paths[k]
+ * and lengths[k] (k < n) in arrays the caller frees (not the strings). */
+int sph_csv_open_files(const char ***paths, long **lengths);
+/* A run resumed from a checkpoint: from now on opening one of these n files keeps it, cut
+ * back to its length, and appends to it (no header); opening any other is an error. */
+void sph_csv_resume(const char *const *paths, const long *lengths, int n);
+
+#endif

@@ -1,0 +1,23 @@
+/* expect.h — a model's expectations evaluated from the recorded time series (expect.c). */
+#ifndef SPHRT_RUN_EXPECT_H
+#define SPHRT_RUN_EXPECT_H
+
+#include <stddef.h>
+
+#include "measure.h"
+#include "io/json.h"
+#include "scene/model.h"
+
+/* Evaluate the model's expectations; writes them into the summary and prints a
+ * line each.  Returns the number of failed expectations. */
+typedef struct {
+    sph_series *measures;   /* per (body, measure): rows ux uy uz fx fy fz */
+    int *measure_base;      /* index of body b's first measure in `measures` */
+    sph_series energy;      /* rows: total strain, total kinetic */
+} sph_record;
+/* errors (if not NULL, len bytes) receives "period 1.91 %, energy 0.0059 %", one entry per
+ * expectation, for the program's final line. */
+int sph_expect_evaluate(const sph_model *m, const sph_record *r, sph_json *j, int quiet,
+                        char *errors, size_t len);
+
+#endif

@@ -1,0 +1,96 @@
+/* measure.c — what a run measures of a body (measure.h): its strain and kinetic energy, the
+ * energy its material law dissipated, a measurement plane's mean displacement and force, and
+ * the time series they are recorded in. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "measure.h"
+#include "core/alloc.h"
+#include "core/defs.h"
+#include "core/exit_codes.h"
+#include "core/message.h"
+#include "par/par.h"
+#include "scene/body.h"
+
+static void *zalloc(size_t n, size_t size)
+{
+    void *p = sph_alloc_large(n * size, 1); /* (huge pages for large arrays: core/alloc.c) */
+    if (!p) {
+        sph_error("out of memory");
+        exit(SPH_EXIT_SETUP);
+    }
+    return p;
+}
+
+void sph_body_energies(const sph_body *b, double *strain, double *kinetic)
+{
+    /* Summed in blocks of a fixed size, the blocks' sums in order: the same bits on any
+     * number of threads (a run's team changes with the machine's load, par/team.h). */
+    enum { BLOCK = 4096 };
+    const int D = b->dim, nblocks = (b->nown + BLOCK - 1) / BLOCK;
+    double *part = zalloc(2 * (size_t)nblocks + 1, sizeof(double));
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < nblocks; k++) {
+        const int end = b->nown - k * BLOCK < BLOCK ? b->nown : (k + 1) * BLOCK;
+        double es = 0, ek = 0;
+        for (int i = k * BLOCK; i < end; i++) {
+            es += b->psi[i];
+            for (int c = 0; c < D; c++)
+                ek += b->v[(size_t)i * D + c] * b->v[(size_t)i * D + c];
+        }
+        part[2 * k] = es, part[2 * k + 1] = ek;
+    }
+    double es = 0, ek = 0;
+    for (int k = 0; k < nblocks; k++)
+        es += part[2 * k], ek += part[2 * k + 1];
+    free(part);
+    *strain = es * b->vol;
+    *kinetic = 0.5 * b->mass * ek;
+}
+
+double sph_dissipated_energy(const sph_body *b)
+{
+    const int slot = b->desc->dissipation - 1, ns = b->desc->nstate;
+    if (slot < 0 || !b->state)
+        return 0.0;
+    double w = 0;
+    for (int i = 0; i < b->nown; i++)
+        w += b->state[(size_t)i * ns + slot];
+    return w * b->vol;
+}
+
+void sph_measure(const sph_body *b, int k, double out[6])
+{
+    memset(out, 0, 6 * sizeof(double));
+    const int n = b->ms_count[k], D = b->dim;
+    for (int q = 0; q < n; q++) {
+        const int i = b->ms_list[k][q];
+        for (int c = 0; c < D; c++) {
+            out[sph_axis(D, c)] += b->u[(size_t)i * D + c];
+            out[3 + sph_axis(D, c)] += b->mass * b->a[(size_t)i * D + c];
+        }
+    }
+    double count = n;
+    if (b->par->size > 1) { /* the sums and the particles of every process */
+        double all[7];
+        memcpy(all, out, 6 * sizeof(double));
+        all[6] = n;
+        b->par->sum(all, 7);
+        memcpy(out, all, 6 * sizeof(double));
+        count = all[6];
+    }
+    for (int c = 0; c < 3 && count > 0; c++)
+        out[c] /= count;
+}
+
+void sph_series_push(sph_series *s, double t, const double *row)
+{
+    if (s->n == s->cap) {
+        s->cap = s->cap ? 2 * s->cap : 256;
+        s->t = realloc(s->t, (size_t)s->cap * sizeof(double));
+        s->val = realloc(s->val, (size_t)s->cap * (size_t)s->width * sizeof(double));
+    }
+    s->t[s->n] = t;
+    memcpy(s->val + (size_t)s->n * (size_t)s->width, row, (size_t)s->width * sizeof(double));
+    s->n++;
+}

@@ -1,0 +1,32 @@
+/* measure.h — what a run measures of a body (measure.c, fracture.c): its energies,
+ * measurement planes, and the time series they are recorded in. */
+#ifndef SPHRT_RUN_MEASURE_H
+#define SPHRT_RUN_MEASURE_H
+
+#include "core/defs.h"
+#include "scene/body.h"
+
+SPH_C_BEGIN
+
+/* Energies of a body: strain (sum V psi) and kinetic (sum m |v|^2 / 2). */
+void sph_body_energies(const sph_body *b, double *strain, double *kinetic);
+/* Fracture energy of a body: sum V Gc ((1 - s)^2 / (4 eps0) + eps0 |grad s|^2); 0 without
+ * fracture. */
+double sph_fracture_energy(const sph_body *b);
+/* Energy a body has dissipated in its material law (plastic work): sum V w; 0 without. */
+double sph_dissipated_energy(const sph_body *b);
+
+/* A growable time series of one measured quantity set. */
+typedef struct {
+    double *t;
+    double *val;   /* n rows of `width` values */
+    int n, cap, width;
+} sph_series;
+void sph_series_push(sph_series *s, double t, const double *row);
+
+/* Mean displacement (3) and total force (3, sum m a) over measurement k of body b. */
+void sph_measure(const sph_body *b, int k, double out[6]);
+
+SPH_C_END
+
+#endif

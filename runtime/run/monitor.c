@@ -1,0 +1,221 @@
+/* monitor.c — the stability monitor: a separate pass over the state, run every few steps
+ * and before every output, so that a run going unstable stops with a diagnosis and the last
+ * good output kept.  It looks for: non-finite displacement, velocity or acceleration;
+ * det F <= 0 (a particle turned inside out); velocities beyond ten times the sound speed;
+ * and total energy growing a millionfold between two checks.
+ *
+ * A device target first sums what the checks need on the device (sph_model.monitor), so that
+ * a periodic check moves a few numbers instead of the whole state; only when those show
+ * something wrong does the runtime copy the state and look at it here, particle by particle,
+ * to name what went wrong and where. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "measure.h"
+#include "monitor.h"
+#include "core/tensor3.h"
+#include "par/par.h"
+#include "scene/body.h"
+#include "scene/model.h"
+#include "scene/sim.h"
+
+typedef struct {
+    int particle;
+    const char *what;
+    double value;
+} finding;
+
+/* Whether particle i's displacement, velocity or acceleration is not finite (f says which). */
+static int not_finite(const sph_body *b, int i, finding *f)
+{
+    for (int k = 0; k < b->dim; k++) {
+        const size_t e = (size_t)i * b->dim + k;
+        const double u = b->u[e], v = b->v[e], a = b->a[e];
+        if (!isfinite(u) || !isfinite(v) || !isfinite(a)) {
+            *f = (finding){i, !isfinite(u) ? "displacement is not finite"
+                              : !isfinite(v) ? "velocity is not finite"
+                                             : "acceleration is not finite",
+                           !isfinite(u) ? u : !isfinite(v) ? v : a};
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static int scan_body(const sph_body *b, finding *f)
+{
+    const int D = b->dim;
+    const double vlim2 = 100.0 * b->c0 * b->c0;
+    for (int i = 0; i < b->nown; i++) {
+        if (not_finite(b, i, f))
+            return 1;
+        double v2 = 0;
+        for (int k = 0; k < D; k++)
+            v2 += b->v[(size_t)i * D + k] * b->v[(size_t)i * D + k];
+        const double J = sph_det3(b->F + (size_t)i * 9);
+        if (!(J > 0)) {
+            *f = (finding){i, "det F <= 0 (particle inverted)", J};
+            return 1;
+        }
+        if (v2 > vlim2) {
+            *f = (finding){i, "speed above 10 c0 (velocity runaway)", sqrt(v2)};
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* The fastest particle of a body and its speed. */
+static int fastest(const sph_body *b, double *speed)
+{
+    const int D = b->dim;
+    int best = 0;
+    double v2max = -1;
+    for (int i = 0; i < b->nown; i++) {
+        double v2 = 0;
+        for (int k = 0; k < D; k++)
+            v2 += b->v[(size_t)i * D + k] * b->v[(size_t)i * D + k];
+        if (v2 > v2max)
+            v2max = v2, best = i;
+    }
+    *speed = sqrt(v2max);
+    return best;
+}
+
+/* "step S, t = T s, body 'B', particle P (reference position ...)" at the start of msg. */
+int sph_monitor_where(char *msg, size_t len, const sph_sim *s, const sph_body *b, int particle)
+{
+    const double *X = b->X + (size_t)particle * b->dim;
+    char id[48]; /* on many processes the global id (partition.h), the same on any number */
+    if (b->gid)
+        snprintf(id, sizeof id, "global id %lld", (long long)b->gid[particle]);
+    else
+        snprintf(id, sizeof id, "%d", particle);
+    return snprintf(msg, len, "step %ld, t = %.6g s, body '%s', particle %s (reference position "
+                              "x = %g, %s = %g)",
+                    s->step, s->t, b->desc->name, id, X[0], b->dim == 2 ? "z" : "y", X[1]);
+}
+
+/* On many processes: the lowest process where `found`, whose msg every process then gets;
+ * 1 when there is one.  On one process: found. */
+int sph_monitor_share(const sph_sim *s, int found, char *msg, size_t len)
+{
+    const sph_par *par = s->par;
+    if (par->size == 1)
+        return found;
+    double first = found ? par->rank : par->size;
+    par->min(&first, 1);
+    if (first >= par->size)
+        return 0;
+    char buf[1024] = "";
+    if (par->rank == (int)first)
+        snprintf(buf, sizeof buf, "%s", msg);
+    par->bcast(buf, sizeof buf, (int)first);
+    snprintf(msg, len, "%s", buf);
+    return 1;
+}
+
+/* A finding as msg: where, what, and its value. */
+static void report(char *msg, size_t len, const sph_sim *s, const sph_body *b, const finding *f)
+{
+    const int n = sph_monitor_where(msg, len, s, b, f->particle);
+    if (n >= 0 && (size_t)n < len)
+        snprintf(msg + n, len - (size_t)n, ": %s (value %g)", f->what,
+                 isnan(f->value) ? fabs(f->value) : f->value); /* "nan", not "-nan" */
+}
+
+int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len)
+{
+    int found = 0;
+    for (int ib = 0; ib < s->nbodies && !found; ib++) {
+        finding f;
+        if ((found = scan_body(&s->bodies[ib], &f)))
+            report(msg, len, s, &s->bodies[ib], &f);
+    }
+    if (sph_monitor_share(s, found, msg, len))
+        return 1;
+    double e_total = 0, e_most = -1, *e = calloc((size_t)s->nbodies + 1, sizeof *e);
+    int most = 0;
+    if (!e)
+        return 0; /* (out of memory: no energy check this time) */
+    for (int ib = 0; ib < s->nbodies; ib++) {
+        double es, ek;
+        sph_body_energies(&s->bodies[ib], &es, &ek);
+        e[ib] = es + ek;
+    }
+    s->par->sum(e, s->nbodies); /* (each body's, over the processes) */
+    for (int ib = 0; ib < s->nbodies; ib++) {
+        e_total += e[ib];
+        if (!(e[ib] <= e_most)) /* also takes a non-finite energy */
+            e_most = e[ib], most = ib;
+    }
+    free(e);
+    if (!isfinite(e_total) || (mon->e_ref > 0 && e_total > 1e6 * mon->e_ref)) {
+        /* Named like the other findings: the body with the most energy and its fastest
+         * particle (on many processes, that of the process where it is fastest). */
+        const sph_body *b = &s->bodies[most];
+        double speed, top;
+        const int i = fastest(b, &speed);
+        top = speed;
+        s->par->max(&top, 1);
+        int n = sph_monitor_where(msg, len, s, b, i);
+        if (n >= 0 && (size_t)n < len)
+            snprintf(msg + n, len - (size_t)n,
+                     ": total energy %g grew more than a millionfold since the last check (%g): "
+                     "energy runaway (value: speed %g of the fastest particle of the body with "
+                     "the most energy)",
+                     e_total, mon->e_ref, speed);
+        sph_monitor_share(s, speed == top, msg, len);
+        return 1;
+    }
+    if (e_total > mon->e_ref)
+        mon->e_ref = e_total;
+    return 0;
+}
+
+int sph_monitor_finite(const sph_sim *s, char *msg, size_t len)
+{
+    int found = 0;
+    for (int ib = 0; ib < s->nbodies && !found; ib++)
+        for (int i = 0; i < s->bodies[ib].nown && !found; i++) {
+            finding f;
+            if ((found = not_finite(&s->bodies[ib], i, &f)))
+                report(msg, len, s, &s->bodies[ib], &f);
+        }
+    return sph_monitor_share(s, found, msg, len);
+}
+
+int sph_monitor_glance(sph_monitor *mon, const sph_sim *s, const sph_monitor_sums *sums,
+                       double *stretch)
+{
+    double e_total = 0, l2 = 1.0, most[2] = {0, -1.0}; /* (a check failed; -stretch^2) */
+    for (int ib = 0; ib < s->nbodies; ib++) {
+        most[0] = fmax(most[0], sums[ib].bad);
+        e_total += sums[ib].energy;
+        l2 = fmin(l2, sums[ib].stretch2);
+    }
+    if (s->par->size > 1) { /* (every process's sums; the energy body by body, in order) */
+        most[1] = -l2;
+        s->par->max(most, 2);
+        l2 = -most[1];
+        double *e = malloc(((size_t)s->nbodies + 1) * sizeof *e);
+        for (int ib = 0; e && ib < s->nbodies; ib++)
+            e[ib] = sums[ib].energy;
+        if (e) {
+            s->par->sum(e, s->nbodies);
+            e_total = 0;
+            for (int ib = 0; ib < s->nbodies; ib++)
+                e_total += e[ib];
+        }
+        free(e);
+    }
+    if (most[0] > 0)
+        return 1;
+    if (!isfinite(e_total) || (mon->e_ref > 0 && e_total > 1e6 * mon->e_ref))
+        return 1;
+    if (e_total > mon->e_ref)
+        mon->e_ref = e_total;
+    *stretch = sqrt(fmax(l2, 0.0));
+    return 0;
+}

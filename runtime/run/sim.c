@@ -1,0 +1,172 @@
+/* sim.c — a simulation without the program around it: set-up, time step, stepping. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "setup.h"
+#include "sim.h"
+#include "time_step.h"
+#include "contact/contact.h"
+#include "core/exit_codes.h"
+#include "core/message.h"
+#include "core/tensor3.h"
+#include "par/par.h"
+#include "scene/body.h"
+#include "scene/model.h"
+#include "scene/sim.h"
+
+static void initial_speeds(sph_sim *s)
+{
+    for (int i = 0; i < s->nbodies; i++) {
+        sph_body *b = &s->bodies[i];
+        double v2max = 0;
+        for (int p = 0; p < b->nown * b->dim; p += b->dim) {
+            double v2 = 0;
+            for (int k = 0; k < b->dim; k++)
+                v2 += b->v[p + k] * b->v[p + k];
+            v2max = fmax(v2max, v2);
+        }
+        s->par->max(&v2max, 1);
+        b->vmax2 = v2max;
+        b->amax2 = 0;
+    }
+}
+
+int sph_sim_init(sph_sim *s, const sph_model *m, int verbose)
+{
+    return sph_sim_init_par(s, m, verbose, &sph_par_one);
+}
+
+int sph_sim_init_par(sph_sim *s, const sph_model *m, int verbose, const sph_par *par)
+{
+    sph_message_program(m->name);
+    s->m = m;
+    s->par = par;
+    s->t = s->dt = 0;
+    s->step = 0;
+    s->contact = NULL;
+    s->nbodies = m->nbodies;
+    s->bodies = calloc((size_t)m->nbodies, sizeof(sph_body));
+    for (int i = 0; i < m->nbodies; i++) {
+        sph_body *b = &s->bodies[i];
+        if (sph_body_setup(b, &m->bodies[i], m, par))
+            return -1;
+        double count[2] = {b->nown, (double)b->npairs}; /* (on all processes) */
+        par->sum(count, 2);
+        if (verbose && par->rank == 0)
+            printf("%s: body %s: %.0f particles, dx = %g m, %.1f neighbours each, c0 = %g m/s\n",
+                   m->name, m->bodies[i].name, count[0], b->dx, count[1] / count[0], b->c0);
+    }
+    for (int i = 0; i < m->nbodies; i++) /* the plans of the halo exchanges */
+        if (par->agree(par->body_ready(&s->bodies[i])))
+            return -1;
+    sph_contact_init(s);
+    s->dt_factor = 1.0;
+    m->velocity_bcs(s, 0.0); /* initial conditions: the BCs at t = 0 */
+    initial_speeds(s);
+    return 0;
+}
+
+/* The smallest principal stretch of body b: min over particles of sqrt(eigmin(F^T F)).  A
+ * body whose time step follows its compression (lam2) has it from its last stress and update
+ * passes already, from the same F. */
+static double stretch_min(const sph_body *b)
+{
+    if (b->lam2)
+        return sqrt(fmax(b->lam2min, 0.0));
+    double l2 = INFINITY;
+#pragma omp parallel for reduction(min : l2)
+    for (int i = 0; i < b->nown; i++)
+        l2 = fmin(l2, sph_stretch2_min(b->F + 9 * (size_t)i, b->dim));
+    return b->nown ? sqrt(fmax(l2, 0.0)) : 1.0;
+}
+
+double sph_sim_stretch(const sph_sim *s)
+{
+    double lam = 1.0;
+    for (int i = 0; i < s->nbodies; i++)
+        lam = fmin(lam, stretch_min(&s->bodies[i]));
+    s->par->min(&lam, 1);
+    return lam;
+}
+
+/* On many processes: each body's bounds of eq. 65-66 over all of them, one exchange for the
+ * scene (the largest |v|^2 and |a|^2, the smallest stretch; as maxima: -lam2min). */
+static void global_bounds(sph_sim *s)
+{
+    if (s->par->size == 1)
+        return;
+    double stack[3 * 8], *x = s->nbodies <= 8 ? stack : malloc(3 * sizeof *x * s->nbodies);
+    if (!x) {
+        sph_error("out of memory");
+        exit(SPH_EXIT_SETUP);
+    }
+    for (int i = 0; i < s->nbodies; i++) {
+        const sph_body *b = &s->bodies[i];
+        x[3 * i] = b->vmax2, x[3 * i + 1] = b->amax2, x[3 * i + 2] = -b->lam2min;
+    }
+    s->par->max(x, 3 * s->nbodies);
+    for (int i = 0; i < s->nbodies; i++) {
+        sph_body *b = &s->bodies[i];
+        b->vmax2 = x[3 * i], b->amax2 = x[3 * i + 1], b->lam2min = -x[3 * i + 2];
+    }
+    if (x != stack)
+        free(x);
+}
+
+double sph_sim_stable_dt(sph_sim *s)
+{
+    const sph_model *m = s->m;
+    double dt = INFINITY;
+    s->dt_factor = 1.0;
+    global_bounds(s);
+    for (int i = 0; i < s->nbodies; i++) {
+        const sph_body *b = &s->bodies[i];
+        const double f = sph_stretch_factor(m->dt_lambda_on, b->lam2 != NULL, b->lam2min);
+        s->dt_factor = fmin(s->dt_factor, f);
+        dt = fmin(dt, sph_body_dt(f, b->h, b->c0, b->vmax2, b->amax2));
+    }
+    /* the stiffest contact, where a pair is in contact or near it */
+    dt = fmin(dt, sph_contact_dt(s, sph_chosen_dt(m->dt_fixed, m->cfl, dt)));
+    return sph_chosen_dt(m->dt_fixed, m->cfl, dt);
+}
+
+void sph_sim_step(sph_sim *s, double dt)
+{
+    s->dt = dt;
+    s->m->step(s, dt);
+    s->t += dt;
+    s->step++;
+}
+
+int sph_sim_advance(sph_sim *s, sph_advance *a)
+{
+    const long step0 = s->step;
+    a->collapsed = 0;
+    /* the device chooses the time steps (cuda/advance.h); on many processes they must
+     * agree on each, so the host chooses it after every step, as on the CPU */
+    if (s->m->advance && s->par->size == 1) {
+        s->m->advance(s, a);
+        return (int)(s->step - step0);
+    }
+    while (s->step - step0 < a->steps && s->t < a->t_stop - a->eps && !(a->stop && *a->stop)) {
+        const double dt = sph_sim_stable_dt(s);
+        const double floor_now = sph_dt_floor_now(a->floor_dt, s->dt_factor);
+        if (!(dt >= floor_now)) {
+            a->collapsed = 1, a->dt_bad = dt, a->floor_bad = floor_now;
+            break;
+        }
+        sph_sim_step(s, fmin(dt, a->t_stop - s->t)); /* land on output times */
+    }
+    return (int)(s->step - step0);
+}
+
+void sph_sim_free(sph_sim *s)
+{
+    sph_contact_free(s);
+    for (int i = 0; i < s->nbodies; i++)
+        sph_body_free(&s->bodies[i]);
+    free(s->bodies);
+    s->bodies = NULL;
+    s->nbodies = 0;
+}
