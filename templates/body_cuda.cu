@@ -12,7 +12,7 @@
  * and Laplacian weight of eq. 62 (l).  From the offset table: entry k, or ~k for the
  * reversed pair (w_ji = -w_ij), a few hundred entries that stay in the L1 cache.  Built with
  * -DSPH_CUDA_RECOMPUTE, from the reference positions instead, as the set-up computes the
- * table (runtime/setup.c): no table entry per pair but X_j and a kernel evaluation, the other
+ * table (runtime/run/setup.c): no table entry per pair but X_j and a kernel evaluation, the other
  * layout docs/cuda.md weighs (bench/cuda times both).  What a pass does not use of it the
  * compiler drops. */
 SPH_FN int @B@_pair(const sph_body *b, int i, int s, int *k, sph_real w[@DIM@], sph_real *g,
@@ -234,7 +234,7 @@ static void @B@_update(sph_body *b, sph_time dt)
             a2 += ak * ak;
         }
 //@if CRUSH
-        /* the compression bound (runtime/sim.c): 1 / lambda^2, infinite at lambda = 0 */
+        /* the compression bound (runtime/run/sim.c): 1 / lambda^2, infinite at lambda = 0 */
         return sph_max3{v2, a2, 1.0 / sph_bound_stretch2(b->lam2[i])};
 //@else
         return sph_max3{v2, a2, 0.0};
@@ -246,7 +246,7 @@ static void @B@_update(sph_body *b, sph_time dt)
 }
 
 /* ---- body @B@: the stability monitor's sums on the device -------------------------------
- * The checks the monitor makes at every particle (runtime/monitor.c: a non-finite u, v or a,
+ * The checks the monitor makes at every particle (runtime/run/monitor.c: a non-finite u, v or a,
  * det F <= 0, a speed above 10 c0), the body's strain + kinetic energy and its smallest
  * principal stretch, reduced on the device: a periodic check then copies a few numbers
  * instead of the state (sph_cuda_monitor_sums). */

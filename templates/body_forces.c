@@ -92,16 +92,17 @@ static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
 }
 
 //@if OFFSET_BLOCKS
-/* 3D, on a lattice: the own pairs' sums by the body's offset blocks (runtime/offset_blocks.c)
+/* 3D, on a lattice: the own pairs' sums by the body's offset blocks (runtime/pairs/offset_blocks.c)
  * instead of the half lists.  Block B's particles i0 .. i0 + 7 in the lanes of vectors of
  * eight; a task of the block is one offset j - i and one table entry w, the same for the
  * lanes of its mask, so u_j - u_i is one unaligned vector load from u by component (copied
  * into b->ob_u first) less u_i, and its product with w (@B@_gradient_term_v8) nine
  * multiply-adds into A's nine entries, which stay in registers over the block's tasks and
- * are written once (a lane not in the mask adds zeros).  Each pair is summed from both of its particles, the full lists,
- * and nothing is written to j: no stripes.  Overwrites A_i of own particles with the sums
- * of their own pairs (the sums of the lists, in another order).  The Taylor bar's stress
- * pass (this in it) took 0.6 of its time with the half lists, its step 0.84 (one thread). */
+ * are written once (a lane not in the mask adds zeros).  Each pair is summed from both of
+ * its particles, the full lists, and nothing is written to j: no stripes.  Overwrites A_i
+ * of own particles with the sums of their own pairs (the sums of the lists, in another
+ * order).  The Taylor bar's stress pass (this in it) took 0.6 of its time with the half
+ * lists, its step 0.84 (one thread). */
 static void @B@_gradient_blocks(sph_body *b)
 {
     typedef @B@_v8 dv8;
@@ -152,8 +153,8 @@ static void @B@_gradient_lists(sph_body *b)
         for (int s = colour; s < b->nstripes; s += 2) {
 //@if DIM3
 //@else
-            /* With the lattice stencil, only what its runs leave (the rest lists, runtime/
-             * stencil.c): the stress pass takes the run particles' sums from the stencil,
+            /* With the lattice stencil, only what its runs leave (the rest lists,
+             * runtime/pairs/stencil.c): the stress pass takes the run particles' sums from the stencil,
              * and overwrites what the pairs here add to them (body_stencil.c). */
             if (b->rest) {
                 for (int c = sph_rest_after(b, b->stripe[s]);
@@ -553,7 +554,7 @@ static void @B@_momentum_halo_pairs(sph_body *b)
 
 //@endif
 //@if STENCIL_MOMENTUM
-/* Run particles a .. e - 1 of the lattice stencil (runtime/stencil.c): by the stencil in
+/* Run particles a .. e - 1 of the lattice stencil (runtime/pairs/stencil.c): by the stencil in
  * vectors (@B@_stencil_momentum, body_stencil.c), and the last few, fewer than a vector's
  * four, pair by pair along the stencil's offsets (not their half lists, whose cache lines
  * nothing else has loaded).  Adds their pairs' viscous power to *power. */
@@ -621,8 +622,8 @@ static double @B@_momentum_stripe(sph_body *b, int s)
 }
 
 //@if MOMENTUM_BLOCKS
-/* 3D, on a lattice: the own pairs by the momentum pass's offset blocks (runtime/
- * offset_blocks.c) instead of the half lists, stripe by stripe as they go.  Block B's
+/* 3D, on a lattice: the own pairs by the momentum pass's offset blocks
+ * (runtime/pairs/offset_blocks.c) instead of the half lists, stripe by stripe as they go.  Block B's
  * particles i .. i + 7 in the lanes of vectors of eight, as the gradient's blocks; a task is
  * one offset j - i and one table entry for the lanes of its mask, over the half lists (each
  * pair once): Q, cof F, Cs and v of the 8 j are unaligned loads from their copies by

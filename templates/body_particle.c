@@ -102,7 +102,7 @@ SPH_FLAT void @B@_stress_of(const double *A, const double *L,
             Fp[r * D + c] = F[sph_axis(D, r) * 3 + sph_axis(D, c)];
 //@if CRUSH
     /* the smallest principal stretch squared, for the time step where the body is
-     * compressed (timestep auto: eq. 65 on the current spacing; runtime/sim.c) */
+     * compressed (timestep auto: eq. 65 on the current spacing; runtime/run/sim.c) */
     *lam2 = sph_stretch2_min(F, D);
 //@endif
     /* P = F S (eq. 2), in-plane block, then Q = P L */

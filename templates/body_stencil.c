@@ -1,5 +1,5 @@
 /* ---- body @B@: the pair passes on the lattice stencil's runs ------------------------------
- * Particles of a run (runtime/stencil.c; 2D bodies) have their neighbours at i + o and
+ * Particles of a run (runtime/pairs/stencil.c; 2D bodies) have their neighbours at i + o and
  * i - o for the stencil's offsets o, at the same table entries: a pair sum over them is a
  * sum over the offsets, and for one offset the same arithmetic on consecutive particles,
  * the table entry a constant.  The gradient pass leaves their A_i (and Laplacian) to the

@@ -82,7 +82,7 @@ static void scene_monitor_cuda(Emitter *E)
     const Model *m = E->m;
     FILE *out = E->out;
     fputs("/* The stability monitor's sums of every body, summed on the device so that a\n"
-          " * periodic check copies a few numbers, not the state (runtime/monitor.c). */\n"
+          " * periodic check copies a few numbers, not the state (runtime/run/monitor.c). */\n"
           "static void model_monitor(sph_sim *s, sph_monitor_sums *out)\n{\n", out);
     for (int i = 0; i < m->nbodies; i++)
         fprintf(out, "    %s_monitor(DEV[%d]);\n", m->bodies[i].name, i);

@@ -118,7 +118,7 @@ static double plane_y(const BodyModel *b)
 {
     if (b->has_plane)
         return b->plane;
-    /* A surface, prism or pyramid is cut by the plane (runtime/region.c), so the plane must
+    /* A surface, prism or pyramid is cut by the plane (runtime/geom/region.c), so the plane must
      * pass through it; boxes, cylinders and spheres are moved into whatever plane it is. */
     for (int k = 0; k < b->region.n; k++) {
         const ShapePrim *s = &b->region.prims[k];
@@ -271,7 +271,7 @@ void emit_model_desc(Emitter *E)
     bodies_desc(E);
     expects(E);
     if (model_has_contact(m))
-        fprintf(out, "/* Contact between the bodies (runtime/contact.c). */\n"
+        fprintf(out, "/* Contact between the bodies (runtime/contact/contact.c). */\n"
                      "static const sph_contact_desc CONTACT = {.coef = %.17g};\n\n", m->contact);
     fprintf(out,
             "static const sph_model MODEL = {\n"

@@ -6,8 +6,8 @@
  * lattice in the lanes of a vector).  A layout that cannot serve a body's features is a
  * decision made here, once, with its reason: the plan's switches (OFFSET_BLOCKS,
  * MOMENTUM_BLOCKS) follow from it, and --dump=plan prints it.  (Where a body's particles do
- * not fill a layout's lanes well enough, the run-time set-up keeps the lists: runtime/
- * offset_blocks.c, runtime/stencil.c; summary.json counts the pairs each layout took.) */
+ * not fill a layout's lanes well enough, the run-time set-up keeps the lists:
+ * runtime/pairs/offset_blocks.c, runtime/pairs/stencil.c; summary.json counts the pairs each layout took.) */
 #include <stdio.h>
 
 #include "plan.h"
