@@ -154,8 +154,8 @@ static void @B@_gradient_lists(sph_body *b)
 //@if DIM3
 //@else
             /* With the lattice stencil, only what its runs leave (the rest lists,
-             * runtime/pairs/stencil.c): the stress pass takes the run particles' sums from the stencil,
-             * and overwrites what the pairs here add to them (body_stencil.c). */
+             * runtime/pairs/stencil.c): the stress pass takes the run particles' sums from
+             * the stencil, and overwrites what the pairs here add to them (body_stencil.c). */
             if (b->rest) {
                 for (int c = sph_rest_after(b, b->stripe[s]);
                      c < b->nrest && b->rest[c] < b->stripe[s + 1]; c++)
@@ -470,17 +470,9 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
             f += (Qi[c] + Qj[c]) * w[c];
         f *= inv_rho;
 //@if VISCOSITY
-        /* The direction the viscous pressure acts along, fv = (J F^-T)_i w + (J F^-T)_j w
-         * (eq. 57 from both sides, without the correction L), and G_ij of eq. 60 measured
-         * along it (gtab holds h / (r^2 + 0.001 h^2) in the units of w) and scaled by the mean
-         * of the pair's Cs = lambda_min / J.  In the reference configuration fv/2 is w,
-         * parallel to X_i - X_j, and Cs is 1, so this is eq. 60; fv turns with the pair, so a
-         * rigid rotation gives G = 0 at any angle, and the viscous power pi G is never
-         * positive (eq. 60 taken along X_i - X_j feeds energy in once a pair has turned by
-         * more than 90 degrees, and L in fv lets a boundary pair's G see a rigid rotation).
-         * fv/2 is longer than w by up to 1 / Cs, where the body is compressed along the pair:
-         * Cs takes that out, so that G is the approach rate in the pair's reference length,
-         * as in eq. 60, not in its current, shorter one (docs/stability.md). */
+        /* The viscosity of eq. 57-60 as @B@_viscosity_term (templates/physics/pairs.c, which
+         * has its reasons), with a tensor's columns in short vectors: the viscous direction
+         * fv = (cof F_i + cof F_j) w and its approach rate vw = (v_i - v_j) . fv. */
         const vec *Cj = Cv + (size_t)j * D;
         vec fv = {0};
         for (int c = 0; c < D; c++)
@@ -623,15 +615,16 @@ static double @B@_momentum_stripe(sph_body *b, int s)
 
 //@if MOMENTUM_BLOCKS
 /* 3D, on a lattice: the own pairs by the momentum pass's offset blocks
- * (runtime/pairs/offset_blocks.c) instead of the half lists, stripe by stripe as they go.  Block B's
- * particles i .. i + 7 in the lanes of vectors of eight, as the gradient's blocks; a task is
- * one offset j - i and one table entry for the lanes of its mask, over the half lists (each
- * pair once): Q, cof F, Cs and v of the 8 j are unaligned loads from their copies by
- * component (b->mb_soa, @B@_momentum_copy), the block's own values and its three sums stay
- * in registers over its tasks, and j's share is subtracted from j's sums by component, as
- * the lists do.  The pair terms are those of every layout (templates/physics/pairs.c, _v8:
- * eight pairs in a vector); a lane not in the mask adds zeros (its Cs_i + Cs_j and force
- * masked).  The Taylor bar's momentum pass took about 0.8 of the lists' time. */
+ * (runtime/pairs/offset_blocks.c) instead of the half lists, stripe by stripe as they go.
+ * Block B's particles i .. i + 7 in the lanes of vectors of eight, as the gradient's blocks;
+ * a task is one offset j - i and one table entry for the lanes of its mask, over the half
+ * lists (each pair once): Q, cof F, Cs and v of the 8 j are unaligned loads from their
+ * copies by component (b->mb_soa, @B@_momentum_copy), the block's own values and its
+ * three sums stay in registers over its tasks, and j's share is subtracted from j's sums by
+ * component, as the lists do.  The pair terms are those of every layout
+ * (templates/physics/pairs.c, _v8: eight pairs in a vector); a lane not in the mask adds
+ * zeros (its Cs_i + Cs_j and force masked).  The Taylor bar's momentum pass took about 0.8
+ * of the lists' time. */
 static double @B@_momentum_blocks(sph_body *b, int s)
 {
     typedef @B@_v8 dv8;

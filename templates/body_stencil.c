@@ -113,7 +113,7 @@ static void @B@_stencil_gradient(sph_body *b, int i0, int i1)
 }
 
 //@if STENCIL_MOMENTUM
-/* The momentum pass (eq. 55, 57-60; @B@_momentum_pairs has the physics and its comments) on
+/* The momentum pass (eq. 55, 57-60; templates/physics/pairs.c has the physics) on
  * the half lists of run particles a .. a + 4 t - 1 (at most @B@_STENCIL particles; the rest
  * of a run goes by the lists): offset by offset, each pair's force added to i, and after
  * the offset's particles subtracted from their j = i + o, as the lists do.  Four pairs a

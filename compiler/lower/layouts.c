@@ -7,7 +7,8 @@
  * decision made here, once, with its reason: the plan's switches (OFFSET_BLOCKS,
  * MOMENTUM_BLOCKS) follow from it, and --dump=plan prints it.  (Where a body's particles do
  * not fill a layout's lanes well enough, the run-time set-up keeps the lists:
- * runtime/pairs/offset_blocks.c, runtime/pairs/stencil.c; summary.json counts the pairs each layout took.) */
+ * runtime/pairs/offset_blocks.c, runtime/pairs/stencil.c; summary.json counts the pairs
+ * each layout took.) */
 #include <stdio.h>
 
 #include "plan.h"
