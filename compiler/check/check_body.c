@@ -15,6 +15,7 @@
 #include "seen_settings.h"
 #include "model/admissible.h"
 #include "model/elastic.h"
+#include "lang/bc_kinds.h"
 #include "util/diag.h"
 #include "util/source.h"
 #include "geom/mesh.h"
@@ -639,14 +640,13 @@ static int check_bc(const Model *m, const BcDecl *d, BcModel *bc)
 {
     memset(bc, 0, sizeof *bc);
     bc->kind = d->kind;
-    bc->force = d->force;
     bc->comps = d->comps;
     bc->value = d->value;
     bc->loc = d->loc;
     if (m->dim == 2 && (d->comps & 2)) {
         /* Plane strain: y is out of plane.  Prescribing it is allowed only as zero-motion
          * statements that users copy from 3D models; the value is ignored. */
-        if (d->kind == BC_FORCE) {
+        if (BC_KIND[d->kind].pass == BC_FORCE) {
             diag_error(d->comps_loc, "a force along y is not possible in a 2D (x-z) model");
             return -1;
         }

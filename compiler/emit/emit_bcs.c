@@ -6,6 +6,7 @@
 
 #include "emit_internal.h"
 #include "emit_quote.h"
+#include "lang/bc_kinds.h"
 #include "util/source.h"
 
 /* Compact component index of 3D axis `axis` (0 x, 1 y, 2 z) in a dim-D body. */
@@ -41,7 +42,7 @@ static void bc_apply(Emitter *E, const BodyModel *b, int k, const char *indent)
         if (!(bc->comps >> axis & 1))
             continue;
         int c = compact(dim, axis);
-        if (bc->kind == BC_VELOCITY)
+        if (BC_KIND[bc->kind].pass == BC_VELOCITY)
             fprintf(out, "%s    b->v[(size_t)i * D + %d] = val;\n%s    fix |= %d;\n", indent, c,
                     indent, 1 << c);
         else
@@ -50,16 +51,11 @@ static void bc_apply(Emitter *E, const BodyModel *b, int k, const char *indent)
     fprintf(out, "%s}\n", indent);
 }
 
+/* The factor of force BC k's value in the acceleration (its kind's scale, lang/bc_kinds.h). */
 static void force_scale(Emitter *E, const BcModel *bc, int k)
 {
-    /* point force [N] -> / m ; surface traction [N/m^2] -> * dx^(dim-1) / m ; acceleration */
-    if (bc->force == FORCE_POINT)
-        fprintf(E->out, "    const double scale%d = 1.0 / b->mass;\n", k);
-    else if (bc->force == FORCE_SURFACE)
-        fprintf(E->out, "    const double scale%d = %s / b->mass;\n", k,
-                E->m->dim == 2 ? "b->dx" : "b->dx * b->dx");
-    else
-        fprintf(E->out, "    const double scale%d = 1.0;\n", k);
+    fprintf(E->out, "    const double scale%d = %s;\n", k,
+            BC_KIND[bc->kind].scale[E->m->dim == 3]);
 }
 
 /* `from t0 to t1`: the BC acts in a step when the middle of the step lies in [t0, t1].  A
@@ -82,34 +78,35 @@ static void window_open(Emitter *E, const BcModel *bc, int k, int middle, const 
     fputs(";\n", E->out);
 }
 
-/* Whether a BC is one of the pass's: its kind, with components, with or without `near`. */
-static int bc_in_pass(const BcModel *bc, BcKind kind, int near)
+/* Whether a BC is one of the pass's: its kind's pass, with components, with or without
+ * `near`. */
+static int bc_in_pass(const BcModel *bc, BcPass pass, int near)
 {
-    return bc->kind == kind && bc->comps && bc->has_near == near;
+    return BC_KIND[bc->kind].pass == pass && bc->comps && bc->has_near == near;
 }
 
 /* Whether the pass is called at the middle of the step (the symplectic force pass). */
-static int at_middle(const Emitter *E, BcKind kind)
+static int at_middle(const Emitter *E, BcPass pass)
 {
-    return kind == BC_FORCE && E->m->integrator == INTEGRATOR_SYMPLECTIC;
+    return pass == BC_FORCE && E->m->integrator == INTEGRATOR_SYMPLECTIC;
 }
 
 /* The windows of the pass's BCs without `near`, at the top of the CUDA target's loop. */
-static void windows_open(Emitter *E, const BodyModel *b, BcKind kind, const char *indent)
+static void windows_open(Emitter *E, const BodyModel *b, BcPass pass, const char *indent)
 {
     for (int k = 0; k < b->nbcs; k++)
-        if (bc_in_pass(&b->bcs[k], kind, 0) && b->bcs[k].has_window)
-            window_open(E, &b->bcs[k], k, at_middle(E, kind), indent);
+        if (bc_in_pass(&b->bcs[k], pass, 0) && b->bcs[k].has_window)
+            window_open(E, &b->bcs[k], k, at_middle(E, pass), indent);
 }
 
 /* The loop over the BCs with `near`, one per BC: over its particle list. */
-static void bc_near_loops(Emitter *E, const BodyModel *b, BcKind kind)
+static void bc_near_loops(Emitter *E, const BodyModel *b, BcPass pass)
 {
     FILE *out = E->out;
-    const int vel = kind == BC_VELOCITY;
+    const int vel = pass == BC_VELOCITY;
     for (int k = 0; k < b->nbcs; k++) {
         const BcModel *bc = &b->bcs[k];
-        if (!bc_in_pass(bc, kind, 1))
+        if (!bc_in_pass(bc, pass, 1))
             continue;
         const int in_loop = E->target->windows_in_loops;
         if (bc->has_window && !in_loop)
@@ -120,7 +117,7 @@ static void bc_near_loops(Emitter *E, const BodyModel *b, BcKind kind)
         snprintf(count, sizeof count, "b->bc_count[%d]", k);
         E->target->loop_open(out, "        ", "q", count);
         if (bc->has_window && in_loop) {
-            window_open(E, bc, k, at_middle(E, kind), "            ");
+            window_open(E, bc, k, at_middle(E, pass), "            ");
             fprintf(out, "            if (!on%d)\n                return;\n", k);
         }
         fprintf(out, "            const int i = b->bc_list[%d][q];\n"
@@ -138,10 +135,10 @@ static void bc_near_loops(Emitter *E, const BodyModel *b, BcKind kind)
 }
 
 /* One pass over the whole body for the BCs without `near`, then one loop per `near` list. */
-static void bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
+static void bc_pass(Emitter *E, const BodyModel *b, BcPass pass)
 {
     FILE *out = E->out;
-    int vel = kind == BC_VELOCITY;
+    int vel = pass == BC_VELOCITY;
     fprintf(out, "/* %s boundary conditions of body %s at time t (Alg. 1, step 3). */\n",
             vel ? "Velocity" : "Force", b->name);
     fprintf(out, "static void %s_%s_bcs(sph_body *b, sph_time t, sph_time dt)\n{\n"
@@ -150,10 +147,10 @@ static void bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
     int any_whole = 0;
     for (int k = 0; k < b->nbcs; k++) {
         const BcModel *bc = &b->bcs[k];
-        if (bc->kind != kind || !bc->comps)
+        if (BC_KIND[bc->kind].pass != pass || !bc->comps)
             continue;
         if (bc->has_window && !E->target->windows_in_loops)
-            window_open(E, bc, k, at_middle(E, kind), "    ");
+            window_open(E, bc, k, at_middle(E, pass), "    ");
         if (!vel)
             force_scale(E, bc, k);
         any_whole |= !bc->has_near;
@@ -161,7 +158,7 @@ static void bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
     if (vel || any_whole) {
         E->target->loop_open(out, "    ", "i", "b->nown");
         if (E->target->windows_in_loops)
-            windows_open(E, b, kind, "        ");
+            windows_open(E, b, pass, "        ");
         /* Without a whole-body BC, the velocity pass's loop only clears the fix bits. */
         if (any_whole)
             fputs("        sph_pt p;\n        sph_point(b, i, D, t, dt, &p);\n        double val;\n", out);
@@ -169,7 +166,7 @@ static void bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
             fputs("        uint8_t fix = 0;\n", out);
         for (int k = 0; k < b->nbcs; k++) {
             const BcModel *bc = &b->bcs[k];
-            if (!bc_in_pass(bc, kind, 0))
+            if (!bc_in_pass(bc, pass, 0))
                 continue;
             if (bc->has_window)
                 fprintf(out, "        if (on%d)\n", k);
@@ -181,7 +178,7 @@ static void bc_pass(Emitter *E, const BodyModel *b, BcKind kind)
             fputs("        b->fix[i] = fix;\n", out);
         E->target->loop_close(out, "    ");
     }
-    bc_near_loops(E, b, kind);
+    bc_near_loops(E, b, pass);
     fputs("    (void)t;\n    (void)dt;\n}\n\n", out);
 }
 

@@ -9,6 +9,7 @@
 #include "emit_fracture.h"
 #include "emit_internal.h"
 #include "emit_quote.h"
+#include "lang/bc_kinds.h"
 #include "util/source.h"
 
 /* The corners of the prisms and pyramids of region `name`, and the maps that move its
@@ -54,8 +55,7 @@ static void region(Emitter *E, const char *name, const Region *r)
 /* What a BC sets, "velocity z" or "force surface x, z", for the runtime's messages. */
 static void bc_what(const BcModel *bc, char *buf, size_t size)
 {
-    static const char *const force[] = {"force", "force point", "force surface", "force accel"};
-    int len = snprintf(buf, size, "%s", bc->kind == BC_VELOCITY ? "velocity" : force[bc->force]);
+    int len = snprintf(buf, size, "%s", BC_KIND[bc->kind].written);
     for (int axis = 0, first = 1; axis < 3 && len > 0 && (size_t)len < size; axis++)
         if (bc->comps >> axis & 1) {
             len += snprintf(buf + len, size - (size_t)len, "%s%c", first ? " " : ", ", "xyz"[axis]);

@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "lang/bc_kinds.h"
 #include "util/source.h"
 
 /* ---------------------------------------------------------------- expressions */
@@ -123,14 +124,10 @@ struct ShapeExpr {
     int depth;         /* levels of nodes from here down: 1 for a primitive */
 };
 
-typedef enum { BC_VELOCITY, BC_FORCE } BcKind;
-typedef enum { FORCE_NONE, FORCE_POINT, FORCE_SURFACE, FORCE_ACCEL } ForceKind;
-
 /* velocity x, z = expr [from t0] [to t1] [near shape]
  * force surface z = expr [from t0] [to t1] [near shape] */
 typedef struct {
-    BcKind kind;
-    ForceKind force;   /* BC_FORCE only */
+    BcKind kind;       /* lang/bc_kinds.h */
     SrcLoc loc;
     int comps;         /* bit mask: 1 = x, 2 = y, 4 = z */
     SrcLoc comps_loc;

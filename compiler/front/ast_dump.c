@@ -15,6 +15,7 @@
 #include <stdlib.h>
 
 #include "ast.h"
+#include "lang/bc_kinds.h"
 
 static void indent(FILE *out, int depth)
 {
@@ -180,11 +181,7 @@ static void dump_comps(int mask, FILE *out)
 
 static void dump_bc(const BcDecl *bc, FILE *out)
 {
-    static const char *const forces[] = { "", "point", "surface", "accel" };
-    if (bc->kind == BC_VELOCITY)
-        fputs("(velocity ", out);
-    else
-        fprintf(out, "(force %s ", forces[bc->force]);
+    fprintf(out, "(%s ", BC_KIND[bc->kind].written);
     dump_comps(bc->comps, out);
     fputc(' ', out);
     ast_dump_expr(bc->value, out);

@@ -229,13 +229,28 @@ static BodyItem new_bodyitem(BodyItemKind kind, SrcLoc loc)
     return b;
 }
 
-static BodyItem bc_item(SrcLoc loc, BcKind kind, ForceKind force, CompList comps,
-                        Expr *value, BcDecl opts)
+/* The kind of boundary condition written `keyword word` (lang/bc_kinds.h; word NULL: the
+ * keyword alone, or a kind left out).  An unknown or missing kind is reported with the
+ * keyword's kinds (the tree is not read after an error). */
+static BcKind bc_kind(SrcLoc loc, const char *keyword, const char *word)
+{
+    int k = bc_kind_find(keyword, word);
+    if (k >= 0)
+        return (BcKind)k;
+    char words[256];
+    bc_kind_words(keyword, words, sizeof words);
+    if (word)
+        diag_error(loc, "unknown %s kind '%s' (expected %s)", keyword, word, words);
+    else
+        diag_error(loc, "missing %s kind (expected %s)", keyword, words);
+    return (BcKind)0;
+}
+
+static BodyItem bc_item(SrcLoc loc, BcKind kind, CompList comps, Expr *value, BcDecl opts)
 {
     BodyItem b = new_bodyitem(BI_BC, loc);
     b.bc = opts;
     b.bc.kind = kind;
-    b.bc.force = force;
     b.bc.loc = loc;
     b.bc.comps = comps.mask;
     b.bc.comps_loc = comps.loc;
@@ -299,7 +314,7 @@ static void report_unclosed(ParseState *ps, const YYLTYPE *at, int at_eof, const
 %token IMPORT "import" SCENE "scene" LET "let" FN "fn" MATERIAL "material" BODY "body"
 %token SHAPE "shape" STRESS "stress" ENERGY "energy" STATE "state" IF "if" ELSE "else"
 %token DISSIPATION "dissipation"
-%token VELOCITY "velocity" FORCE "force" POINT "point" SURFACE "surface" ACCEL "accel"
+%token VELOCITY "velocity" FORCE "force"
 %token FROM "from" TO "to" NEAR "near" MEASURE "measure" PLANE "plane"
 %token EXPECT "expect" REFERENCE "reference" WITHIN "within"
 %token AND "and" OR "or" NOT "not" SKIP "skip" NOTCH "notch" FRACTURE "fracture"
@@ -314,7 +329,6 @@ static void report_unclosed(ParseState *ps, const YYLTYPE *at, int at_eof, const
 %nterm <BodyDecl> bodyitems
 %nterm <BodyItem> bodyitem
 %nterm <CompList> comps
-%nterm <ForceKind> forcekind
 %nterm <BcDecl> bcopts
 %nterm <ShapeExpr *> shape primshape
 %nterm <NamedCall> call
@@ -459,9 +473,12 @@ bodyitems
 bodyitem
     : SHAPE shape                       { $$ = new_bodyitem(BI_SHAPE, LOC(@1)); $$.shape = $2; }
     | MATERIAL call                     { $$ = new_bodyitem(BI_MATERIAL, LOC(@1)); $$.material = $2; }
-    | VELOCITY comps '=' expr bcopts    { $$ = bc_item(LOC(@1), BC_VELOCITY, FORCE_NONE, $2, $4, $5); }
-    | FORCE forcekind comps '=' expr bcopts
-                                        { $$ = bc_item(LOC(@1), BC_FORCE, $2, $3, $5, $6); }
+    | VELOCITY comps '=' expr bcopts    { $$ = bc_item(LOC(@1), bc_kind(LOC(@1), "velocity", NULL),
+                                                       $2, $4, $5); }
+    | FORCE IDENT comps '=' expr bcopts { $$ = bc_item(LOC(@1), bc_kind(LOC(@2), "force", $2),
+                                                       $3, $5, $6); }
+    | FORCE comps '=' expr bcopts       { $$ = bc_item(LOC(@1), bc_kind(LOC(@2), "force", NULL),
+                                                       $2, $4, $5); }
     | MEASURE IDENT PLANE vec vec vec vec
                                         { $$ = points_item(BI_MEASURE, LOC(@1), $2, LOC(@2),
                                                            $4, $5, $6, $7); }
@@ -472,12 +489,6 @@ bodyitem
     | PLANE expr                        { $$ = new_bodyitem(BI_SETTING, LOC(@1));
                                           $$.setting = ast_setting(LOC(@1), "plane", $2); }
     | setting                           { $$ = new_bodyitem(BI_SETTING, $1.loc); $$.setting = $1; }
-    ;
-
-forcekind
-    : POINT                             { $$ = FORCE_POINT; }
-    | SURFACE                           { $$ = FORCE_SURFACE; }
-    | ACCEL                             { $$ = FORCE_ACCEL; }
     ;
 
 comps
@@ -509,7 +520,6 @@ primshape
 
 call
     : IDENT '(' namedargs_opt ')'       { $$ = (NamedCall){ ast_strdup($1), LOC(@1), $3 }; }
-    | SURFACE '(' namedargs_opt ')'     { $$ = (NamedCall){ ast_strdup("surface"), LOC(@1), $3 }; }
     ;
 
 namedargs_opt

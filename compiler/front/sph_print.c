@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "sph_print.h"
+#include "lang/bc_kinds.h"
 
 /* ------------------------------------------------------------------ expressions */
 
@@ -222,11 +223,7 @@ static void print_comps(int comps, FILE *out)
 
 static void print_bc(const BcDecl *bc, FILE *out)
 {
-    static const char *const kinds[] = {"", "point ", "surface ", "accel "};
-    if (bc->kind == BC_VELOCITY)
-        fputs("velocity ", out);
-    else
-        fprintf(out, "force %s", kinds[bc->force]);
+    fprintf(out, "%s ", BC_KIND[bc->kind].written);
     print_comps(bc->comps, out);
     fputs(" = ", out);
     sph_print_expr(bc->value, out);

@@ -5,15 +5,16 @@
 #include <string.h>
 
 #include "plan.h"
+#include "lang/bc_kinds.h"
 #include "lang/builtins.h"
 #include "util/diag.h"
 
-/* The body's BCs of that kind that set something (in 2D, not only out-of-plane components). */
-static int bcs_applied(const BodyModel *b, BcKind kind)
+/* The body's BCs of that pass that set something (in 2D, not only out-of-plane components). */
+static int bcs_applied(const BodyModel *b, BcPass pass)
 {
     int n = 0;
     for (int k = 0; k < b->nbcs; k++)
-        n += b->bcs[k].kind == kind && b->bcs[k].comps;
+        n += BC_KIND[b->bcs[k].kind].pass == pass && b->bcs[k].comps;
     return n;
 }
 

@@ -45,8 +45,7 @@ typedef struct {
 } FnDef;
 
 typedef struct {
-    BcKind kind;
-    ForceKind force;
+    BcKind kind;        /* lang/bc_kinds.h */
     int comps;          /* bit mask over 3D axes: 1 = x, 2 = y, 4 = z */
     Expr *value;
     int has_window;

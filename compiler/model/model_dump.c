@@ -2,6 +2,7 @@
 #include <stdio.h>
 
 #include "model.h"
+#include "lang/bc_kinds.h"
 
 static void region(FILE *out, const char *what, const Region *r)
 {
@@ -39,9 +40,8 @@ static void body(FILE *out, const BodyModel *b)
             b->hourglass);
     for (int k = 0; k < b->nbcs; k++) {
         const BcModel *bc = &b->bcs[k];
-        static const char *const forces[] = {"", " point", " surface", " accel"};
-        fprintf(out, "    bc %d: %s%s comps %s%s%s window [%g, %g]%s (line %d)\n", k,
-                bc->kind == BC_VELOCITY ? "velocity" : "force", forces[bc->force],
+        fprintf(out, "    bc %d: %s comps %s%s%s window [%g, %g]%s (line %d)\n", k,
+                BC_KIND[bc->kind].written,
                 bc->comps & 1 ? "x" : "", bc->comps & 2 ? "y" : "", bc->comps & 4 ? "z" : "",
                 bc->t0, bc->t1, bc->has_near ? " near shape" : "", bc->loc.line);
     }

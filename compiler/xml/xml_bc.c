@@ -3,7 +3,8 @@
  *   <bcvel xe="2" ye="2" z="0.0" tst=".." tend=".." mkid="4"/>
  *       velocity x, y = <expression 2> from .. to .. near <shape of mk 4>
  *       velocity z = 0 from .. to .. near <shape of mk 4>
- *   <bcforce type="1|2|3" ...>    force point | surface | accel ...   (type 2 by default)
+ *   <bcforce type="1|2|3" ...>    force point | surface | accel ...   (type 2 by default;
+ *                                 the kinds' xml column, lang/bc_kinds.h)
  *
  * Components with the same source (one expression id, or equal constants) share one
  * statement.  In a 2D case the y components are dropped (plane strain in x-z).
@@ -21,6 +22,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "lang/bc_kinds.h"
 #include "util/diag.h"
 #include "xml_internal.h"
 
@@ -59,6 +61,28 @@ static int component(const XmlCtx *x, const xmlNode *n, int a, Source *s)
     return 0;
 }
 
+/* <bcforce>'s type when it has none: a surface traction. */
+enum { BCFORCE_DEFAULT_TYPE = 2 };
+
+/* "type is 1 (point force), 2 (surface traction) or 3 (acceleration)": the kinds of
+ * lang/bc_kinds.h that SoliDualSPHysics has. */
+static void types_note(SrcLoc loc)
+{
+    char buf[256] = "";
+    int n = 0;
+    for (int t = 1; t <= bc_kind_xml_max(); t++)
+        n += bc_kind_of_xml(t) >= 0;
+    for (int t = 1, i = 0; t <= bc_kind_xml_max(); t++) {
+        int k = bc_kind_of_xml(t);
+        if (k < 0)
+            continue;
+        i++;
+        snprintf(buf + strlen(buf), sizeof buf - strlen(buf), "%s%d (%s)",
+                 i == 1 ? "" : i == n ? " or " : ", ", t, BC_KIND[k].what);
+    }
+    diag_note(loc, "type is %s", buf);
+}
+
 /* The options shared by the statements of one card: window, near, force kind. */
 static int options(XmlCtx *x, const xmlNode *n, int mk, BcDecl *opt)
 {
@@ -88,17 +112,18 @@ static int options(XmlCtx *x, const xmlNode *n, int mk, BcDecl *opt)
     }
     if (r && !(opt->near = xml_mk_shape(x, (int)v, loc)))
         return -1;
-    if (xml_is(n, "bcforce")) {
-        static const ForceKind kinds[] = {FORCE_POINT, FORCE_SURFACE, FORCE_ACCEL};
-        if ((r = xml_integer(x, n, "type", 0, 1, 3, &v)) < 0) {
-            diag_note(loc, "type is 1 (point force), 2 (surface traction) or 3 (acceleration)");
-            return -1;
-        }
-        opt->force = kinds[r ? v - 1 : 1];
-        opt->kind = BC_FORCE;
-    } else {
-        opt->kind = BC_VELOCITY;
+    if (!xml_is(n, "bcforce")) {
+        opt->kind = BC_KIND_velocity;
+        return 0;
     }
+    if ((r = xml_integer(x, n, "type", 0, 1, bc_kind_xml_max(), &v)) < 0 ||
+        (r && bc_kind_of_xml((int)v) < 0)) {
+        if (r > 0)
+            diag_error(loc, "<%s> attribute 'type': %ld is no force type", xml_name(n), v);
+        types_note(loc);
+        return -1;
+    }
+    opt->kind = bc_kind_of_xml(r ? (int)v : BCFORCE_DEFAULT_TYPE);
     return 0;
 }
 
@@ -134,7 +159,7 @@ int xml_bc(XmlCtx *x, const xmlNode *n, int mk, BodyDecl *body)
         return -1;
     }
     if (x->dim == 2 && s[1].given) {
-        if (opt.kind == BC_FORCE && (s[1].expr_id >= 0 || s[1].value != 0))
+        if (BC_KIND[opt.kind].pass == BC_FORCE && (s[1].expr_id >= 0 || s[1].value != 0))
             diag_warning(xml_loc(x, n), "<%s>: the y component is ignored in a 2D case",
                          xml_name(n));
         s[1].given = 0;

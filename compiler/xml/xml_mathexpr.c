@@ -25,9 +25,9 @@ static int is_keyword(const char *s)
     static const char *const words[] = {
         "import", "scene", "let", "fn", "material", "body", "shape", "stress", "energy",
         "dissipation",
-        "state", "if", "else", "velocity", "force", "point", "surface", "accel", "from", "to",
-        "near", "measure", "plane", "expect", "reference", "within", "and", "or", "not",
-        "skip", "Skip", "notch", "fracture", NULL};
+        "state", "if", "else", "velocity", "force", "from", "to", "near", "measure", "plane",
+        "expect", "reference", "within", "and", "or", "not", "skip", "Skip", "notch",
+        "fracture", NULL};
     for (int i = 0; words[i]; i++)
         if (!strcmp(s, words[i]))
             return 1;

@@ -14,7 +14,7 @@ endif()
 # What each folder may include besides itself (main.c, at the top, may include any).
 set(may_util "")
 set(may_lang "")
-set(may_front "util")
+set(may_front "util;lang")
 set(may_model "util;lang;front")
 set(may_ir "util;lang;front;model")
 set(may_check "util;lang;front;model;ir")
