@@ -30,7 +30,8 @@ typedef enum { BC_VELOCITY, BC_FORCE } BcPass;
     X(point, "force point", BC_FORCE, 1, "1.0 / b->mass", "1.0 / b->mass", "point force")      \
     X(surface, "force surface", BC_FORCE, 2, "b->dx / b->mass", "b->dx * b->dx / b->mass",     \
       "surface traction")                                                                      \
-    X(accel, "force accel", BC_FORCE, 3, "1.0", "1.0", "acceleration")
+    X(accel, "force accel", BC_FORCE, 3, "1.0", "1.0", "acceleration")                         \
+    X(volume, "force volume", BC_FORCE, 0, "1.0 / b->rho0", "1.0 / b->rho0", "force per volume")
 
 /* Their indices: BC_KIND_velocity, BC_KIND_point, ... */
 typedef enum {
