@@ -53,7 +53,7 @@ static void @B@_stress_pass(sph_body *b)
     /* on many processes the halo's u (v, s) first, staged through the host (sph_cuda.h) */
     const sph_cuda_field halo_in[] = {
         {b->u, sizeof *b->u, D, D, 1},
-//@if VISCOSITY
+//@if PAIR_V
         {b->v, sizeof *b->v, D, D, 1},
 //@endif
 //@if FRACTURE
@@ -103,7 +103,7 @@ static void @B@_momentum_pass(sph_body *b)
         {b->Cv, sizeof *b->Cv, D * D, 1, (size_t)b->n},
         {b->Cs, sizeof *b->Cs, 1, 1, 1},
 //@endif
-//@if HOURGLASS
+//@if PAIR_TERMS
         {b->F, sizeof *b->F, 9, 9, 1},
 //@endif
     };

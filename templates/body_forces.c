@@ -176,11 +176,11 @@ static void @B@_gradient_pass(sph_body *b)
     enum { D = @DIM@ };
     /* On many processes the halo's values are on their way while the pairs of own particles
      * are summed; the pairs with the halo follow (docs/mpi.md).  What the pair passes read of
-     * a neighbour: u here, and v for the viscosity of the momentum pass (unchanged until then),
-     * the phase field for its Laplacian. */
+     * a neighbour: u here, and v for the viscosity and the pair terms of the momentum pass
+     * (unchanged until then), the phase field for its Laplacian. */
     const sph_field halo_in[] = {
         SPH_FIELD(b->u, D),
-//@if VISCOSITY
+//@if PAIR_V
         SPH_FIELD(b->v, D),
 //@endif
 //@if FRACTURE
@@ -729,8 +729,8 @@ static void @B@_momentum_pass(sph_body *b)
     double *restrict acc = b->a;
 //@if MPI
     /* The halo's values of what the pairs read of a neighbour besides u and v: Q, and cof F
-     * and Cs for the viscosity, F for the hourglass control; on their way during the pairs of own
-     * particles (docs/mpi.md). */
+     * and Cs for the viscosity, F for the pair terms (which may read X, u, v and F of both
+     * particles); on their way during the pairs of own particles (docs/mpi.md). */
     const sph_field halo_in[] = {
         {b->Q, SPH_TENSOR_SIZE(D) * sizeof *b->Q},
 //@if VISCOSITY
@@ -741,7 +741,7 @@ static void @B@_momentum_pass(sph_body *b)
         SPH_FIELD(b->Cs, 1),
 //@endif
 //@endif
-//@if HOURGLASS
+//@if PAIR_TERMS
         SPH_FIELD(b->F, 9),
 //@endif
     };

@@ -441,22 +441,14 @@ static int check_material_use(const Model *m, const NamedCall *c, BodyModel *b)
 
 /* ------------------------------------------------------------------ settings */
 
-static int setting_int(const Model *m, const Setting *s, int lo, int *out)
+/* The one constant value of setting s, whose value is `what` (for the error). */
+static int one_value(const Model *m, const Setting *s, const char *what, double *out)
 {
-    double v;
     if (s->nvalues != 1) {
-        diag_error(s->loc, "'%s' takes one value", s->key);
+        diag_error(s->loc, "'%s' takes one value, %s", s->key, what);
         return -1;
     }
-    if (check_const_expr(m, s->values[0], s->key, &v))
-        return -1;
-    if (v != floor(v) || v < lo || v > SETTING_INT_MAX) {
-        diag_error(s->values[0]->loc, "'%s' must be an integer from %d to %d (got %g)", s->key,
-                   lo, SETTING_INT_MAX, v);
-        return -1;
-    }
-    *out = (int)v;
-    return 0;
+    return check_const_expr(m, s->values[0], s->key, out);
 }
 
 static int check_viscosity(const Model *m, const Setting *s, BodyModel *b)
@@ -475,66 +467,6 @@ static int check_viscosity(const Model *m, const Setting *s, BodyModel *b)
     if (why)
         diag_error(s->loc, "artificial viscosity coefficients %s", why);
     return why ? -1 : 0;
-}
-
-/* The one constant value of setting s, whose value is `what` (for the error). */
-static int one_value(const Model *m, const Setting *s, const char *what, double *out)
-{
-    if (s->nvalues != 1) {
-        diag_error(s->loc, "'%s' takes one value, %s", s->key, what);
-        return -1;
-    }
-    return check_const_expr(m, s->values[0], s->key, out);
-}
-
-static int check_hourglass(const Model *m, const Setting *s, BodyModel *b)
-{
-    if (one_value(m, s, "the penalty coefficient", &b->hourglass))
-        return -1;
-    if (!(b->hourglass >= 0 && b->hourglass <= 10)) {
-        diag_error(s->values[0]->loc, "the hourglass coefficient must lie in [0, 10] (typically "
-                                      "0.01 to 0.3; got %g)",
-                   b->hourglass);
-        return -1;
-    }
-    return 0;
-}
-
-/* lattice [x, y, z]: a cell corner of the particle lattice (docs/language.md). */
-static int check_lattice(const Model *m, const Setting *s, BodyModel *b)
-{
-    if (s->nvalues != 1) {
-        diag_error(s->loc, "'lattice' takes one point, a corner of the lattice's cells");
-        return -1;
-    }
-    if (check_vec3(m, s->values[0], "lattice", b->lattice))
-        return -1;
-    b->has_lattice = 1;
-    return 0;
-}
-
-/* restitution e and friction mu of the body's contacts. */
-static int check_contact_setting(const Model *m, const Setting *s, double *out)
-{
-    const int rest = !strcmp(s->key, "restitution");
-    char name[32];
-    if (one_value(m, s, rest ? "the coefficient of restitution" : "the friction coefficient",
-                  out))
-        return -1;
-    snprintf(name, sizeof name, "'%s'", s->key);
-    return check_admissible(s->values[0]->loc, name, rest ? Q_RESTITUTION : Q_FRICTION, *out);
-}
-
-/* soundspeed c: the reference sound speed instead of eq. 59's (time step, viscosity). */
-static int check_soundspeed(const Model *m, const Setting *s, BodyModel *b)
-{
-    if (one_value(m, s, "the sound speed in m/s", &b->c0_set))
-        return -1;
-    if (!(b->c0_set > 0 && isfinite(b->c0_set))) {
-        diag_error(s->values[0]->loc, "the sound speed must be positive (got %g)", b->c0_set);
-        return -1;
-    }
-    return 0;
 }
 
 /* plane y0 (2D): the plane y = y0 in which the body's shapes are cut. */
@@ -570,48 +502,64 @@ static int plane_cuts(const BodyModel *b)
     return 0;
 }
 
-static int check_refine(const Model *m, const Setting *s, BodyModel *b)
-{
-    return setting_int(m, s, 1, &b->refine);
-}
-
-static int check_nbsrange(const Model *m, const Setting *s, BodyModel *b)
-{
-    return setting_int(m, s, 1, &b->nbsrange);
-}
-
-static int check_restitution(const Model *m, const Setting *s, BodyModel *b)
-{
-    return check_contact_setting(m, s, &b->restitution);
-}
-
-static int check_friction(const Model *m, const Setting *s, BodyModel *b)
-{
-    return check_contact_setting(m, s, &b->friction);
-}
-
-/* The body settings (docs/language.md), each with its check; a new one is a row here. */
+/* The settings with members of their own (SET_OWN in model/body_settings.h), each with its
+ * check. */
 static const struct {
     const char *key;
     int (*check)(const Model *m, const Setting *s, BodyModel *b);
-} SETTINGS[] = {
-    {"refine", check_refine},           {"nbsrange", check_nbsrange},
-    {"viscosity", check_viscosity},     {"hourglass", check_hourglass},
-    {"lattice", check_lattice},         {"restitution", check_restitution},
-    {"friction", check_friction},       {"soundspeed", check_soundspeed},
+} OWN_SETTINGS[] = {
+    {"viscosity", check_viscosity},
     {"plane", check_plane},
 };
-enum { NSETTINGS = sizeof SETTINGS / sizeof SETTINGS[0] };
+
+/* Setting s of row `row` of the table (model/body_settings.h) into body b. */
+static int check_table_setting(const Model *m, const Setting *s, const BodySetting *row,
+                               BodyModel *b)
+{
+    double v, *out = body_setting_number(b, row);
+    switch (row->form) {
+    case SET_INT:
+        if (one_value(m, s, row->what, &v))
+            return -1;
+        if (inadmissible(Q_COUNT, v)) {
+            diag_error(s->values[0]->loc, "'%s' %s (got %g)", s->key, inadmissible(Q_COUNT, v),
+                       v);
+            return -1;
+        }
+        *body_setting_int(b, row) = (int)v;
+        return 0;
+    case SET_NUMBER:
+        if (one_value(m, s, row->what, out))
+            return -1;
+        return check_admissible(s->values[0]->loc, row->what, row->rule, *out);
+    case SET_POINT:
+        if (s->nvalues != 1) {
+            diag_error(s->loc, "'%s' takes one point, %s", s->key, row->what);
+            return -1;
+        }
+        if (check_vec3(m, s->values[0], s->key, out))
+            return -1;
+        *body_setting_given(b, row) = 1;
+        return 0;
+    case SET_OWN:
+        for (size_t k = 0; k < sizeof OWN_SETTINGS / sizeof *OWN_SETTINGS; k++)
+            if (!strcmp(s->key, OWN_SETTINGS[k].key))
+                return OWN_SETTINGS[k].check(m, s, b);
+        break;
+    }
+    diag_error(s->loc, "internal error: body setting '%s' has no check", s->key);
+    return -1;
+}
 
 static int check_setting(const Model *m, const Setting *s, BodyModel *b)
 {
-    for (int k = 0; k < NSETTINGS; k++)
-        if (!strcmp(s->key, SETTINGS[k].key))
-            return SETTINGS[k].check(m, s, b);
+    const BodySetting *row = body_setting_find(s->key);
+    if (row)
+        return check_table_setting(m, s, row, b);
     char expected[256] = "";
-    for (int k = 0; k < NSETTINGS; k++) /* `restrict` is read with the fracture */
+    for (int k = 0; k < BODY_NSETTINGS; k++) /* `restrict` is read with the fracture */
         snprintf(expected + strlen(expected), sizeof expected - strlen(expected), "%s, ",
-                 SETTINGS[k].key);
+                 BODY_SETTING_ROWS[k].keyword);
     expected[strlen(expected) - 2] = 0;
     diag_error(s->loc, "unknown body setting '%s' (expected %s or restrict)", s->key, expected);
     return -1;
@@ -782,8 +730,7 @@ int check_body(Model *m, const BodyDecl *d, BodyModel *b)
     memset(b, 0, sizeof *b);
     b->name = d->name;
     b->loc = d->loc;
-    b->refine = 1;
-    b->restitution = 1;
+    body_settings_default(b);
     b->bcs = calloc((size_t)d->n + 1, sizeof *b->bcs);
     b->measures = calloc((size_t)d->n + 1, sizeof *b->measures);
     int nshape = 0, nmat = 0, bad = 0;
@@ -807,8 +754,8 @@ int check_body(Model *m, const BodyDecl *d, BodyModel *b)
         diag_error(d->loc, "body '%s' has no material", d->name);
         bad = 1;
     }
-    if (!bad && b->c0_set > 0) /* after the material, which sets eq. 59's */
-        b->c0 = b->c0_set;
+    if (!bad && b->soundspeed > 0) /* after the material, which sets eq. 59's */
+        b->c0 = b->soundspeed;
     for (int i = 0; !bad && i < d->n; i++)
         if (d->items[i].kind == BI_SHAPE)
             bad |= region_fits(m, b, d->items[i].loc) != 0;

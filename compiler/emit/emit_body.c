@@ -43,6 +43,15 @@ static void body_env(const Emitter *E, const BodyModel *b, const BodyPlan *p, Tp
         tpl_set(env, #key, "%.17g", p->member);
     PLAN_NUMBERS(PLAN_KEY)
 #undef PLAN_KEY
+    /* the terms of the body's settings: switch on and key its value where nonzero */
+    for (k = 0; k < BODY_NSETTINGS; k++) {
+        const BodySetting *s = &BODY_SETTING_ROWS[k];
+        if (!s->sw)
+            continue;
+        tpl_switch(env, s->sw, p->terms >> k & 1);
+        if (p->terms >> k & 1)
+            tpl_set(env, s->sw, "%.17g", body_setting_value(b, s));
+    }
 }
 
 static int expand(Emitter *E, const char *file, const TplEnv *env)

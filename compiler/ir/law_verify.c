@@ -197,7 +197,7 @@ int law_verify(const Model *m, const MaterialDef *law, const double *params)
 
 int law_verify_moduli(const Model *m, const BodyModel *b)
 {
-    if (b->c0_set > 0) /* the body gives its sound speed */
+    if (b->soundspeed > 0) /* the body gives its sound speed */
         return 0;
     SGraph g;
     sg_init(&g);

@@ -10,8 +10,20 @@
  * runtime/pairs/offset_blocks.c, runtime/pairs/stencil.c; summary.json counts the pairs
  * each layout took.) */
 #include <stdio.h>
+#include <string.h>
 
 #include "plan.h"
+
+/* "pair terms (hourglass, ...)": the settings whose terms B_pair_terms adds (why, of size n). */
+static const char *pair_terms(const BodyPlan *p, char *why, size_t n)
+{
+    snprintf(why, n, "pair terms (");
+    for (int k = 0; k < BODY_NSETTINGS; k++)
+        if (BODY_SETTING_ROWS[k].pair && (p->terms >> k & 1))
+            snprintf(why + strlen(why), n - strlen(why), "%s, ", BODY_SETTING_ROWS[k].keyword);
+    snprintf(why + strlen(why) - 2, n - strlen(why) + 2, ")");
+    return why;
+}
 
 const char *layout_gradient_blocks_refused(const Model *m, const BodyPlan *p)
 {
@@ -30,9 +42,9 @@ const char *layout_momentum_blocks_refused(const Model *m, const BodyPlan *p)
         return "fracture";
     if (!p->viscosity)
         return "no viscosity (the blocks' break-even was measured with it)";
+    static char why[160]; /* the blocks copy only the pair values of physics/pairs.c */
     if (p->pair_terms)
-        return "pair terms (hourglass control reads F and X of both particles, which the "
-               "blocks do not copy)";
+        return pair_terms(p, why, sizeof why);
     return NULL;
 }
 
@@ -40,8 +52,9 @@ const char *layout_stencil_momentum_refused(const Model *m, const BodyPlan *p)
 {
     if (m->dim != 2)
         return "3D";
+    static char why[160];
     if (p->pair_terms)
-        return "pair terms (hourglass control)";
+        return pair_terms(p, why, sizeof why);
     return NULL;
 }
 

@@ -40,9 +40,23 @@ static int stress_staged(const Model *m, const LawRoots *r, const SGraph *law)
     return calls;
 }
 
-/* Each row of PLAN_FEATURES (plan.h) for body b of model m, with its law's roots r. */
+_Static_assert(BODY_NSETTINGS <= 32, "BodyPlan.terms has a bit per body setting");
+
+/* The settings of body b that switch a term of its code on (BodyPlan.terms). */
+static unsigned setting_terms(const BodyModel *b)
+{
+    unsigned terms = 0;
+    for (int k = 0; k < BODY_NSETTINGS; k++)
+        if (BODY_SETTING_ROWS[k].sw && body_setting_value(b, &BODY_SETTING_ROWS[k]) != 0)
+            terms |= 1u << k;
+    return terms;
+}
+
+/* Each row of PLAN_FEATURES (plan.h) for body b of model m, with its law's roots r, after
+ * the terms of its settings. */
 static void features(const Model *m, const BodyModel *b, const LawRoots *r, BodyPlan *p)
 {
+    p->terms = setting_terms(b);
 #define PLAN_VALUE(member, name, sw, value) p->member = (value);
     PLAN_FEATURES(PLAN_VALUE)
 #undef PLAN_VALUE

@@ -16,14 +16,14 @@
  * The value is computed by lower.c from the model m, the body b and its law's roots r.  The
  * plan has an int member for each; a template's //@if SWITCH keeps its lines where the
  * member is nonzero (//@else where it is zero), and --dump=plan prints name=member in this
- * order.  A new feature is one row here. */
+ * order.  A new feature is one row here; a body setting's term is a row of the settings'
+ * table instead (model/body_settings.h: `terms` below). */
 #define PLAN_FEATURES(X)                                                                           \
     X(viscosity, "viscosity", VISCOSITY, b->beta1 > 0 || b->beta2 > 0) /* eq. 57-60 */             \
     X(beta2, "beta2", BETA2, b->beta2 > 0) /* the quadratic term of eq. 58 */                      \
     X(gravity, "gravity", GRAVITY, m->gravity[0] || m->gravity[1] || m->gravity[2])                \
     X(velocity_bcs, "velocity_bcs", VELOCITY_BCS, bcs_applied(b, BC_VELOCITY) > 0)                 \
     X(force_bcs, "force_bcs", FORCE_BCS, bcs_applied(b, BC_FORCE) > 0)                             \
-    X(hourglass, "hourglass", HOURGLASS, b->hourglass > 0) /* hourglass control penalty */         \
     X(fracture, "fracture", FRACTURE, b->fracture.on) /* phase field, eq. 6-9, 61-63 */            \
     X(restrict_phase, "restrict", RESTRICT, b->fracture.restrict_expr != NULL)                     \
     X(state, "state", STATE, r->nslots > 0) /* its law has state (plasticity) */                   \
@@ -32,7 +32,8 @@
     X(measure, "measure", MEASURE, b->nmeasures > 0) /* measurement planes */                      \
     X(bc_fns, "bc_fns", BC_FNS, bcs_applied(b, BC_VELOCITY) + bcs_applied(b, BC_FORCE))            \
     X(symplectic, NULL, SYMPLECTIC, m->integrator == INTEGRATOR_SYMPLECTIC) /* else Verlet */      \
-    X(pair_terms, NULL, PAIR_TERMS, b->hourglass > 0) /* any term of B_pair_terms */             \
+    X(pair_terms, NULL, PAIR_TERMS, body_has_pair_terms(b)) /* any term of B_pair_terms */       \
+    X(pair_v, NULL, PAIR_V, p->viscosity || p->pair_terms) /* pairs read v of a neighbour */    \
     X(dim3, NULL, DIM3, m->dim == 3) /* else 2D (plane strain) */                               \
     X(staged, NULL, STAGED, stress_staged(m, r, &p->law)) /* the CPU's stress pass by blocks */ \
     X(rare, NULL, RARE, p->staged && !p->fracture && r->nrare > 0) /* and its law's fast path */ \
@@ -70,6 +71,9 @@ typedef struct {
     PLAN_NUMBERS(PLAN_NUMBER)
 #undef PLAN_NUMBER
     unsigned numbers;   /* bit k: row k of PLAN_NUMBERS holds (its `when`) */
+    /* bit k: row k of the body settings' table (model/body_settings.h) has a switch and the
+     * body's value is nonzero: its template switch is on and its key holds the value */
+    unsigned terms;
     int nstate;         /* state values per particle of its law (plasticity); 0: none */
     SGraph law;         /* the material law, constants folded, for this body's dimension */
     LawRoots roots;

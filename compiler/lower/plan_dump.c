@@ -100,6 +100,9 @@ void plan_dump(const Plan *plan, FILE *out)
         fprintf(out, " %s=%d", (const char *)name, p->member);
         PLAN_FEATURES(PLAN_DUMP)
 #undef PLAN_DUMP
+        for (int k = 0; k < BODY_NSETTINGS; k++)
+            if (BODY_SETTING_ROWS[k].sw)
+                fprintf(out, " %s=%u", BODY_SETTING_ROWS[k].keyword, p->terms >> k & 1);
         fputs("\n", out);
         layouts_dump(m, p, out);
         law_summary(p, b->law, out);

@@ -7,7 +7,11 @@
 
 typedef enum {
     Q_DENSITY, Q_YOUNG, Q_POISSON, Q_SHEAR, Q_BULK, Q_VISCOSITY, Q_RESTITUTION, Q_FRICTION,
-    Q_GC, Q_LENGTH, Q_LIMIT
+    Q_GC, Q_LENGTH, Q_LIMIT,
+    Q_COUNT,     /* a whole-number setting: 1 to SETTING_INT_MAX */
+    Q_HOURGLASS, /* the hourglass control's coefficient */
+    Q_SPEED,     /* a positive speed */
+    Q_ANY        /* any finite number */
 } Quantity;
 
 /* NULL when v is admissible as q, else the reason, a predicate that follows the number's
@@ -17,6 +21,7 @@ const char *inadmissible(Quantity q, double v);
 int check_admissible(SrcLoc loc, const char *name, Quantity q, double v);
 
 /* The largest whole-number body setting (refine, nbsrange). */
-enum { SETTING_INT_MAX = 1000 };
+#define SETTING_INT_MAX 1000
+#define SETTING_INT_MAX_TEXT "1000" /* the same, for messages */
 
 #endif

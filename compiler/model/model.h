@@ -7,6 +7,7 @@
 
 #include "front/ast.h"
 #include "util/name_index.h"
+#include "body_settings.h"
 
 /* in the order of sph_shape_kind (runtime/geom/region.h) */
 typedef enum { SHAPE_BOX, SHAPE_CYLINDER, SHAPE_SPHERE, SHAPE_SURFACE, SHAPE_PRISM,
@@ -75,22 +76,21 @@ typedef struct {
     SrcLoc restrict_loc;
 } FractureModel;
 
-typedef struct {
+typedef struct BodyModel {
     char *name;
     SrcLoc loc;
     Region region;
-    int refine, nbsrange;
     double rho0;
     double E, nu, lambda, mu, K;   /* elastic constants, all five derived */
     double c0;                     /* eq. 59, or the `soundspeed` setting */
-    double c0_set;                 /* `soundspeed c` (0: none) */
+    /* the settings of body_settings.h's table: refine, nbsrange, hourglass, lattice,
+     * restitution, friction, soundspeed (0: eq. 59's), ... */
+    BODY_SETTINGS(SETTING_MEMBER)
+    /* and the settings with members of their own (SET_OWN): */
+    double beta1, beta2;           /* `viscosity beta1 beta2`: artificial viscosity, eq. 58 */
     int has_plane;                 /* 2D: `plane y0`, the y of the plane the shapes are cut in */
     double plane;
     SrcLoc plane_loc;
-    double beta1, beta2;           /* artificial viscosity, eq. 58 */
-    double hourglass;              /* penalty coefficient of the hourglass control (0: off) */
-    int has_lattice;               /* `lattice P`: the fill lattice has a cell corner at P */
-    double lattice[3];
     const MaterialDef *law;
     double *law_args;              /* value of each law parameter, in law order */
     BcModel *bcs;
@@ -98,9 +98,25 @@ typedef struct {
     MeasureModel *measures;
     int nmeasures;
     FractureModel fracture;
-    double restitution;            /* contact: coefficient of restitution (1: elastic) */
-    double friction;               /* contact: Coulomb friction coefficient */
 } BodyModel;
+
+/* A body's settings by row of the table (body_settings.h; body_setting_rows.c): */
+/* The row of keyword, or NULL. */
+const BodySetting *body_setting_find(const char *keyword);
+/* Every setting of b at its default. */
+void body_settings_default(BodyModel *b);
+/* The value of setting s of b (SET_POINT: whether given; SET_OWN: 0). */
+double body_setting_value(const BodyModel *b, const BodySetting *s);
+/* Where its value goes: an int (SET_INT), a double or three (SET_NUMBER, SET_POINT). */
+int *body_setting_int(BodyModel *b, const BodySetting *s);
+double *body_setting_number(BodyModel *b, const BodySetting *s);
+/* SET_POINT: its three numbers, to read (NULL for the other forms). */
+const double *body_setting_point(const BodyModel *b, const BodySetting *s);
+/* SET_POINT: the flag that it was given. */
+int *body_setting_given(BodyModel *b, const BodySetting *s);
+/* Whether some setting of b switches on a pair term. */
+int body_has_pair_terms(const BodyModel *b);
+
 
 typedef struct {
     ExpectKind kind;

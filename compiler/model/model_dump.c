@@ -1,5 +1,6 @@
 /* model_dump.c — printing the checked model (sphc --dump=model). */
 #include <stdio.h>
+#include <string.h>
 
 #include "model.h"
 #include "lang/bc_kinds.h"
@@ -21,23 +22,38 @@ static void region(FILE *out, const char *what, const Region *r)
     fputs("\n", out);
 }
 
+/* A body's settings as a model would give them (body_settings.h), those with members of their
+ * own as theirs. */
+static void settings(FILE *out, const BodyModel *b)
+{
+    fputs("    settings:", out);
+    for (int k = 0; k < BODY_NSETTINGS; k++) {
+        const BodySetting *s = &BODY_SETTING_ROWS[k];
+        const double *v = body_setting_point(b, s);
+        if (s->form == SET_INT || s->form == SET_NUMBER)
+            fprintf(out, " %s %g", s->keyword, body_setting_value(b, s));
+        else if (s->form == SET_POINT && body_setting_value(b, s))
+            fprintf(out, " %s [%g %g %g]", s->keyword, v[0], v[1], v[2]);
+        else if (!strcmp(s->keyword, "viscosity"))
+            fprintf(out, " viscosity %g %g", b->beta1, b->beta2);
+        else if (!strcmp(s->keyword, "plane") && b->has_plane)
+            fprintf(out, " plane %g", b->plane);
+    }
+    fputs("\n", out);
+}
+
 static void body(FILE *out, const BodyModel *b)
 {
     fprintf(out, "  body %s\n", b->name);
     region(out, "shape", &b->region);
-    fprintf(out, "    refine %d  nbsrange %d  density %g\n", b->refine, b->nbsrange, b->rho0);
-    if (b->has_lattice)
-        fprintf(out, "    lattice corner [%g %g %g]\n", b->lattice[0], b->lattice[1],
-                b->lattice[2]);
-    if (b->has_plane)
-        fprintf(out, "    cut in the plane y = %g\n", b->plane);
+    settings(out, b);
+    fprintf(out, "    density %g\n", b->rho0);
     fprintf(out, "    elastic E %g nu %g lambda %g mu %g K %g  c0 %g m/s\n", b->E, b->nu, b->lambda,
             b->mu, b->K, b->c0);
     fprintf(out, "    material %s(", b->law->name);
     for (int k = 0; k < b->law->nparams; k++)
         fprintf(out, "%s%s = %g", k ? ", " : "", b->law->params[k], b->law_args[k]);
-    fprintf(out, ")\n    viscosity beta1 %g beta2 %g  hourglass %g\n", b->beta1, b->beta2,
-            b->hourglass);
+    fputs(")\n", out);
     for (int k = 0; k < b->nbcs; k++) {
         const BcModel *bc = &b->bcs[k];
         fprintf(out, "    bc %d: %s comps %s%s%s window [%g, %g]%s (line %d)\n", k,
@@ -47,7 +63,6 @@ static void body(FILE *out, const BodyModel *b)
     }
     for (int k = 0; k < b->nmeasures; k++)
         fprintf(out, "    measure %s\n", b->measures[k].name);
-    fprintf(out, "    contact restitution %g friction %g\n", b->restitution, b->friction);
     const FractureModel *f = &b->fracture;
     if (!f->on)
         return;
