@@ -240,9 +240,7 @@ static void @B@_update(sph_body *b, sph_time dt)
         return sph_max3{v2, a2, 0.0};
 //@endif
     });
-//@if VISCOSITY
-    SPH_ONCE({ b->red[SPH_RED_VISC_DISSIPATED] += b->red[SPH_RED_VISC_RATE] * dt; });
-//@endif
+    @B@_step_sums(b, dt); /* (body_sums.c) */
 }
 
 /* ---- body @B@: the stability monitor's sums on the device -------------------------------

@@ -116,7 +116,5 @@ static void @B@_update(sph_body *b, double dt)
 //@if CRUSH
     b->lam2min = lam2min;
 //@endif
-//@if VISCOSITY
-    b->visc_dissipated += b->visc_rate * dt;
-//@endif
+    @B@_step_sums(b, dt); /* (body_sums.c) */
 }

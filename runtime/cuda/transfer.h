@@ -11,17 +11,19 @@
 #include "scene/body_desc.h"
 #include "scene/model.h"
 #include "scene/state_arrays.h"
+#include "scene/step_sums.h"
 
-/* The sums of device view d's last step into host body h (the time step of sph_sim_step,
- * the energies; after a batch, the clock's copy has waited already). */
+/* The step sums of device view d's last step into host body h (the time step of
+ * sph_sim_step, the energies; after a batch, the clock's copy has waited already). */
 static void sph_cuda_reductions(sph_body *h, const sph_body *d)
 {
     double red[SPH_NRED];
     SPH_CUDA_CHECK(cudaMemcpy(red, d->red, sizeof red, cudaMemcpyDeviceToHost));
     sph_cuda_profile_collect(); /* (the host has waited) */
-    h->vmax2 = red[SPH_RED_VMAX2], h->amax2 = red[SPH_RED_AMAX2];
-    h->lam2min = sph_red_lam2min(red);
-    h->visc_rate = red[SPH_RED_VISC_RATE], h->visc_dissipated = red[SPH_RED_VISC_DISSIPATED];
+    double x[SPH_STEP_NSUMS];
+    for (int k = 0; k < SPH_STEP_NSUMS; k++)
+        x[k] = sph_red_to_host(k, red[k]);
+    sph_step_sums_set(h, x);
 }
 
 /* The stability monitor's sums of device view d, after its monitor pass: a few numbers

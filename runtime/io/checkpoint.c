@@ -38,6 +38,7 @@
 #include "scene/body.h"
 #include "scene/sim.h"
 #include "scene/state_arrays.h"
+#include "scene/step_sums.h"
 
 static const char MAGIC[8] = {'S', 'P', 'H', 'C', 'K', 'P', 'T', '\n'};
 enum { VERSION = 3 }; /* 3: bodies in pieces by global id; 2: the contact's closeness */
@@ -347,6 +348,38 @@ static void write_piece(void *ctx, int from, const void *data, size_t bytes)
         pw->w->bad = EIO;
 }
 
+/* Body b's saved step sums (scene/step_sums.h) as the scene's, in the table's order: the
+ * largest or smallest over the processes, or their total (collective); how many. */
+static int saved_sums(const sph_body *b, double sums[SPH_STEP_NSUMS])
+{
+    double x[SPH_STEP_NSUMS], most[SPH_STEP_NSUMS], add[SPH_STEP_NSUMS];
+    int nmost = 0, nadd = 0, n = 0;
+    sph_step_sums_get(b, x);
+    for (int k = 0; k < SPH_STEP_NSUMS; k++) {
+        const int r = sph_step_sum_reduce(k);
+        if (!sph_step_sum_saved(k))
+            continue;
+        if (r == SPH_REDUCE_ADD)
+            add[nadd++] = x[k];
+        else
+            most[nmost++] = r == SPH_REDUCE_MIN ? -x[k] : x[k]; /* (minima as maxima) */
+    }
+    if (nmost) /* (the same calls on every process: the table decides) */
+        b->par->max(most, nmost);
+    if (nadd)
+        b->par->sum(add, nadd);
+    nmost = nadd = 0;
+    for (int k = 0; k < SPH_STEP_NSUMS; k++) {
+        const int r = sph_step_sum_reduce(k);
+        if (!sph_step_sum_saved(k))
+            continue;
+        sums[n++] = r == SPH_REDUCE_ADD ? add[nadd++]
+                    : r == SPH_REDUCE_MIN ? -most[nmost++]
+                                          : most[nmost++];
+    }
+    return n;
+}
+
 /* Body i's records: shape, sums, and its pieces (collective; w only on process 0). */
 static void checkpoint_body(sph_ckpt_writer *w, sph_body *b, int i)
 {
@@ -354,11 +387,8 @@ static void checkpoint_body(sph_ckpt_writer *w, sph_body *b, int i)
     const sph_par *par = b->par;
     uint64_t shape[4];
     body_shape(b, shape);
-    double most[3] = {b->vmax2, b->amax2, -b->lam2min}, sum[2] = {b->visc_rate,
-                                                                 b->visc_dissipated};
-    par->max(most, 3);
-    par->sum(sum, 2);
-    const double sums[5] = {most[0], most[1], -most[2], sum[0], sum[1]};
+    double sums[SPH_STEP_NSUMS];
+    const int nsums = saved_sums(b, sums);
     piece_writer pw = {w, i, 0, NULL, {0}};
     sph_state_array arr[SPH_STATE_ARRAYS];
     pw.na = sph_body_state_arrays(b, b->desc->nstate, arr);
@@ -382,7 +412,7 @@ static void checkpoint_body(sph_ckpt_writer *w, sph_body *b, int i)
         key(name, sizeof name, i, "shape");
         sph_ckpt_put(w, name, shape, sizeof shape);
         key(name, sizeof name, i, "sums");
-        sph_ckpt_put(w, name, sums, sizeof sums);
+        sph_ckpt_put(w, name, sums, (size_t)nsums * sizeof *sums);
         const uint64_t pieces = (uint64_t)par->size;
         key(name, sizeof name, i, "pieces");
         sph_ckpt_put(w, name, &pieces, sizeof pieces);
@@ -493,17 +523,44 @@ static int restore_pieces(const sph_ckpt *c, sph_body *b, int i, const sph_id_in
     return 0;
 }
 
-static int restore_body(const sph_ckpt *c, sph_body *b, int i)
+/* Body i's saved step sums from its record (saved_sums' order): the scene's maxima and minima
+ * on every process, the totals of sums on process 0 alone, so that they add up again; the
+ * rows not saved keep their initial values.  A record of another length is of a program
+ * whose table of step sums differs. */
+static int restore_sums(const sph_ckpt *c, sph_body *b, int i)
 {
     char name[96];
-    double sums[5];
+    double x[SPH_STEP_NSUMS], sums[SPH_STEP_NSUMS];
+    size_t bytes;
+    int n = 0;
+    for (int k = 0; k < SPH_STEP_NSUMS; k++)
+        n += sph_step_sum_saved(k);
     key(name, sizeof name, i, "sums");
-    if (same_particles(c, b, i) || sph_ckpt_take(c, name, sums, sizeof sums))
+    const void *data = sph_ckpt_find(c, name, &bytes);
+    if (data && bytes != (size_t)n * sizeof(double)) {
+        sph_error("cannot restart from %s: it holds %zu sums of a step of body '%s' where this "
+                  "program keeps %d: it was written by another version of sphc", c->path,
+                  bytes / sizeof(double), b->desc->name, n);
         return -1;
-    b->vmax2 = sums[0], b->amax2 = sums[1], b->lam2min = sums[2];
-    /* the sums over the processes: all of it on process 0, so that they add up again */
+    }
+    if (sph_ckpt_take(c, name, sums, (size_t)n * sizeof *sums))
+        return -1;
     const int first = b->par->rank == 0;
-    b->visc_rate = first ? sums[3] : 0, b->visc_dissipated = first ? sums[4] : 0;
+    sph_step_sums_get(b, x);
+    n = 0;
+    for (int k = 0; k < SPH_STEP_NSUMS; k++)
+        if (sph_step_sum_saved(k)) {
+            x[k] = sph_step_sum_reduce(k) != SPH_REDUCE_ADD || first ? sums[n] : 0;
+            n++;
+        }
+    sph_step_sums_set(b, x);
+    return 0;
+}
+
+static int restore_body(const sph_ckpt *c, sph_body *b, int i)
+{
+    if (same_particles(c, b, i) || restore_sums(c, b, i))
+        return -1;
     int64_t *id = own_ids(b);
     sph_id_index *own = id ? sph_id_sort(id, b->nown) : NULL;
     if (!own) {

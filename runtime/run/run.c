@@ -48,6 +48,7 @@
 #include "scene/body.h"
 #include "scene/model.h"
 #include "scene/sim.h"
+#include "scene/step_sums.h"
 
 /* The stability monitor's periodic check: every this many steps (and before every output). */
 enum { CHECK_EVERY = 20 };
@@ -120,7 +121,6 @@ typedef struct {
 static int every(const sph_model *m, int i) { return (void)m, (void)i, 1; }
 static int with_fracture(const sph_model *m, int i) { return m->bodies[i].fracture != NULL; }
 static int with_dissipation(const sph_model *m, int i) { return m->bodies[i].dissipation > 0; }
-static int with_viscosity(const sph_model *m, int i) { return m->bodies[i].viscous; }
 static int with_contact(const sph_model *m, int i) { return (void)i, m->contact != NULL; }
 
 /* The contacts' stored (which 0) or dissipated (1) energy. */
@@ -142,10 +142,36 @@ static double plastic(const sph_sim *s, int i, const double *e)
 {
     return (void)e, sph_dissipated_energy(&s->bodies[i]);
 }
-static double viscous(const sph_sim *s, int i, const double *e)
+
+/* A body's step sum k, x on this process, as a row of energies.csv adds it up over the
+ * processes: a sum, each process's share; a maximum or minimum, the scene's, on process 0
+ * alone (every process asks: each holds its own until the next time step's exchange,
+ * run/sim.c). */
+static double step_sum_share(const sph_sim *s, int k, double x)
 {
-    return (void)e, s->bodies[i].visc_dissipated;
+    const int r = sph_step_sum_reduce(k);
+    if (r == SPH_REDUCE_ADD)
+        return x;
+    x = r == SPH_REDUCE_MIN ? -x : x;
+    s->par->max(&x, 1);
+    return s->par->rank == 0 ? (r == SPH_REDUCE_MIN ? -x : x) : 0;
 }
+
+/* The columns of the step sums (scene/step_sums.h): for each row, whether body i has it (a
+ * row that is no column: never) and its value. */
+#define STEP_SUM_COLUMN(member, SLOT, reduce, initial, saved, column, kind, when)               \
+    static int has_##member(const sph_model *m, int i)                                        \
+    {                                                                                          \
+        const sph_body_desc *d = &m->bodies[i];                                                \
+        return (void)m, (void)d, (when);                                                       \
+    }                                                                                          \
+    static double sum_##member(const sph_sim *s, int i, const double *e)                      \
+    {                                                                                          \
+        return (void)e, step_sum_share(s, SPH_STEP_SUM_##member, s->bodies[i].member);        \
+    }
+SPH_STEP_SUMS(STEP_SUM_COLUMN)
+#undef STEP_SUM_COLUMN
+
 static double contact(const sph_sim *s, int i, const double *e)
 {
     return (void)i, (void)e, contact_energy(s, 0);
@@ -160,7 +186,11 @@ static const energy_column ENERGY_COLUMNS[] = {
     {"kinetic", BLOCK, KINETIC, every, kinetic},
     {"fracture", EACH, HELD, with_fracture, fracture}, /* crack surface energy */
     {"plastic", EACH, DISSIPATED, with_dissipation, plastic}, /* the material law's */
-    {"viscous", EACH, DISSIPATED, with_viscosity, viscous},   /* artificial viscosity's */
+    /* the step sums' (scene/step_sums.h): viscous, artificial viscosity's */
+#define STEP_SUM_ROW(member, SLOT, reduce, initial, saved, column, kind, when) \
+    {column, EACH, kind, has_##member, sum_##member},
+    SPH_STEP_SUMS(STEP_SUM_ROW)
+#undef STEP_SUM_ROW
     {"contact", SCENE, HELD, with_contact, contact},
     /* what the contacts' damping and friction took */
     {"contact_dissipated", SCENE, DISSIPATED, with_contact, contact_lost},

@@ -27,6 +27,7 @@
 #include "scene/model.h"
 #include "scene/pass_types.h"
 #include "scene/point.h"
+#include "scene/step_sums.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -137,7 +138,10 @@ static void allocate(sph_body *b)
     b->psi = zalloc(n, sizeof(double));
     b->sigma = zalloc(n * 6, sizeof(double));
     b->fix = zalloc(n, 1);
-    b->lam2min = 1.0;
+    double sums[SPH_STEP_NSUMS]; /* (the step sums before the first step) */
+    for (int k = 0; k < SPH_STEP_NSUMS; k++)
+        sums[k] = sph_step_sum_initial(k);
+    sph_step_sums_set(b, sums);
     if (b->desc->crush) {
         b->lam2 = zalloc(n, sizeof(double));
         for (size_t i = 0; i < n; i++)

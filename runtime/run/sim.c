@@ -14,6 +14,7 @@
 #include "scene/body.h"
 #include "scene/model.h"
 #include "scene/sim.h"
+#include "scene/step_sums.h"
 
 static void initial_speeds(sph_sim *s)
 {
@@ -90,26 +91,53 @@ double sph_sim_stretch(const sph_sim *s)
     return lam;
 }
 
-/* On many processes: each body's bounds of eq. 65-66 over all of them, one exchange for the
- * scene (the largest |v|^2 and |a|^2, the smallest stretch; as maxima: -lam2min). */
+/* Whether step sum k is the scene's, a maximum or minimum (scene/step_sums.h), and its value
+ * as a maximum: a minimum negated (the same map back). */
+static int scene_sum(int k) { return sph_step_sum_reduce(k) != SPH_REDUCE_ADD; }
+static double as_max(int k, double x) { return sph_step_sum_reduce(k) == SPH_REDUCE_MIN ? -x : x; }
+
+/* Body b's scene sums into x, each as a maximum. */
+static void scene_sums_out(const sph_body *b, double *x)
+{
+    double all[SPH_STEP_NSUMS];
+    sph_step_sums_get(b, all);
+    for (int k = 0; k < SPH_STEP_NSUMS; k++)
+        if (scene_sum(k))
+            *x++ = as_max(k, all[k]);
+}
+
+/* Body b's scene sums from x, as scene_sums_out wrote them. */
+static void scene_sums_in(sph_body *b, const double *x)
+{
+    double all[SPH_STEP_NSUMS];
+    sph_step_sums_get(b, all);
+    for (int k = 0; k < SPH_STEP_NSUMS; k++)
+        if (scene_sum(k))
+            all[k] = as_max(k, *x++);
+    sph_step_sums_set(b, all);
+}
+
+/* On many processes: each body's maxima and minima of a step over all of them, one exchange
+ * for the scene (the bounds of eq. 65-66: the largest |v|^2 and |a|^2, the smallest stretch).
+ * The sums stay each process's share. */
 static void global_bounds(sph_sim *s)
 {
     if (s->par->size == 1)
         return;
-    double stack[3 * 8], *x = s->nbodies <= 8 ? stack : malloc(3 * sizeof *x * s->nbodies);
+    int per = 0;
+    for (int k = 0; k < SPH_STEP_NSUMS; k++)
+        per += scene_sum(k);
+    double stack[SPH_STEP_NSUMS * 8];
+    double *x = s->nbodies <= 8 ? stack : malloc((size_t)per * sizeof *x * s->nbodies);
     if (!x) {
         sph_error("out of memory");
         exit(SPH_EXIT_SETUP);
     }
-    for (int i = 0; i < s->nbodies; i++) {
-        const sph_body *b = &s->bodies[i];
-        x[3 * i] = b->vmax2, x[3 * i + 1] = b->amax2, x[3 * i + 2] = -b->lam2min;
-    }
-    s->par->max(x, 3 * s->nbodies);
-    for (int i = 0; i < s->nbodies; i++) {
-        sph_body *b = &s->bodies[i];
-        b->vmax2 = x[3 * i], b->amax2 = x[3 * i + 1], b->lam2min = -x[3 * i + 2];
-    }
+    for (int i = 0; i < s->nbodies; i++)
+        scene_sums_out(&s->bodies[i], x + per * i);
+    s->par->max(x, per * s->nbodies);
+    for (int i = 0; i < s->nbodies; i++)
+        scene_sums_in(&s->bodies[i], x + per * i);
     if (x != stack)
         free(x);
 }

@@ -1,6 +1,6 @@
 /* body.h — a body's particles as the passes work on them (sph_body): the reference and
  * current state, the pair lists and offset tables, the CPU's stencil and offset blocks, the
- * device's full lists, fracture, selections and the passes' reductions. */
+ * device's full lists, fracture, selections and the passes' step sums (step_sums.h). */
 #ifndef SPHRT_SCENE_BODY_H
 #define SPHRT_SCENE_BODY_H
 
@@ -8,6 +8,7 @@
 
 #include "body_desc.h"
 #include "pass_types.h"
+#include "step_sums.h"
 #include "core/defs.h"
 
 SPH_C_BEGIN
@@ -73,9 +74,9 @@ struct sph_body {
     int *hb_start, *hb, *hb_k;
     int *stripe;          /* nstripes + 1 particle indices */
     int nstripes;
-    double *stripe_sum;   /* nstripes: a sum over each stripe's pairs (the viscous power),
-                           * added up in stripe order after the pass: the same bits on any
-                           * number of threads */
+    double *stripe_sum;   /* nstripes: a sum over each stripe's pairs (the viscous power)
+                           * or particles (SPH_STEP_SUM_OVER), added up in stripe order after
+                           * the pass: the same bits on any number of threads */
     /* The lattice stencil (stencil.c; CPU only).  Where particles sit on a lattice, most
      * have the same half list relative to their own index: neighbours i + st_o[q] at offset
      * table entries st_k[q], q < st_m.  A particle whose pairs are exactly those and their
@@ -138,7 +139,7 @@ struct sph_body {
     /* Device targets: u and v by component (us[r*n + i]), as the pair passes read their
      * neighbours' (sph_cuda_components, cuda/components.h).  NULL on the CPU. */
     double *us, *vs;
-    /* Device targets: the reductions below as the device sums them (SPH_RED_* of
+    /* Device targets: the step sums below as the device sums them (SPH_RED_* of
      * cuda/sums.h), read back once per step.  NULL on the CPU. */
     double *red;
 
@@ -157,15 +158,31 @@ struct sph_body {
     int **ms_list;      /* per measure: particle indices */
     int *ms_count;
 
-    /* reductions written by the generated update pass */
-    double vmax2, amax2;
     /* the time step's bound on compression (desc->crush): each particle's squared smallest
-     * principal stretch from the last stress pass, and their minimum (update; 1 before) */
-    double *lam2, lam2min;
-    /* artificial viscosity: the rate at which it dissipates energy (momentum pass) and the
-     * energy it has dissipated so far (update) */
-    double visc_rate, visc_dissipated;
+     * principal stretch from the last stress pass (their minimum: lam2min, below) */
+    double *lam2;
+    /* the step sums the generated passes write, one double each (vmax2, amax2, lam2min,
+     * visc_rate, visc_dissipated, ...): the rows of step_sums.h */
+#define SPH_STEP_SUM_MEMBER(member, ...) double member;
+    SPH_STEP_SUMS(SPH_STEP_SUM_MEMBER)
+#undef SPH_STEP_SUM_MEMBER
 };
+
+/* Body b's step sums into x, in the table's order (step_sums.h). */
+static inline void sph_step_sums_get(const sph_body *b, double x[SPH_STEP_NSUMS])
+{
+#define SPH_STEP_SUM_GET(member, ...) x[SPH_STEP_SUM_##member] = b->member;
+    SPH_STEP_SUMS(SPH_STEP_SUM_GET)
+#undef SPH_STEP_SUM_GET
+}
+
+/* Body b's step sums from x, in the table's order. */
+static inline void sph_step_sums_set(sph_body *b, const double x[SPH_STEP_NSUMS])
+{
+#define SPH_STEP_SUM_SET(member, ...) b->member = x[SPH_STEP_SUM_##member];
+    SPH_STEP_SUMS(SPH_STEP_SUM_SET)
+#undef SPH_STEP_SUM_SET
+}
 
 /* The first k < n with a[k stride] >= v (n when none): a binary search of ascending values. */
 static inline int sph_first_at_least(const int *a, int n, int stride, int v)
