@@ -27,23 +27,37 @@ static void accumulate(SGraph *g, int *adj, int k, int term)
     adj[k] = adj[k] < 0 ? term : add(g, adj[k], term);
 }
 
-/* d f(a) / da of built-in f at a, whose value is node id; -1 for a function without a rule. */
-static int call_rule(SGraph *g, int fn, int a, int id)
+/* d f(x) / dx of built-in f at x, whose value is node fx, by the rule in f's row of
+ * BUILTIN_FUNCTIONS (lang/builtins.h), written with these builders; -1 for a function
+ * without a rule. */
+static int call_rule(SGraph *g, int fn, int x, int fx)
 {
+#define call(f, arg) sg_call(g, BI_##f, arg)
+#define neg(v) sg_unary(g, SN_NEG, v)
+#define add(p, q) add(g, p, q)
+#define sub(p, q) sg_binary(g, SN_SUB, p, q)
+#define mul(p, q) mul(g, p, q)
+#define divide(p, q) divide(g, p, q)
+#define num(v) num(g, v)
+#define select(c, p, q) sg_select(g, c, p, q)
+#define lt(p, q) sg_binary(g, SN_LT, p, q)
+#define NONE -1
     switch (fn) {
-    case BI_sin: return sg_call(g, BI_cos, a);
-    case BI_cos: return sg_unary(g, SN_NEG, sg_call(g, BI_sin, a));
-    case BI_tan: return add(g, num(g, 1), mul(g, id, id));          /* 1 + tan^2 */
-    case BI_sinh: return sg_call(g, BI_cosh, a);
-    case BI_cosh: return sg_call(g, BI_sinh, a);
-    case BI_tanh: return sg_binary(g, SN_SUB, num(g, 1), mul(g, id, id));
-    case BI_sqrt: return divide(g, num(g, 0.5), id);
-    case BI_log: return divide(g, num(g, 1 / log(10.0)), a);       /* log10 */
-    case BI_ln: return divide(g, num(g, 1), a);
-    case BI_exp: return id;
-    case BI_abs: return sg_select(g, sg_binary(g, SN_LT, a, num(g, 0)), num(g, -1), num(g, 1));
-    default: return -1;
+#define X(name, arity, form, c, value, derivative) case BI_##name: return derivative;
+        BUILTIN_FUNCTIONS(X)
+#undef X
     }
+    return -1;
+#undef call
+#undef neg
+#undef add
+#undef sub
+#undef mul
+#undef divide
+#undef num
+#undef select
+#undef lt
+#undef NONE
 }
 
 /* The shares of node s (value: node id) with adjoint d, added to its operands'. */

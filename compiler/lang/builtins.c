@@ -21,7 +21,7 @@ int builtin_variable(const char *name)
 }
 
 const Builtin BUILTIN_FUNCTION[NBUILTIN_FUNCTIONS] = {
-#define X(name, arity, form, c, value) {#name, arity, form, c},
+#define X(name, arity, form, c, value, derivative) {#name, arity, form, c},
     BUILTIN_FUNCTIONS(X)
 #undef X
 };
@@ -43,7 +43,7 @@ int builtin_function_arity(const char *name)
 double builtin_value(int f, const double *a)
 {
     switch (f) {
-#define X(name, arity, form, c, value) case BI_##name: return value;
+#define X(name, arity, form, c, value, derivative) case BI_##name: return value;
         BUILTIN_FUNCTIONS(X)
 #undef X
     }
