@@ -301,6 +301,21 @@ static xmlEntity *get_parameter_entity(void *ctx, const xmlChar *name)
     return NULL;
 }
 
+/* Line numbers.  libxml2 keeps a node's line in 16 bits: past line 65535 an element's line
+ * reads 65535 (XML_PARSE_BIG_LINES keeps the real one for text nodes only, and
+ * xmlGetLineNo of an element then reads a neighbouring text node's, often the next line).
+ * Each element past that line gets its line in psvi (which only schema validation uses,
+ * and sphc does not validate); xml_loc reads it there. */
+static void start_element(void *ctx, const xmlChar *name, const xmlChar *prefix,
+                          const xmlChar *uri, int nns, const xmlChar **ns, int nattrs,
+                          int ndefaulted, const xmlChar **attrs)
+{
+    xmlSAX2StartElementNs(ctx, name, prefix, uri, nns, ns, nattrs, ndefaulted, attrs);
+    const xmlParserCtxt *c = ctx;
+    if (c->node && c->input && c->input->line >= XML_NODE_LINE_MAX)
+        c->node->psvi = (void *)(intptr_t)c->input->line;
+}
+
 static xmlDoc *parse_document(const char *path)
 {
     size_t len, elen;
@@ -327,11 +342,13 @@ static xmlDoc *parse_document(const char *path)
     }
     ctxt->sax->getEntity = get_entity;
     ctxt->sax->getParameterEntity = get_parameter_entity;
+    ctxt->sax->startElementNs = start_element;
     ParseState state = {path, 0, ctxt, 0, 0};
     parsing = &state;
     xmlSetStructuredErrorFunc(&state, xml_error);
     /* Not XML_PARSE_HUGE: it would lift libxml2's own limits on entities too. */
-    xmlDoc *doc = xmlCtxtReadMemory(ctxt, text, (int)elen, path, NULL, XML_PARSE_NONET);
+    xmlDoc *doc = xmlCtxtReadMemory(ctxt, text, (int)elen, path, NULL,
+                                    XML_PARSE_NONET | XML_PARSE_BIG_LINES);
     xmlSetStructuredErrorFunc(NULL, NULL);
     parsing = NULL;
     xmlFreeParserCtxt(ctxt);
