@@ -9,7 +9,12 @@
  * `tension` block's S+ is checked against psi+ alike, pos and neg differentiated by their
  * adjoint routine (spectral.c): stdlib svk's S+ = lambda max(tr E, 0) I + 2 mu pos(E)
  * (eq. 17) agrees with its psi+ (eq. 11) to 1e-15, compression and mixed-sign principal
- * strains among the samples. */
+ * strains among the samples.
+ *
+ * At the same samples every law's energy is checked for objectivity (psi(Q F) = psi(F) for
+ * rotations Q: a warning), and each body's law for values that are not finite at and near
+ * F = I, where its particles start (an error); its small-strain moduli are compared with the
+ * body's elastic constants. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -159,12 +164,98 @@ static const MatStmt *tension_stmt(const MaterialDef *law)
     return NULL;
 }
 
+/* ------------------------------------------------------------------ objectivity */
+
+/* An energy is a function of F through C = F^T F only (objectivity): psi(R F) = psi(F) for
+ * every rotation Q, so a rigid rotation stores no energy.  One written with F itself (the
+ * small-strain eps = sym(F - I)) changes under a rotation: a spinning body would be
+ * stressed by its spin and deform.  psi(F) and psi(Q F) are both evaluated at the samples
+ * for two rotations (one in the x-z plane of a 2D body, one about a general axis); they
+ * agree to round-off for a function of C (stdlib's laws to 1e-14) and differ by a fraction
+ * of psi otherwise (0.3 for linear elasticity at a rotation of 0.7). */
+#define LAW_OBJECTIVE_TOLERANCE 1e-6
+
+enum { NROTATIONS = 2 };
+
+static const struct {
+    const char *what;
+    double axis[3], angle;
+} ROTATIONS[NROTATIONS] = {
+    {"a rotation by 0.7 about y (in the x-z plane)", {0, 1, 0}, 0.7},
+    {"a rotation by 2 about (1, 2, 3)", {1, 2, 3}, 2.0},
+};
+
+static void rotated(int rot, const double F[9], double QF[9])
+{
+    double n[3], Q[9];
+    const double *a = ROTATIONS[rot].axis, len = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    for (int k = 0; k < 3; k++)
+        n[k] = a[k] / len;
+    rotation(n, ROTATIONS[rot].angle, Q);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            QF[3 * i + j] = Q[3 * i] * F[j] + Q[3 * i + 1] * F[3 + j] + Q[3 * i + 2] * F[6 + j];
+}
+
+static double energy_at(const SGraph *g, const LawRoots *r, int psi, const double F[9],
+                        double *val)
+{
+    Point p = {F, r};
+    sg_eval(g, psi, input_at, &p, NULL, val);
+    return val[psi];
+}
+
+/* The largest |psi(Q F) - psi(F)| over the samples and the rotations (*at, *rot: where),
+ * relative to the largest |psi| at the samples (a tensile energy is 0 at a compression, where
+ * the round-off of Q F may give it 1e-30); samples outside the law's domain are skipped. */
+static double worst_rotation(const SGraph *g, const LawRoots *r, int psi, int *at, int *rot)
+{
+    double *val = malloc((size_t)g->n * sizeof *val), worst = 0, scale = 0;
+    double e[NSAMPLES], eq[NSAMPLES][NROTATIONS];
+    Sample s[NSAMPLES];
+    samples(s);
+    *at = *rot = 0;
+    for (int q = 0; q < NSAMPLES; q++) {
+        e[q] = energy_at(g, r, psi, s[q].F, val);
+        for (int k = 0; k < NROTATIONS; k++) {
+            double QF[9];
+            rotated(k, s[q].F, QF);
+            eq[q][k] = energy_at(g, r, psi, QF, val);
+            if (isfinite(e[q]) && isfinite(eq[q][k]))
+                scale = fmax(scale, fmax(fabs(e[q]), fabs(eq[q][k])));
+        }
+    }
+    for (int q = 0; q < NSAMPLES && scale > 0; q++)
+        for (int k = 0; k < NROTATIONS; k++) {
+            const double rel = fabs(eq[q][k] - e[q]) / scale;
+            if (isfinite(rel) && rel > worst)
+                worst = rel, *at = q, *rot = k;
+        }
+    free(val);
+    return worst;
+}
+
+static int check_objective(const SGraph *g, const LawRoots *r, const MaterialDef *law,
+                           int psi, const MatStmt *energy, const char *what)
+{
+    Sample s[NSAMPLES];
+    samples(s);
+    int at, rot;
+    const double worst = worst_rotation(g, r, psi, &at, &rot);
+    if (!(worst > LAW_OBJECTIVE_TOLERANCE))
+        return 0;
+    diag_warning(energy ? energy->loc : law->loc, "the %s of material '%s' is not objective: a "
+                 "rigid rotation Q changes it (|psi(Q F) - psi(F)| is %.3g of the largest |psi| "
+                 "at the samples, at %s, Q %s): a spinning body would be strained by its spin "
+                 "(write the energy as a function of C = F^T F, E or J)", what, law->name, worst,
+                 s[at].what, ROTATIONS[rot].what);
+    return 1;
+}
+
 int law_verify(const Model *m, const MaterialDef *law, const double *params)
 {
     const MatStmt *stress = stress_stmt(&law->body), *tension = tension_stmt(law);
     const MatStmt *stress_p = tension ? stress_stmt(&tension->body) : NULL;
-    if (!stress && !stress_p)
-        return 0;
     SGraph g;
     sg_init(&g);
     LawRoots r;
@@ -174,6 +265,11 @@ int law_verify(const Model *m, const MaterialDef *law, const double *params)
         samples(s);
         double worst;
         int at;
+        warnings += check_objective(&g, &r, law, r.psi, stmt_of_kind(&law->body, MS_ENERGY),
+                                    "energy");
+        if (r.has_tension && tension)
+            warnings += check_objective(&g, &r, law, r.psip,
+                                        stmt_of_kind(&tension->body, MS_ENERGY), "tensile energy");
         if (stress && !worst_difference(&g, &r, r.S, r.psi, &worst, &at) &&
             worst > LAW_VERIFY_TOLERANCE) {
             diag_warning(stress->loc, "the stress of material '%s' is not the derivative of its "
