@@ -3,6 +3,7 @@
  * runtime. */
 #define _XOPEN_SOURCE 700
 #include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,18 +15,129 @@
 #include "driver.h"
 #include "emit/emit.h"
 
+/* ------------------------------------------------------------------ stopped by a signal */
+
+/* sphc stopped by SIGINT, SIGTERM or SIGHUP while it writes the source or the compiler runs:
+ * the temporary folder and the source in it are removed, the compiler gets the signal too
+ * (a SIGTERM sent to sphc alone would leave it running) and is waited for, and sphc then
+ * ends by the signal, as it would have without a handler.  A signal the caller ignores
+ * (nohup, a background job) stays ignored. */
+static const int STOP_SIGNALS[] = {SIGINT, SIGTERM, SIGHUP};
+enum { NSTOP = sizeof STOP_SIGNALS / sizeof STOP_SIGNALS[0] };
+
+static char tmp_dir[4096], tmp_src[4200]; /* the temporary folder and its source */
+static volatile sig_atomic_t tmp_made;     /* tmp_dir exists and is sphc's to remove */
+static volatile sig_atomic_t compiler_pid; /* the compiler running, or 0 */
+
+/* Only async-signal-safe calls. */
+static void on_stop_signal(int sig)
+{
+    if (tmp_made) {
+        unlink(tmp_src);
+        rmdir(tmp_dir);
+    }
+    for (int k = 0; k < NSTOP; k++) /* a second signal ends sphc at once */
+        signal(STOP_SIGNALS[k], SIG_DFL);
+    const pid_t pid = compiler_pid;
+    if (pid > 0) {
+        kill(pid, sig);
+        while (waitpid(pid, NULL, 0) < 0 && errno == EINTR)
+            ;
+    }
+    raise(sig);
+}
+
+static void catch_stop_signals(void)
+{
+    for (int k = 0; k < NSTOP; k++) {
+        struct sigaction old, sa;
+        if (sigaction(STOP_SIGNALS[k], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
+            continue;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_stop_signal;
+        sigemptyset(&sa.sa_mask);
+        for (int j = 0; j < NSTOP; j++)
+            sigaddset(&sa.sa_mask, STOP_SIGNALS[j]);
+        sigaction(STOP_SIGNALS[k], &sa, NULL);
+    }
+}
+
+/* The stop signals held back (the mask before in *old), and let through again. */
+static void hold_stop_signals(sigset_t *old)
+{
+    sigset_t set;
+    sigemptyset(&set);
+    for (int k = 0; k < NSTOP; k++)
+        sigaddset(&set, STOP_SIGNALS[k]);
+    sigprocmask(SIG_BLOCK, &set, old);
+}
+
+static void release_stop_signals(const sigset_t *old)
+{
+    sigprocmask(SIG_SETMASK, old, NULL);
+}
+
+/* The temporary folder removed (its source first), no longer the handler's. */
+static void remove_tmp(void)
+{
+    if (!tmp_made)
+        return;
+    tmp_made = 0;
+    remove(tmp_src);
+    rmdir(tmp_dir);
+}
+
+/* The folder for the generated source: TMPDIR's (or /tmp's) sphc-XXXXXX, in tmp_dir.
+ * Returns 0, or -1 after an error. */
+static int make_tmp(void)
+{
+    const char *base = getenv("TMPDIR");
+    if (!base || !*base)
+        base = "/tmp";
+    if (snprintf(tmp_dir, sizeof tmp_dir, "%s/sphc-XXXXXX", base) >= (int)sizeof tmp_dir) {
+        diag_fatal_noloc("cannot create a temporary folder: TMPDIR is too long");
+        return -1;
+    }
+    catch_stop_signals();
+    sigset_t old;
+    hold_stop_signals(&old); /* made and marked as one step */
+    const int made = mkdtemp(tmp_dir) != NULL;
+    const int err = errno;
+    tmp_src[0] = 0;
+    tmp_made = made;
+    release_stop_signals(&old);
+    if (!made) {
+        diag_fatal_noloc("cannot create a temporary folder in %s: %s", base, strerror(err));
+        return -1;
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------------ the compiler */
+
 static int run_command(char *const argv[])
 {
+    sigset_t old;
+    hold_stop_signals(&old); /* the pid known to the handler before a signal */
     pid_t pid = fork();
-    if (pid < 0)
-        return -1;
     if (pid == 0) {
+        for (int k = 0; k < NSTOP; k++) /* not sphc's handler: the signal's own action */
+            if (signal(STOP_SIGNALS[k], SIG_DFL) == SIG_IGN)
+                signal(STOP_SIGNALS[k], SIG_IGN);
+        release_stop_signals(&old);
         execvp(argv[0], argv);
         fprintf(stderr, "sphc: error: cannot run '%s': %s\n", argv[0], strerror(errno));
         _exit(127);
     }
-    int status;
-    if (waitpid(pid, &status, 0) < 0)
+    compiler_pid = pid > 0 ? pid : 0;
+    release_stop_signals(&old);
+    if (pid < 0)
+        return -1;
+    int status, r;
+    while ((r = waitpid(pid, &status, 0)) < 0 && errno == EINTR)
+        ;
+    compiler_pid = 0;
+    if (r < 0)
         return -1;
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
@@ -239,28 +351,31 @@ int build_program(const Plan *plan, const Options *o, const Paths *paths)
         snprintf(dir, sizeof dir, "%s", o->emit_dir);
         mkdir(dir, 0777);
     } else {
-        snprintf(dir, sizeof dir, "/tmp/sphc-XXXXXX");
-        if (!mkdtemp(dir)) {
-            diag_fatal_noloc("cannot create a temporary folder: %s", strerror(errno));
+        if (make_tmp())
             return -1;
-        }
+        snprintf(dir, sizeof dir, "%s", tmp_dir);
     }
     char src[4200], lib[4200], inc[4200];
     snprintf(src, sizeof src, "%s/%s.%s", dir, m->name, target_suffix(o->target));
+    if (!o->emit_dir) { /* whole before the handler reads it (a signal sees "" or src) */
+        sigset_t old;
+        hold_stop_signals(&old);
+        memcpy(tmp_src, src, sizeof src);
+        release_stop_signals(&old);
+    }
     snprintf(lib, sizeof lib, "%s/libsphrt%s.a", paths->lib, m->single ? "_single" : "");
     snprintf(inc, sizeof inc, "-I%s", paths->include);
-    if (write_source(plan, o, paths, src))
+    if (write_source(plan, o, paths, src)) {
+        remove_tmp();
         return -1;
+    }
     if (o->emit_only) {
         printf("sphc: wrote %s\n", src);
         return 0;
     }
     const char *exe = o->output ? o->output : m->name;
     int rc = COMPILERS[o->target].compile(m, o, src, lib, inc, exe);
-    if (!o->emit_dir) {
-        remove(src);
-        rmdir(dir);
-    }
+    remove_tmp();
     if (rc != 0) {
         diag_fatal_noloc("%s failed on the generated code (exit %d); rerun with --emit-c DIR to "
                          "inspect it", COMPILERS[o->target].name, rc);

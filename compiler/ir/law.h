@@ -54,8 +54,14 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *p
  * round-off; a law with state is differentiated at its returned state.  Returns the number
  * of warnings (law_verify.c). */
 int law_verify(const Model *m, const MaterialDef *law, const double *params);
+/* An error, at the law's `energy` (or `stress`, or the tension block's) statement, when the
+ * law g, r built for body b gives an energy, a stress or a state that is not finite at F = I
+ * or at a small deformation near it (where every particle starts), with a note where the
+ * first value that is not finite is computed.  Returns 0, or -1 after the error. */
+int law_verify_finite(const BodyModel *b, const SGraph *g, const LawRoots *r);
 /* A warning, at the body, when its law's small-strain shear or bulk modulus is not the
- * body's (the sound speed of eq. 59 follows the body's); returns the number of warnings. */
+ * body's (the sound speed of eq. 59 follows the body's), an error when they are not finite;
+ * returns the number of diagnostics. */
 int law_verify_moduli(const Model *m, const BodyModel *b);
 
 /* Check a law's statements symbolically (its parameters unknown, in 3D, with its tension

@@ -104,8 +104,10 @@ int lower_model(const Model *m, Plan *plan)
         BodyPlan *p = &plan->bodies[i];
         memset(p, 0, sizeof *p);
         sg_init(&p->law);
-        const int built =
+        int built =
             law_build(&p->law, m, b->law, b->law_args, m->dim, b->fracture.on, &p->roots) == 0;
+        if (built && law_verify_finite(b, &p->law, &p->roots))
+            built = 0;
         if (built && first_use(m, i))
             law_verify(m, b->law, b->law_args);
         if (built)

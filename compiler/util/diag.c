@@ -17,9 +17,15 @@
 /* The run stops after this many errors: a broken construct can make the parser report
  * an error every few tokens, each with its source line, which may be very long. */
 enum { MAX_ERRORS = 50 };
+/* Warnings are shown up to this many; the rest are counted, and one line at exit says how
+ * many were not shown: a case with a million unknown cards would otherwise write a warning,
+ * and its source line, for each. */
+enum { MAX_WARNINGS = 50 };
 
 static int n_errors;
-static int n_warnings;
+static long n_warnings;
+static long n_hidden;   /* warnings not shown */
+static int hide_notes;  /* the last warning was not shown: neither are its notes */
 static int strict;
 static void (*stop_handler)(void);
 
@@ -95,6 +101,7 @@ static void count_error(void)
 
 void diag_error(SrcLoc loc, const char *fmt, ...)
 {
+    hide_notes = 0;
     va_list ap;
     va_start(ap, fmt);
     report(loc, "error", "", fmt, ap);
@@ -102,8 +109,35 @@ void diag_error(SrcLoc loc, const char *fmt, ...)
     count_error();
 }
 
+/* At exit, the count of the warnings not shown. */
+static void report_hidden(void)
+{
+    if (n_hidden > 0) {
+        fflush(stdout);
+        fprintf(stderr, "sphc: note: %ld more warning%s not shown (only the first %d are)\n",
+                n_hidden, n_hidden == 1 ? "" : "s", MAX_WARNINGS);
+    }
+    n_hidden = 0;
+}
+
+/* Whether a warning is past MAX_WARNINGS: it is counted, not shown. */
+static int hide_warning(void)
+{
+    static int registered;
+    hide_notes = !strict && n_warnings >= MAX_WARNINGS;
+    if (!hide_notes)
+        return 0;
+    if (!registered && atexit(report_hidden) == 0)
+        registered = 1;
+    n_warnings++;
+    n_hidden++;
+    return 1;
+}
+
 void diag_warning(SrcLoc loc, const char *fmt, ...)
 {
+    if (hide_warning())
+        return;
     va_list ap;
     va_start(ap, fmt);
     report(loc, strict ? "error" : "warning", strict ? " [--strict]" : "", fmt, ap);
@@ -115,6 +149,8 @@ void diag_warning(SrcLoc loc, const char *fmt, ...)
 
 void diag_note(SrcLoc loc, const char *fmt, ...)
 {
+    if (hide_notes)
+        return;
     va_list ap;
     va_start(ap, fmt);
     report(loc, "note", "", fmt, ap);
@@ -142,6 +178,8 @@ void diag_reset(void)
 {
     n_errors = 0;
     n_warnings = 0;
+    n_hidden = 0;
+    hide_notes = 0;
 }
 
 void diag_set_strict(int on)

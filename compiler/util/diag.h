@@ -11,6 +11,8 @@
 #include "source.h"
 
 void diag_error(SrcLoc loc, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* The first 50 warnings are shown; the others are counted (with their notes left out), and
+ * one line at exit says how many were not shown. */
 void diag_warning(SrcLoc loc, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 void diag_note(SrcLoc loc, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 /* An error with no source position (e.g. a missing file): "sphc: error: ..." */

@@ -36,14 +36,41 @@ static void index_lines(SourceFile *f, size_t size)
     }
 }
 
-static const SourceFile *source_file(const char *path)
+/* The entry of path, a new empty one when it has none. */
+static SourceFile *file_entry(const char *path, int *found)
 {
     for (int i = 0; i < nfiles; i++)
-        if (!strcmp(files[i].path, path))
+        if (!strcmp(files[i].path, path)) {
+            *found = 1;
             return &files[i];
+        }
     files = realloc(files, (size_t)(nfiles + 1) * sizeof *files);
     SourceFile *f = &files[nfiles++];
     *f = (SourceFile){strdup(path), NULL, NULL, 0};
+    *found = 0;
+    return f;
+}
+
+void source_set_text(const char *path, const char *text, size_t len)
+{
+    int found;
+    SourceFile *f = file_entry(path, &found);
+    free(f->text);
+    free(f->starts);
+    f->text = malloc(len + 1);
+    memcpy(f->text, text, len);
+    f->starts = NULL;
+    f->nlines = 0;
+    index_lines(f, len);
+    f->text[len] = 0;
+}
+
+static const SourceFile *source_file(const char *path)
+{
+    int found;
+    SourceFile *f = file_entry(path, &found);
+    if (found)
+        return f;
     FILE *in = fopen(path, "rb");
     if (!in)
         return f;

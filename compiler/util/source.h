@@ -14,6 +14,9 @@ typedef struct {
  * terminator; NULL when the file cannot be read or has no such line.  Each file is read
  * once. */
 const char *source_line(const char *path, int line, size_t *len);
+/* Line lookups of `path` read text[0 .. len-1] instead of the file: a file converted before it
+ * is read (an XML case in UTF-16 shows its lines in UTF-8). */
+void source_set_text(const char *path, const char *text, size_t len);
 /* Forget the files read so far (a program that checks many models in one process, each
  * written to the same path, reads each anew). */
 void source_forget(void);

@@ -36,6 +36,10 @@ typedef struct {
  * them to none.  Before any <setmk...> the mk is XML_MK_NONE. */
 enum { XML_MK_NONE = -1, XML_MK_VOID = -2 };
 
+/* The largest line a libxml2 node holds (16 bits); an element past it keeps its line in psvi
+ * (xml_read.c), which xml_loc reads. */
+enum { XML_NODE_LINE_MAX = 65535 };
+
 typedef struct {
     XmlDrawKind kind;
     int mk;

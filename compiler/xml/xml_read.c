@@ -12,6 +12,7 @@
  * dependency order (geometry, scene, expressions, bodies) and the items are appended in
  * the order a .sph model would have them: imports, scene, lets, bodies. */
 #include <errno.h>
+#include <iconv.h>
 #include <limits.h>
 #include <stdarg.h>
 #include <stdint.h>
@@ -127,6 +128,66 @@ static char *escape_attribute_lt(const char *s, size_t len, size_t *outlen)
     }
     out[o] = 0;
     *outlen = o;
+    return out;
+}
+
+/* ------------------------------------------------------------------ the encoding */
+
+/* A case in UTF-16 or UTF-32 (by its byte order mark, or by "<?" written in two or four
+ * bytes a character) is converted to UTF-8 before anything reads it: the escaping of '<'
+ * above reads ASCII bytes, and the diagnostics show its lines (source.c) in UTF-8.  Other
+ * encodings keep ASCII's bytes, and libxml2 reads them by their declaration. */
+static const char *wide_encoding(const char *text, size_t len, size_t *bom)
+{
+    static const struct {
+        const char *bytes;
+        size_t n, bom;
+        const char *name;
+    } MARKS[] = {
+        {"\xFF\xFE\0\0", 4, 4, "UTF-32LE"}, {"\0\0\xFE\xFF", 4, 4, "UTF-32BE"},
+        {"\xFF\xFE", 2, 2, "UTF-16LE"},     {"\xFE\xFF", 2, 2, "UTF-16BE"},
+        {"<\0\0\0", 4, 0, "UTF-32LE"},     {"\0\0\0<", 4, 0, "UTF-32BE"},
+        {"<\0?\0", 4, 0, "UTF-16LE"},       {"\0<\0?", 4, 0, "UTF-16BE"},
+    };
+    for (size_t k = 0; k < sizeof MARKS / sizeof MARKS[0]; k++)
+        if (len >= MARKS[k].n && !memcmp(text, MARKS[k].bytes, MARKS[k].n)) {
+            *bom = MARKS[k].bom;
+            return MARKS[k].name;
+        }
+    return NULL;
+}
+
+/* text[0 .. len-1] in encoding enc (after its byte order mark of bom bytes) as UTF-8, in
+ * *outlen bytes; NULL after an error naming the line where the conversion stopped. */
+static char *to_utf8(const char *path, const char *enc, size_t bom, const char *text,
+                     size_t len, size_t *outlen)
+{
+    iconv_t cd = iconv_open("UTF-8", enc);
+    if (cd == (iconv_t)-1) {
+        diag_error((SrcLoc){path, 0, 0}, "the file is in %s, which this system cannot convert "
+                                         "(save it as UTF-8)", enc);
+        return NULL;
+    }
+    const size_t cap = len + len / 2 + 16; /* 2 bytes of UTF-16 give at most 3 of UTF-8 */
+    char *out = ast_alloc(cap), *in = (char *)text + bom, *o = out;
+    size_t inleft = len - bom, outleft = cap - 1;
+    const int failed = iconv(cd, &in, &inleft, &o, &outleft) == (size_t)-1;
+    const int err = errno;
+    iconv_close(cd);
+    if (failed) {
+        int line = 1;
+        for (const char *c = out; c < o; c++)
+            line += *c == '\n';
+        source_set_text(path, out, (size_t)(o - out)); /* the lines converted */
+        diag_error((SrcLoc){path, line, 0}, "the file is in %s (by its %s), but its bytes at "
+                   "offset %zu are %s %s (save it as UTF-8)", enc,
+                   bom ? "byte order mark" : "first characters", (size_t)(in - text),
+                   err == EINVAL ? "an incomplete character of" : "not valid", enc);
+        free(out);
+        return NULL;
+    }
+    *o = 0;
+    *outlen = (size_t)(o - out);
     return out;
 }
 
@@ -301,6 +362,21 @@ static xmlEntity *get_parameter_entity(void *ctx, const xmlChar *name)
     return NULL;
 }
 
+/* Line numbers.  libxml2 keeps a node's line in 16 bits: past line 65535 an element's line
+ * reads 65535 (XML_PARSE_BIG_LINES keeps the real one for text nodes only, and
+ * xmlGetLineNo of an element then reads a neighbouring text node's, often the next line).
+ * Each element past that line gets its line in psvi (which only schema validation uses,
+ * and sphc does not validate); xml_loc reads it there. */
+static void start_element(void *ctx, const xmlChar *name, const xmlChar *prefix,
+                          const xmlChar *uri, int nns, const xmlChar **ns, int nattrs,
+                          int ndefaulted, const xmlChar **attrs)
+{
+    xmlSAX2StartElementNs(ctx, name, prefix, uri, nns, ns, nattrs, ndefaulted, attrs);
+    const xmlParserCtxt *c = ctx;
+    if (c->node && c->input && c->input->line >= XML_NODE_LINE_MAX)
+        c->node->psvi = (void *)(intptr_t)c->input->line;
+}
+
 static xmlDoc *parse_document(const char *path)
 {
     size_t len, elen;
@@ -311,6 +387,15 @@ static xmlDoc *parse_document(const char *path)
         diag_error((SrcLoc){path, 0, 0}, "the file is empty (expected a <case>)");
         free(raw);
         return NULL;
+    }
+    size_t bom;
+    const char *wide = wide_encoding(raw, len, &bom);
+    if (wide) {
+        char *utf8 = to_utf8(path, wide, bom, raw, len, &len);
+        free(raw);
+        if (!(raw = utf8))
+            return NULL;
+        source_set_text(path, raw, len);
     }
     char *text = escape_attribute_lt(raw, len, &elen);
     free(raw);
@@ -327,11 +412,15 @@ static xmlDoc *parse_document(const char *path)
     }
     ctxt->sax->getEntity = get_entity;
     ctxt->sax->getParameterEntity = get_parameter_entity;
+    ctxt->sax->startElementNs = start_element;
     ParseState state = {path, 0, ctxt, 0, 0};
     parsing = &state;
     xmlSetStructuredErrorFunc(&state, xml_error);
     /* Not XML_PARSE_HUGE: it would lift libxml2's own limits on entities too. */
-    xmlDoc *doc = xmlCtxtReadMemory(ctxt, text, (int)elen, path, NULL, XML_PARSE_NONET);
+    /* A converted file is UTF-8 whatever its declaration says. */
+    xmlDoc *doc = xmlCtxtReadMemory(ctxt, text, (int)elen, path, wide ? "UTF-8" : NULL,
+                                    XML_PARSE_NONET | XML_PARSE_BIG_LINES |
+                                        (wide ? XML_PARSE_IGNORE_ENC : 0));
     xmlSetStructuredErrorFunc(NULL, NULL);
     parsing = NULL;
     xmlFreeParserCtxt(ctxt);

@@ -3,6 +3,7 @@
  * Errors name the element and the attribute, at the line where the element starts:
  *   case.xml:58: error: <density>: attribute 'value': expected a number, got 'abc' */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,6 +14,8 @@
 SrcLoc xml_loc(const XmlCtx *x, const xmlNode *n)
 {
     SrcLoc l = {x->file, (int)xmlGetLineNo((xmlNode *)n), 0};
+    if (n->type == XML_ELEMENT_NODE && n->line >= XML_NODE_LINE_MAX && n->psvi) /* xml_read.c */
+        l.line = (int)(intptr_t)n->psvi;
     if (l.line < 0)
         l.line = 0;
     return l;
