@@ -829,7 +829,7 @@ static int setup(run_state *r)
 {
     const sph_model *m = r->m;
     const sph_par *par = r->sim.par;
-    if (sph_sim_init_par(&r->sim, m, !r->opt.quiet, par))
+    if (sph_sim_init_par(&r->sim, m, r->t_end, !r->opt.quiet, par))
         return -1;
     double count[2] = {0, 0};
     for (int i = 0; i < r->sim.nbodies; i++) {

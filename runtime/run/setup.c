@@ -436,25 +436,41 @@ static double selected(const sph_body *b, int count)
     return n;
 }
 
+/* A boundary condition whose time window opens at or after the run's end never acts (a step
+ * acts when its middle lies in the window, and the last one's middle is before the end):
+ * reported, like one that selects no particle.  1 when so. */
+static int window_after_end(const sph_body *b, const sph_bc_desc *bc, double t_end)
+{
+    if (!(bc->t0 >= t_end))
+        return 0;
+    if (b->par->rank == 0)
+        fprintf(stderr, "%s: warning: %s of body '%s' never acts: its window opens at t = %g s, "
+                        "at or after the run's end time %g s (the model's `end`, or --end)\n",
+                bc->where, bc->what, b->desc->name, bc->t0, t_end);
+    return 1;
+}
+
 static void selections(sph_body *b, const sph_body_desc *d, double t_end)
 {
     b->bc_list = zalloc((size_t)d->nbcs, sizeof(int *));
     b->bc_count = zalloc((size_t)d->nbcs, sizeof(int));
     for (int k = 0; k < d->nbcs; k++) {
         const sph_bc_desc *bc = &d->bcs[k];
+        const int never = window_after_end(b, bc, t_end);
         if (bc->has_near) {
             b->bc_count[k] = sph_select_near(b->X, b->nown, b->dim, b->y_plane, b->dx,
                                              &bc->near, &b->bc_list[k]);
             if (selected(b, b->bc_count[k]) == 0) {
-                if (b->par->rank == 0)
+                if (b->par->rank == 0 && !never)
                     fprintf(stderr, "%s: warning: %s of body '%s' acts on no particle: none lies "
                                 "within dx = %g m of its `near` shape\n",
                         bc->where, bc->what, d->name, b->dx);
                 continue;
             }
         }
-        if (bc->value && !selects_any(b, bc->value, bc->has_near ? b->bc_list[k] : NULL,
-                                      bc->has_near ? b->bc_count[k] : b->nown, t_end) &&
+        if (bc->value && !never &&
+            !selects_any(b, bc->value, bc->has_near ? b->bc_list[k] : NULL,
+                         bc->has_near ? b->bc_count[k] : b->nown, t_end) &&
             b->par->rank == 0)
             fprintf(stderr, "%s: warning: %s of body '%s' acts on no particle: its expression "
                             "skips every particle%s at t = 0, T/4, T/2, 3T/4 and T (the end "
@@ -611,7 +627,8 @@ static int fill(sph_body *b, const sph_body_desc *d, const sph_model *m)
     return 0;
 }
 
-int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, const sph_par *par)
+int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, double t_end,
+                   const sph_par *par)
 {
     memset(b, 0, sizeof *b);
     b->desc = d;
@@ -648,9 +665,9 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, cons
     SPH_TIMED("set-up: momentum blocks", sph_momentum_blocks_setup(b));
     SPH_TIMED("set-up: lattice stencil", sph_stencil_setup(b));
     SPH_TIMED("set-up: arrays", allocate(b));
-    SPH_TIMED("set-up: BC and plane selections", selections(b, d, m->t_end));
+    SPH_TIMED("set-up: BC and plane selections", selections(b, d, t_end));
     if (d->fracture)
-        check_restrict(b, d->fracture, m->t_end);
+        check_restrict(b, d->fracture, t_end);
     return 0;
 }
 
