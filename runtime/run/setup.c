@@ -532,36 +532,45 @@ static double memory_limit(const char **what)
     return mem;
 }
 
-/* Refuses, before the neighbour search, a body whose pair lists cannot be held: clearly more
- * than 2^31 pairs (int offsets; the search counts them exactly when it is close) or more
- * memory than the machine has, instead of a search that runs for minutes and then fails or
- * is killed.  A particle has about as many neighbours as lattice points lie within 2h (a
- * sphere or a disc of radius 2h / dx: 174 in 3D and 13 in 2D at coefh 1, a few more than
- * interior particles have), and the run needs at most some 12 bytes per neighbour (the
+/* Refuses a body of `count` particles whose pair lists cannot be held: clearly more than 2^31
+ * pairs (int offsets; the search counts them exactly when it is close) or more memory than
+ * the machine has, instead of a search that runs for minutes and then fails or is killed.
+ * Asked by the fill once it has counted the particles, before it allocates them
+ * (refuse_count), and again before the neighbour search (on many processes with the halo).
+ * A particle has about as many neighbours as lattice points lie within 2h (a sphere or a
+ * disc of radius 2h / dx: 174 in 3D and 13 in 2D at coefh 1, a few more than interior
+ * particles have), and the run needs at most some 12 bytes per neighbour (the
  * lists while the set-up builds the half lists from them; a 3D lattice's offset blocks add
  * about 1.4, 8 bytes a task of some 6 pairs) and 1 KB per particle (the plate at dp 1 mm,
  * 242 400 particles of 157 neighbours: estimated 0.70 GB, measured 0.48 GB at its peak
  * before the offset blocks; 1.26 GB when the set-up kept every pair's kernel gradient). */
-static int check_size(const sph_body *b)
+static int check_size(const sph_body *b, long count)
 {
-    const double r = 2.0 * b->h / b->dx, n = (double)b->n;
+    const double r = 2.0 * b->h / b->dx, n = (double)count;
     const double per = b->dim == 3 ? 4.0 / 3.0 * M_PI * r * r * r : M_PI * r * r;
     const char *what;
     const double bytes = n * (12.0 * per + 1024.0), mem = memory_limit(&what);
     if (n * per > 1.25 * 0x7fffffffL) {
-        sph_error("body '%s' would have some %.3g neighbour pairs (%d particles "
+        sph_error("body '%s' would have some %.3g neighbour pairs (%ld particles "
                   "with about %.0f neighbours each), more than 2^31: raise dp or lower "
-                  "refine or coefh", b->desc->name, n * per, b->n, per);
+                  "refine or coefh", b->desc->name, n * per, count, per);
         return -1;
     }
     if (mem > 0 && bytes > mem) {
-        sph_error("body '%s' would need some %.3g GB of memory (%d particles "
+        sph_error("body '%s' would need some %.3g GB of memory (%ld particles "
                   "with about %.0f neighbours each), more than %s %.3g GB: raise dp or "
-                  "lower refine or coefh", b->desc->name, bytes / 1e9, b->n, per, what,
+                  "lower refine or coefh", b->desc->name, bytes / 1e9, count, per, what,
                   mem / 1e9);
         return -1;
     }
     return 0;
+}
+
+/* check_size as the fill's check of its count, before the particles are allocated: a body
+ * of 3e8 particles is refused in the time it takes to count them, not after filling 7 GB. */
+static int refuse_count(long n, void *body)
+{
+    return check_size(body, n) != 0;
 }
 
 /* Particles whose neighbours do not span the body's dimensions (too few of them, or all in
@@ -597,16 +606,19 @@ static int fill(sph_body *b, const sph_body_desc *d, const sph_model *m)
     int bad = 0;
     if (par->size == 1) {
         SPH_TIMED("set-up: filling the shapes",
-                  b->n = sph_fill_region(&d->region, m->dim, b->dx, d->y_plane, &b->X));
-        b->nown = b->n;
-        bad = b->n < 0;
+                  bad = sph_fill_region_checked(&d->region, m->dim, b->dx, d->y_plane,
+                                                refuse_count, b, &b->X));
+        b->n = b->nown = bad < 0 ? 0 : bad;
     } else {
         sph_part_fill pf;
         SPH_TIMED("set-up: filling the shapes",
                   bad = sph_fill_part(&d->region, m->dim, b->dx, d->y_plane, 2.0 * b->h,
-                                      d->nbsrange, par->rank, par->size, &pf));
+                                      d->nbsrange, par->rank, par->size, refuse_count, b, &pf));
         b->n = pf.n, b->nown = pf.nown, b->X = pf.X, b->gid = pf.gid, b->halo_part = pf.halo_part;
     }
+    if (par->agree(bad == SPH_FILL_REFUSED)) /* (too large: refuse_count has said so) */
+        return -1;
+    bad = bad < 0;
     if (par->agree(bad)) {
         sph_error("body '%s' cannot be filled with particles of spacing %g", d->name, b->dx);
         return -1;
@@ -643,7 +655,7 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, doub
     b->y_plane = d->y_plane;
     if (fill(b, d, m))
         return -1;
-    if (par->agree(check_size(b)))
+    if (par->agree(check_size(b, b->n))) /* (with the halo, on many processes) */
         return -1;
     SPH_TIMED("set-up: particle order", order_particles(b));
     SPH_TIMED("set-up: neighbour search",
