@@ -63,7 +63,17 @@ static void bc_what(const BcModel *bc, char *buf, size_t size)
         }
 }
 
-/* Entry k of a body's sph_bc_desc table: its `near` region, its line, its value function. */
+/* A time of a BC's window as C: a number, or INFINITY for an open end. */
+static void emit_time(FILE *out, double t)
+{
+    if (isfinite(t))
+        fprintf(out, "%.17g", t);
+    else
+        fputs(t < 0 ? "-INFINITY" : "INFINITY", out);
+}
+
+/* Entry k of a body's sph_bc_desc table: its `near` region, its line, its value function,
+ * its time window. */
 static void bc_desc(Emitter *E, const BodyModel *b, int k)
 {
     const BcModel *bc = &b->bcs[k];
@@ -78,7 +88,11 @@ static void bc_desc(Emitter *E, const BodyModel *b, int k)
     emit_where(E->out, bc->loc);
     fputs(", ", E->out);
     emit_c_string(E->out, what);
-    fprintf(E->out, ", %s},\n", value);
+    fprintf(E->out, ", %s, ", value);
+    emit_time(E->out, bc->has_window ? bc->t0 : -INFINITY);
+    fputs(", ", E->out);
+    emit_time(E->out, bc->has_window ? bc->t1 : INFINITY);
+    fputs("},\n", E->out);
 }
 
 static void body_desc_arrays(Emitter *E, const BodyModel *b)

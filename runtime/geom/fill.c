@@ -18,7 +18,9 @@
  * are close in space are mostly close in memory, and a box narrower than one tile along x is
  * simply "x fastest".
  *
- * Both passes (count per tile, then write) run in parallel over tiles with OpenMP.
+ * Both passes (count per tile, then write) run in parallel over tiles with OpenMP; between
+ * them the caller may refuse the count (sph_fill_region_checked), before anything the size of
+ * the particles is allocated.
  */
 #include <math.h>
 #include <stdio.h>
@@ -150,6 +152,12 @@ static long tile_fill(const lattice *L, const sph_region *r, long t, double *X)
 
 int sph_fill_region(const sph_region *r, int dim, double dx, double y_plane, double **X)
 {
+    return sph_fill_region_checked(r, dim, dx, y_plane, NULL, NULL, X);
+}
+
+int sph_fill_region_checked(const sph_region *r, int dim, double dx, double y_plane,
+                            sph_fill_check refuse, void *ctx, double **X)
+{
     lattice L;
     double total;
     *X = NULL;
@@ -174,6 +182,10 @@ int sph_fill_region(const sph_region *r, int dim, double dx, double y_plane, dou
     for (long t = 0; t < L.ntiles; t++)
         first[t + 1] += first[t];
     long n = first[L.ntiles];
+    if (n > 0 && refuse && refuse(n, ctx)) { /* (counted, nothing allocated: refused) */
+        free(first);
+        return SPH_FILL_REFUSED;
+    }
     if (n > 0 && n <= 0x7fffffffL && (*X = malloc((size_t)n * dim * sizeof **X))) {
 #pragma omp parallel for schedule(dynamic, 16)
         for (long t = 0; t < L.ntiles; t++)

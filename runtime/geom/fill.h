@@ -20,10 +20,21 @@ SPH_C_BEGIN
  * region, -1 (with a message) when the lattice is too large or memory runs out. */
 int sph_fill_region(const sph_region *r, int dim, double dx, double y_plane, double **X);
 
+/* The same, with the particles counted first and refuse(n, ctx) asked before they are
+ * allocated: a body too large for the run (set-up) is refused from its count, not after
+ * filling gigabytes.  refuse returns nonzero to refuse (having said why), and the fill then
+ * returns SPH_FILL_REFUSED with *X NULL; refuse NULL accepts every count.  On many processes
+ * (sph_fill_part) the count asked about is the process's own particles, before its halo. */
+typedef int (*sph_fill_check)(long n, void *ctx);
+enum { SPH_FILL_REFUSED = -2 };
+int sph_fill_region_checked(const sph_region *r, int dim, double dx, double y_plane,
+                            sph_fill_check refuse, void *ctx, double **X);
+
 /* part_fill.c: a process's particles of a body on many processes: its own (nown, first)
  * and its halo (n - nown after them, with the process each belongs to), positions X (dim
- * values each) and global ids.  0 (out->n = 0 when the region has no lattice), or -1 when
- * the lattice is too large or memory runs out. */
+ * values each) and global ids.  0 (out->n = 0 when the region has no lattice), -1 when
+ * the lattice is too large or memory runs out, SPH_FILL_REFUSED when refuse (as above; NULL:
+ * none) refused the count of its own particles. */
 typedef struct {
     int n, nown;
     double *X;
@@ -31,7 +42,8 @@ typedef struct {
     int *halo_part;
 } sph_part_fill;
 int sph_fill_part(const sph_region *r, int dim, double dx, double y_plane, double radius,
-                  int range, int part, int nparts, sph_part_fill *out);
+                  int range, int part, int nparts, sph_fill_check refuse, void *ctx,
+                  sph_part_fill *out);
 
 SPH_C_END
 

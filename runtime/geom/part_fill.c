@@ -8,8 +8,20 @@
 #include "partition.h"
 #include "region.h"
 
+/* The points of part `part`: its leaf's count (-1 when the leaf was not computed). */
+static long leaf_count(const sph_rcb *T, int part)
+{
+    for (int k = 0; k < T->nnodes; k++) {
+        const sph_rcb_node *nd = &T->node[k];
+        if (nd->nparts == 1 && nd->first == part)
+            return nd->done ? nd->count : -1;
+    }
+    return -1;
+}
+
 int sph_fill_part(const sph_region *r, int dim, double dx, double y_plane, double radius,
-                  int range, int part, int nparts, sph_part_fill *out)
+                  int range, int part, int nparts, sph_fill_check refuse, void *ctx,
+                  sph_part_fill *out)
 {
     memset(out, 0, sizeof *out);
     sph_lattice L;
@@ -21,6 +33,11 @@ int sph_fill_part(const sph_region *r, int dim, double dx, double y_plane, doubl
     sph_rcb T;
     if (sph_rcb_count(r, &L, nparts, part, sph_lattice_margin(&L, radius, range), &T) < 0)
         return -1;
+    const long own = leaf_count(&T, part);
+    if (own > 0 && refuse && refuse(own, ctx)) { /* (counted, nothing filled) */
+        sph_rcb_free(&T);
+        return SPH_FILL_REFUSED;
+    }
     sph_rcb_local_set s;
     const int bad = sph_rcb_local(r, &L, &T, part, radius, range, &s);
     sph_rcb_free(&T);

@@ -479,9 +479,20 @@ static int same_particles(const sph_ckpt *c, const sph_body *b, int i)
     return 0;
 }
 
-/* The state of body b's own particles from the checkpoint's pieces; found counts them. */
+/* A particle of body b held twice by the checkpoint's pieces (the second time in piece q):
+ * a damaged checkpoint, refused. */
+static int held_twice(const sph_ckpt *c, const sph_body *b, int64_t id, uint64_t q)
+{
+    sph_error("cannot restart from %s: it holds particle %lld of body '%s' twice (again in "
+              "piece %llu): it is damaged", c->path, (long long)id, b->desc->name,
+              (unsigned long long)q);
+    return -1;
+}
+
+/* The state of body b's own particles from the checkpoint's pieces; seen[k] marks own
+ * particle k found (each must be found once: a second time is refused). */
 static int restore_pieces(const sph_ckpt *c, sph_body *b, int i, const sph_id_index *own,
-                          long *found)
+                          unsigned char *seen)
 {
     char name[96];
     size_t bytes;
@@ -514,10 +525,12 @@ static int restore_pieces(const sph_ckpt *c, sph_body *b, int i, const sph_id_in
             const int at = sph_id_find(own, b->nown, gid[j]);
             if (at < 0)
                 continue; /* (another process's particle) */
+            if (seen[at])
+                return held_twice(c, b, gid[j], q);
+            seen[at] = 1;
             for (int k = 0; k < na; k++)
                 memcpy((unsigned char *)arr[k].data + (size_t)at * per[k],
                        data[k] + j * per[k], per[k]);
-            (*found)++;
         }
     }
     return 0;
@@ -557,25 +570,43 @@ static int restore_sums(const sph_ckpt *c, sph_body *b, int i)
     return 0;
 }
 
+/* Own particle k of body b (id[k]), the first that no piece of the checkpoint holds: a
+ * damaged checkpoint, refused, with how many are missing. */
+static int not_held(const sph_ckpt *c, const sph_body *b, const int64_t *id,
+                    const unsigned char *seen, int k)
+{
+    long missing = 0;
+    for (int q = k; q < b->nown; q++)
+        missing += !seen[q];
+    const double *x = b->X + (size_t)k * b->dim;
+    char at[96];
+    if (b->dim == 3)
+        snprintf(at, sizeof at, "x = %g, y = %g, z = %g", x[0], x[1], x[2]);
+    else
+        snprintf(at, sizeof at, "x = %g, z = %g", x[0], x[1]);
+    sph_error("cannot restart from %s: no piece of it holds particle %lld of body '%s' "
+              "(reference position %s; %ld missing in all): it is damaged", c->path,
+              (long long)id[k], b->desc->name, at, missing);
+    return -1;
+}
+
 static int restore_body(const sph_ckpt *c, sph_body *b, int i)
 {
     if (same_particles(c, b, i) || restore_sums(c, b, i))
         return -1;
     int64_t *id = own_ids(b);
     sph_id_index *own = id ? sph_id_sort(id, b->nown) : NULL;
-    if (!own) {
-        free(id);
+    unsigned char *seen = calloc((size_t)b->nown + 1, 1);
+    if (!own || !seen) {
+        free(id), free(own), free(seen);
         sph_error("out of memory to restart from %s", c->path);
         return -1;
     }
-    long found = 0;
-    const int bad = restore_pieces(c, b, i, own, &found);
-    free(id), free(own);
-    if (!bad && found != b->nown) {
-        sph_error("cannot restart from %s: it holds %ld of the %d particles of body '%s' here "
-                  "(or some twice): it is damaged", c->path, found, b->nown, b->desc->name);
-        return -1;
-    }
+    int bad = restore_pieces(c, b, i, own, seen);
+    for (int k = 0; k < b->nown && !bad; k++)
+        if (!seen[k])
+            bad = not_held(c, b, id, seen, k);
+    free(id), free(own), free(seen);
     return bad;
 }
 

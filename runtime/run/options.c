@@ -4,7 +4,8 @@
  *   --overwrite  --quiet  --progress T  --profile  --partition N  --no-stencil  --whole-law
  *   --help | -h
  *
- * Options with a value also accept the spelling --opt=value. */
+ * Options with a value also accept the spelling --opt=value; each may be given once (a
+ * second value is refused rather than silently taking the place of the first). */
 
 #include <errno.h>
 #include <math.h>
@@ -16,7 +17,8 @@
 
 typedef enum {
     OPT_OUT, OPT_THREADS, OPT_END, OPT_EVERY, OPT_FRAMES, OPT_CHECKPOINT, OPT_RESTART,
-    OPT_OVERWRITE, OPT_QUIET, OPT_PROGRESS, OPT_PROFILE, OPT_PARTITION, OPT_NO_STENCIL, OPT_WHOLE_LAW, OPT_HELP
+    OPT_OVERWRITE, OPT_QUIET, OPT_PROGRESS, OPT_PROFILE, OPT_PARTITION, OPT_NO_STENCIL, OPT_WHOLE_LAW, OPT_HELP,
+    NOPT_IDS
 } opt_id;
 
 typedef struct {
@@ -52,12 +54,13 @@ static void usage(FILE *f, const char *prog, const char *model)
             "\n"
             "options:\n"
             "  --out DIR     output folder (default: %s_out)\n"
-            "  --threads N   number of OpenMP threads (default: OpenMP's count, fewer while\n"
-            "                other programs hold the cores)\n"
+            "  --threads N   number of OpenMP threads, at most 4 per core (default:\n"
+            "                OpenMP's count, fewer while other programs hold the cores)\n"
             "  --end T       end time in seconds (default: the model's)\n"
             "  --every T     output interval in seconds (default: the model's)\n"
             "  --frames T    interval of the particle files (default: every output; the\n"
-            "                energies and measurements are written at every output)\n"
+            "                energies and measurements are written at every output; at\n"
+            "                most 10^5 frames up to the end time)\n"
             "  --checkpoint T  write the state to DIR/checkpoint.bin every T seconds of\n"
             "                simulated time (at output times) and at the end of the run\n"
             "  --restart FILE  resume the run of FILE, a checkpoint of this model, in its\n"
@@ -77,7 +80,8 @@ static void usage(FILE *f, const char *prog, const char *model)
             "  --whole-law   every particle through its whole material law: no fast path\n"
             "                that leaves out a return map for particles that do not yield\n"
             "                (the same stresses: a check)\n"
-            "  -h, --help    show this help and exit\n",
+            "  -h, --help    show this help and exit\n"
+            "Each option may be given once.\n",
             prog, model, model);
 }
 
@@ -170,6 +174,22 @@ static int set_value(sph_options *o, opt_id id, const char *name, const char *va
     return -1;
 }
 
+/* An option with a value given a second time (given[id] holds its first value): refused, with
+ * both values, since either could be the one meant (-1); otherwise its value is noted (0). */
+static int given_twice(const char **given, const opt_info *opt, const char *value,
+                       const char *prog, const char *model)
+{
+    const char *first = given[opt->id];
+    if (!first) {
+        given[opt->id] = value;
+        return 0;
+    }
+    fprintf(stderr, "%s: error: %s given twice ('%s', then '%s'): give it once\n", prog,
+            opt->name, first, value);
+    usage(stderr, prog, model);
+    return -1;
+}
+
 /* "<model>_out".  The string is kept for the life of the program and reused while the
  * model name stays the same. */
 static const char *default_out_dir(const char *model)
@@ -210,6 +230,7 @@ int sph_parse_options(sph_options *o, const char *model_name, int argc, char **a
     *o = (sph_options){.out_dir = NULL, .threads = 0, .t_end = -1, .t_out = -1, .t_frames = -1,
                        .t_checkpoint = -1, .restart = NULL, .quiet = 0, .profile = 0,
                        .overwrite = 0, .progress = 10};
+    const char *given[NOPT_IDS] = {NULL}; /* each option's value, once given */
     for (int i = 1; i < argc; i++) {
         const char *value;
         const opt_info *opt = find_option(argv[i], &value);
@@ -238,7 +259,9 @@ int sph_parse_options(sph_options *o, const char *model_name, int argc, char **a
         const char *next_value;
         if (!value && (i + 1 >= argc || find_option(argv[i + 1], &next_value)))
             return fail(prog, model, "missing value for ", opt->name);
-        if (set_value(o, opt->id, opt->name, value ? value : argv[++i], prog, model))
+        value = value ? value : argv[++i];
+        if (given_twice(given, opt, value, prog, model) ||
+            set_value(o, opt->id, opt->name, value, prog, model))
             return -1;
     }
     if (o->restart && o->overwrite) /* (it would remove the files it continues) */

@@ -829,7 +829,7 @@ static int setup(run_state *r)
 {
     const sph_model *m = r->m;
     const sph_par *par = r->sim.par;
-    if (sph_sim_init_par(&r->sim, m, !r->opt.quiet, par))
+    if (sph_sim_init_par(&r->sim, m, r->t_end, !r->opt.quiet, par))
         return -1;
     double count[2] = {0, 0};
     for (int i = 0; i < r->sim.nbodies; i++) {
@@ -888,6 +888,68 @@ static int too_many_outputs(const run_state *r)
     return 1;
 }
 
+/* The particle files a run writes, one per body at each frame time (end / frame interval):
+ * beyond SPH_MOST_FRAMES, an interval given by mistake (--every 1e-12 over 50 us: 5e7 frames)
+ * that would fill the disk file by file.  The energies and measurements, a row each output,
+ * stay at the output interval (too_many_outputs bounds those). */
+#define SPH_MOST_FRAMES 1e5
+static int too_many_frames(const run_state *r)
+{
+    const double n = r->t_end / r->t_frames;
+    if (n <= SPH_MOST_FRAMES)
+        return 0;
+    sph_error("the particle files' interval %g s (%s) gives %.3g frames up to the end time %g "
+              "s, more than 10^5 (each a file of every body): --frames T writes them every T "
+              "seconds only (the energies and measurements stay at every output)",
+              r->t_frames, r->opt.t_frames > 0 ? "--frames" : r->opt.t_out > 0 ? "--every"
+                                               : "the model's output interval", n, r->t_end);
+    return 1;
+}
+
+/* The threads of the steps: an explicit --threads, or OpenMP's count (OMP_NUM_THREADS), above
+ * SPH_THREADS_PER_CORE times the cores this process may run on is cut to that: more threads
+ * than that only wait for each other, and some thousands make OpenMP fail to start them (a
+ * crash).  Sets OpenMP's count when --threads is given. */
+#define SPH_THREADS_PER_CORE 4
+static void set_threads(run_state *r)
+{
+    const int cores = omp_get_num_procs(), most = SPH_THREADS_PER_CORE * cores;
+    const int asked = r->opt.threads > 0 ? r->opt.threads : omp_get_max_threads();
+    if (asked > most && r->sim.par->rank == 0)
+        sph_note("%s %d: using %d threads, %d times the %d core%s this process may run on "
+                 "(more would only wait for each other)",
+                 r->opt.threads > 0 ? "--threads" : "OMP_NUM_THREADS", asked, most,
+                 SPH_THREADS_PER_CORE, cores, cores == 1 ? "" : "s");
+    if (asked > most || r->opt.threads > 0)
+        omp_set_num_threads(asked > most ? most : asked);
+    if (r->opt.threads > most)
+        r->opt.threads = most;
+}
+
+/* A resumed run goes on from its checkpoint's time to the end time (--end, or the model's):
+ * an end before that time would run nothing and say nothing.  Refused (bad options) before
+ * the set-up.  (A checkpoint of another model, or without a clock, restart() refuses.) */
+static int ends_before_checkpoint(const run_state *r, const sph_ckpt *c)
+{
+    size_t bytes, nl;
+    const double *clock = sph_ckpt_find(c, "sim.clock", &bytes);
+    const char *model = sph_ckpt_find(c, "model", &nl);
+    if (!clock || bytes != 3 * sizeof(double) || !model || nl != strlen(r->m->name) ||
+        memcmp(model, r->m->name, nl))
+        return 0;
+    const double t = clock[0], eps = 1e-9 * r->t_out;
+    if (!(r->t_end < t - eps))
+        return 0;
+    if (r->opt.t_end > 0)
+        sph_error("--end %g s is before the time of the checkpoint %s, t = %g s: a resumed run "
+                  "goes on from there; give a later --end", r->t_end, r->opt.restart, t);
+    else
+        sph_error("the model's end time %g s is before the time of the checkpoint %s, t = %g "
+                  "s: a resumed run goes on from there; give a later --end", r->t_end,
+                  r->opt.restart, t);
+    return 1;
+}
+
 /* A run whose outputs could not be written (reported): summary.json says so rather than
  * "running", if it can be written at all. */
 static int failed_run(run_state *r)
@@ -935,8 +997,7 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
     int rc = sph_parse_options(&r.opt, m->name, argc, argv);
     if (rc)
         return rc < 0 ? SPH_EXIT_OPTIONS : 0;
-    if (r.opt.threads > 0)
-        omp_set_num_threads(r.opt.threads);
+    set_threads(&r);
     if (r.opt.partition > 0) /* a report, no run (docs/mpi.md) */
         return sph_partition_report(m, r.opt.partition) ? SPH_EXIT_SETUP : 0;
     /* fewer threads while the machine is busy, unless told how many (a device target's
@@ -951,7 +1012,7 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
     r.t_out = r.opt.t_out > 0 ? r.opt.t_out : m->t_out;
     r.t_frames = r.opt.t_frames > 0 ? r.opt.t_frames : r.t_out;
     r.t_checkpoint = r.opt.t_checkpoint > 0 ? r.opt.t_checkpoint : m->t_checkpoint;
-    if (too_many_outputs(&r))
+    if (too_many_outputs(&r) || too_many_frames(&r))
         return SPH_EXIT_OPTIONS;
     if (par->agree(!r.opt.restart && refuse_used_folder(&r)))
         return SPH_EXIT_SETUP;
@@ -963,6 +1024,10 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
     sph_ckpt ckpt; /* (process 0 hashes the whole file; agree spreads its verdict) */
     if (par->agree(r.opt.restart && sph_ckpt_read(&ckpt, r.opt.restart, par->rank == 0)))
         return SPH_EXIT_SETUP;
+    if (par->agree(r.opt.restart && ends_before_checkpoint(&r, &ckpt))) {
+        sph_ckpt_free(&ckpt);
+        return SPH_EXIT_OPTIONS;
+    }
     if (setup(&r))
         return SPH_EXIT_SETUP;
     if (r.t_checkpoint <= 0) /* (without checkpoints a signal in the set-up ends it at once) */

@@ -436,25 +436,41 @@ static double selected(const sph_body *b, int count)
     return n;
 }
 
+/* A boundary condition whose time window opens at or after the run's end never acts (a step
+ * acts when its middle lies in the window, and the last one's middle is before the end):
+ * reported, like one that selects no particle.  1 when so. */
+static int window_after_end(const sph_body *b, const sph_bc_desc *bc, double t_end)
+{
+    if (!(bc->t0 >= t_end))
+        return 0;
+    if (b->par->rank == 0)
+        fprintf(stderr, "%s: warning: %s of body '%s' never acts: its window opens at t = %g s, "
+                        "at or after the run's end time %g s (the model's `end`, or --end)\n",
+                bc->where, bc->what, b->desc->name, bc->t0, t_end);
+    return 1;
+}
+
 static void selections(sph_body *b, const sph_body_desc *d, double t_end)
 {
     b->bc_list = zalloc((size_t)d->nbcs, sizeof(int *));
     b->bc_count = zalloc((size_t)d->nbcs, sizeof(int));
     for (int k = 0; k < d->nbcs; k++) {
         const sph_bc_desc *bc = &d->bcs[k];
+        const int never = window_after_end(b, bc, t_end);
         if (bc->has_near) {
             b->bc_count[k] = sph_select_near(b->X, b->nown, b->dim, b->y_plane, b->dx,
                                              &bc->near, &b->bc_list[k]);
             if (selected(b, b->bc_count[k]) == 0) {
-                if (b->par->rank == 0)
+                if (b->par->rank == 0 && !never)
                     fprintf(stderr, "%s: warning: %s of body '%s' acts on no particle: none lies "
                                 "within dx = %g m of its `near` shape\n",
                         bc->where, bc->what, d->name, b->dx);
                 continue;
             }
         }
-        if (bc->value && !selects_any(b, bc->value, bc->has_near ? b->bc_list[k] : NULL,
-                                      bc->has_near ? b->bc_count[k] : b->nown, t_end) &&
+        if (bc->value && !never &&
+            !selects_any(b, bc->value, bc->has_near ? b->bc_list[k] : NULL,
+                         bc->has_near ? b->bc_count[k] : b->nown, t_end) &&
             b->par->rank == 0)
             fprintf(stderr, "%s: warning: %s of body '%s' acts on no particle: its expression "
                             "skips every particle%s at t = 0, T/4, T/2, 3T/4 and T (the end "
@@ -516,36 +532,45 @@ static double memory_limit(const char **what)
     return mem;
 }
 
-/* Refuses, before the neighbour search, a body whose pair lists cannot be held: clearly more
- * than 2^31 pairs (int offsets; the search counts them exactly when it is close) or more
- * memory than the machine has, instead of a search that runs for minutes and then fails or
- * is killed.  A particle has about as many neighbours as lattice points lie within 2h (a
- * sphere or a disc of radius 2h / dx: 174 in 3D and 13 in 2D at coefh 1, a few more than
- * interior particles have), and the run needs at most some 12 bytes per neighbour (the
+/* Refuses a body of `count` particles whose pair lists cannot be held: clearly more than 2^31
+ * pairs (int offsets; the search counts them exactly when it is close) or more memory than
+ * the machine has, instead of a search that runs for minutes and then fails or is killed.
+ * Asked by the fill once it has counted the particles, before it allocates them
+ * (refuse_count), and again before the neighbour search (on many processes with the halo).
+ * A particle has about as many neighbours as lattice points lie within 2h (a sphere or a
+ * disc of radius 2h / dx: 174 in 3D and 13 in 2D at coefh 1, a few more than interior
+ * particles have), and the run needs at most some 12 bytes per neighbour (the
  * lists while the set-up builds the half lists from them; a 3D lattice's offset blocks add
  * about 1.4, 8 bytes a task of some 6 pairs) and 1 KB per particle (the plate at dp 1 mm,
  * 242 400 particles of 157 neighbours: estimated 0.70 GB, measured 0.48 GB at its peak
  * before the offset blocks; 1.26 GB when the set-up kept every pair's kernel gradient). */
-static int check_size(const sph_body *b)
+static int check_size(const sph_body *b, long count)
 {
-    const double r = 2.0 * b->h / b->dx, n = (double)b->n;
+    const double r = 2.0 * b->h / b->dx, n = (double)count;
     const double per = b->dim == 3 ? 4.0 / 3.0 * M_PI * r * r * r : M_PI * r * r;
     const char *what;
     const double bytes = n * (12.0 * per + 1024.0), mem = memory_limit(&what);
     if (n * per > 1.25 * 0x7fffffffL) {
-        sph_error("body '%s' would have some %.3g neighbour pairs (%d particles "
+        sph_error("body '%s' would have some %.3g neighbour pairs (%ld particles "
                   "with about %.0f neighbours each), more than 2^31: raise dp or lower "
-                  "refine or coefh", b->desc->name, n * per, b->n, per);
+                  "refine or coefh", b->desc->name, n * per, count, per);
         return -1;
     }
     if (mem > 0 && bytes > mem) {
-        sph_error("body '%s' would need some %.3g GB of memory (%d particles "
+        sph_error("body '%s' would need some %.3g GB of memory (%ld particles "
                   "with about %.0f neighbours each), more than %s %.3g GB: raise dp or "
-                  "lower refine or coefh", b->desc->name, bytes / 1e9, b->n, per, what,
+                  "lower refine or coefh", b->desc->name, bytes / 1e9, count, per, what,
                   mem / 1e9);
         return -1;
     }
     return 0;
+}
+
+/* check_size as the fill's check of its count, before the particles are allocated: a body
+ * of 3e8 particles is refused in the time it takes to count them, not after filling 7 GB. */
+static int refuse_count(long n, void *body)
+{
+    return check_size(body, n) != 0;
 }
 
 /* Particles whose neighbours do not span the body's dimensions (too few of them, or all in
@@ -581,16 +606,19 @@ static int fill(sph_body *b, const sph_body_desc *d, const sph_model *m)
     int bad = 0;
     if (par->size == 1) {
         SPH_TIMED("set-up: filling the shapes",
-                  b->n = sph_fill_region(&d->region, m->dim, b->dx, d->y_plane, &b->X));
-        b->nown = b->n;
-        bad = b->n < 0;
+                  bad = sph_fill_region_checked(&d->region, m->dim, b->dx, d->y_plane,
+                                                refuse_count, b, &b->X));
+        b->n = b->nown = bad < 0 ? 0 : bad;
     } else {
         sph_part_fill pf;
         SPH_TIMED("set-up: filling the shapes",
                   bad = sph_fill_part(&d->region, m->dim, b->dx, d->y_plane, 2.0 * b->h,
-                                      d->nbsrange, par->rank, par->size, &pf));
+                                      d->nbsrange, par->rank, par->size, refuse_count, b, &pf));
         b->n = pf.n, b->nown = pf.nown, b->X = pf.X, b->gid = pf.gid, b->halo_part = pf.halo_part;
     }
+    if (par->agree(bad == SPH_FILL_REFUSED)) /* (too large: refuse_count has said so) */
+        return -1;
+    bad = bad < 0;
     if (par->agree(bad)) {
         sph_error("body '%s' cannot be filled with particles of spacing %g", d->name, b->dx);
         return -1;
@@ -611,7 +639,8 @@ static int fill(sph_body *b, const sph_body_desc *d, const sph_model *m)
     return 0;
 }
 
-int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, const sph_par *par)
+int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, double t_end,
+                   const sph_par *par)
 {
     memset(b, 0, sizeof *b);
     b->desc = d;
@@ -626,7 +655,7 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, cons
     b->y_plane = d->y_plane;
     if (fill(b, d, m))
         return -1;
-    if (par->agree(check_size(b)))
+    if (par->agree(check_size(b, b->n))) /* (with the halo, on many processes) */
         return -1;
     SPH_TIMED("set-up: particle order", order_particles(b));
     SPH_TIMED("set-up: neighbour search",
@@ -648,9 +677,9 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, cons
     SPH_TIMED("set-up: momentum blocks", sph_momentum_blocks_setup(b));
     SPH_TIMED("set-up: lattice stencil", sph_stencil_setup(b));
     SPH_TIMED("set-up: arrays", allocate(b));
-    SPH_TIMED("set-up: BC and plane selections", selections(b, d, m->t_end));
+    SPH_TIMED("set-up: BC and plane selections", selections(b, d, t_end));
     if (d->fracture)
-        check_restrict(b, d->fracture, m->t_end);
+        check_restrict(b, d->fracture, t_end);
     return 0;
 }
 

@@ -11,8 +11,10 @@
 SPH_C_BEGIN
 
 /* Particles, neighbours, gradients, selections and arrays of one body, on the
- * processes par (collective). */
-int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, const sph_par *par);
+ * processes par (collective); t_end, the run's end time, for the warnings of boundary
+ * conditions that would never act. */
+int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, double t_end,
+                   const sph_par *par);
 void sph_body_free(sph_body *b);
 
 /* The program's --whole-law: the CPU's stress pass takes no law's fast path (setup.c;

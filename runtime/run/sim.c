@@ -35,10 +35,11 @@ static void initial_speeds(sph_sim *s)
 
 int sph_sim_init(sph_sim *s, const sph_model *m, int verbose)
 {
-    return sph_sim_init_par(s, m, verbose, &sph_par_one);
+    return sph_sim_init_par(s, m, m->t_end, verbose, &sph_par_one);
 }
 
-int sph_sim_init_par(sph_sim *s, const sph_model *m, int verbose, const sph_par *par)
+int sph_sim_init_par(sph_sim *s, const sph_model *m, double t_end, int verbose,
+                     const sph_par *par)
 {
     sph_message_program(m->name);
     s->m = m;
@@ -50,7 +51,7 @@ int sph_sim_init_par(sph_sim *s, const sph_model *m, int verbose, const sph_par 
     s->bodies = calloc((size_t)m->nbodies, sizeof(sph_body));
     for (int i = 0; i < m->nbodies; i++) {
         sph_body *b = &s->bodies[i];
-        if (sph_body_setup(b, &m->bodies[i], m, par))
+        if (sph_body_setup(b, &m->bodies[i], m, t_end, par))
             return -1;
         double count[2] = {b->nown, (double)b->npairs}; /* (on all processes) */
         par->sum(count, 2);

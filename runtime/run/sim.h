@@ -13,8 +13,10 @@ SPH_C_BEGIN
  * build every body and apply the velocity boundary conditions at t = 0 (initial
  * conditions); the stable time step of eq. 64-66 (or the fixed one); one step. */
 int sph_sim_init(sph_sim *s, const sph_model *m, int verbose);
-/* The same on the processes par; collective. */
-int sph_sim_init_par(sph_sim *s, const sph_model *m, int verbose, const sph_par *par);
+/* The same on the processes par, for a run to t_end (the model's or --end: the set-up's
+ * warnings of conditions that never act); collective. */
+int sph_sim_init_par(sph_sim *s, const sph_model *m, double t_end, int verbose,
+                     const sph_par *par);
 double sph_sim_stable_dt(sph_sim *s);
 /* The smallest principal stretch of any particle (finite ones; capped at 1), from the host's
  * F (or, for a body that tracks it for its time step, its lam2min of the same F). */

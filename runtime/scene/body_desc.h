@@ -24,6 +24,9 @@ typedef struct {
     /* the BC's value at a particle: 0 where its expression skips the particle (the
      * passes' own function; the set-up counts what it selects) */
     int (*value)(const struct sph_pt *p, double *out);
+    /* its time window, `from t0 to t1` (-INFINITY, INFINITY without one): the set-up warns
+     * of a window that opens only after the run's end */
+    double t0, t1;
 } sph_bc_desc;
 
 /* Phase-field fracture of a body (section 2.2; eq. 6-9, 61-63). */

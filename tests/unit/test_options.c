@@ -127,13 +127,46 @@ static void test_outputs(void)
 
 static void test_equals_spelling(void)
 {
-    printf("--opt=value spellings; a later option wins\n");
+    printf("--opt=value spellings\n");
     sph_options o;
-    const char *args[] = {"--out=first", "--threads=8", "--end=2", "--every=0.25",
-                          "--out=x=y", NULL};
+    const char *args[] = {"--threads=8", "--end=2", "--every=0.25", "--out=x=y", NULL};
     CHECK(parse(&o, args, out, err, sizeof out) == 0, "returns 0 (stderr: %s)", err);
     CHECK(strcmp(o.out_dir, "x=y") == 0, "out_dir x=y, got %s", o.out_dir);
     CHECK(o.threads == 8 && o.t_end == 2 && o.t_out == 0.25 && o.quiet == 0, "values");
+}
+
+static void test_given_twice(void)
+{
+    printf("an option with a value given twice is refused, naming it and both values\n");
+    static const char *const cases[][5] = {
+        {"--end", "1", "--end", "2"},       {"--out=a", "--out", "b"},
+        {"--every", "1e-3", "--every=1e-3"}, {"--threads", "2", "--quiet", "--threads=4"},
+        {"--restart", "a/checkpoint.bin", "--restart", "b/checkpoint.bin"},
+        {"--frames", "0.1", "--frames", "0.2"}, {"--checkpoint=1", "--checkpoint=2"},
+        {"--progress", "0", "--progress", "5"}, {"--partition", "2", "--partition", "3"},
+    };
+    static const char *const names[] = {"--end",     "--out",      "--every",
+                                        "--threads", "--restart",  "--frames",
+                                        "--checkpoint", "--progress", "--partition"};
+    for (int c = 0; c < (int)(sizeof cases / sizeof cases[0]); c++) {
+        sph_options o;
+        const char *args[6] = {cases[c][0], cases[c][1], cases[c][2], cases[c][3], cases[c][4],
+                               NULL};
+        char want[64];
+        snprintf(want, sizeof want, "beam: error: %s given twice (", names[c]);
+        CHECK(parse(&o, args, out, err, sizeof out) == -1, "%s twice returns -1", names[c]);
+        CHECK(strncmp(err, want, strlen(want)) == 0 && strstr(err, "): give it once\n"),
+              "%s twice: '%s...', got: %.*s", names[c], want, (int)strcspn(err, "\n"), err);
+    }
+    sph_options o;
+    const char *end[] = {"--end", "0.5", "--end=0.7", NULL};
+    parse(&o, end, out, err, sizeof out);
+    const char *both = "beam: error: --end given twice ('0.5', then '0.7'): give it once\n";
+    CHECK(strncmp(err, both, strlen(both)) == 0, "both values named, got: %.*s",
+          (int)strcspn(err, "\n"), err);
+    const char *flags[] = {"--quiet", "--quiet", "--overwrite", "--overwrite", NULL};
+    CHECK(parse(&o, flags, out, err, sizeof out) == 0 && o.quiet && o.overwrite,
+          "a flag given twice is harmless (stderr: %s)", err);
 }
 
 static void test_help(void)
@@ -190,6 +223,7 @@ int main(void)
     test_checkpoints();
     test_outputs();
     test_equals_spelling();
+    test_given_twice();
     test_help();
     test_errors();
     printf("%s: %d failure(s)\n", failures ? "FAILED" : "ok", failures);
