@@ -37,19 +37,26 @@ typedef struct {
     const char *type;  /* VTK type name */
     int ncomp;
     size_t size;       /* bytes per component */
+    const char *const *comp; /* ncomp > 1: the components' names, in the order written */
 } array_info;
 
+/* ParaView's component names: a vector's x y z, and a symmetric tensor's six components in
+ * the order ParaView reads them (XX YY ZZ XY YZ XZ), which is the order body->sigma holds
+ * (xx yy zz xy yz zx; zx = xz). */
+static const char *const VECTOR[3] = {"X", "Y", "Z"};
+static const char *const SYMTENSOR[6] = {"XX", "YY", "ZZ", "XY", "YZ", "XZ"};
+
 static const array_info ARRAYS[A_COUNT] = {
-    [A_DISPLACEMENT] = {"displacement", "Float64", 3, sizeof(double)},
-    [A_VELOCITY]     = {"velocity", "Float64", 3, sizeof(double)},
-    [A_STRESS]       = {"cauchy_stress", "Float64", 6, sizeof(double)},
+    [A_DISPLACEMENT] = {"displacement", "Float64", 3, sizeof(double), VECTOR},
+    [A_VELOCITY]     = {"velocity", "Float64", 3, sizeof(double), VECTOR},
+    [A_STRESS]       = {"cauchy_stress", "Float64", 6, sizeof(double), SYMTENSOR},
     [A_VON_MISES]    = {"sigma_vm", "Float64", 1, sizeof(double)},
     [A_J]            = {"J", "Float64", 1, sizeof(double)},
     [A_ENERGY]       = {"strain_energy", "Float64", 1, sizeof(double)},
     [A_PHASE]        = {"phase_field", "Float64", 1, sizeof(double)},
     [A_HISTORY]      = {"history", "Float64", 1, sizeof(double)},
     [A_GID]          = {"global_id", "Int64", 1, sizeof(int64_t)},
-    [A_POINTS]       = {"Points", "Float64", 3, sizeof(double)},
+    [A_POINTS]       = {"Points", "Float64", 3, sizeof(double), VECTOR},
     [A_CONNECTIVITY] = {"connectivity", "Int64", 1, sizeof(int64_t)},
     [A_OFFSETS]      = {"offsets", "Int64", 1, sizeof(int64_t)},
     [A_TYPES]        = {"types", "UInt8", 1, sizeof(uint8_t)},
@@ -187,11 +194,20 @@ static void fill_array(array_id a, const sph_body *b, void *buf)
 
 /* ------------------------------------------------------------------ XML structure */
 
+/* NumberOfComponents and the components' names of a multi-component array. */
+static void write_components(FILE *f, array_id a)
+{
+    if (ARRAYS[a].ncomp <= 1)
+        return;
+    fprintf(f, " NumberOfComponents=\"%d\"", ARRAYS[a].ncomp);
+    for (int c = 0; ARRAYS[a].comp && c < ARRAYS[a].ncomp; c++)
+        fprintf(f, " ComponentName%d=\"%s\"", c, ARRAYS[a].comp[c]);
+}
+
 static void write_data_array(FILE *f, array_id a, uint64_t offset, const char *indent)
 {
     fprintf(f, "%s<DataArray type=\"%s\" Name=\"%s\"", indent, ARRAYS[a].type, ARRAYS[a].name);
-    if (ARRAYS[a].ncomp > 1)
-        fprintf(f, " NumberOfComponents=\"%d\"", ARRAYS[a].ncomp);
+    write_components(f, a);
     fprintf(f, " format=\"appended\" offset=\"%llu\"/>\n", (unsigned long long)offset);
 }
 
@@ -348,16 +364,17 @@ int sph_write_pvtu(const char *path, const sph_body *b, const char *const *piece
         if (present((array_id)a, b)) {
             fprintf(f, "%s<PDataArray type=\"%s\" Name=\"%s\"", in, ARRAYS[a].type,
                     ARRAYS[a].name);
-            if (ARRAYS[a].ncomp > 1)
-                fprintf(f, " NumberOfComponents=\"%d\"", ARRAYS[a].ncomp);
+            write_components(f, (array_id)a);
             fputs("/>\n", f);
         }
     for (int k = 0; b->desc && k < b->desc->nstate; k++)
         if (state_output(b, k))
             fprintf(f, "%s<PDataArray type=\"Float64\" Name=\"%s\"/>\n", in,
                     b->desc->state_names[k]);
-    fprintf(f, "    </PPointData>\n    <PPoints>\n%s<PDataArray type=\"Float64\" "
-               "Name=\"Points\" NumberOfComponents=\"3\"/>\n    </PPoints>\n", in);
+    fprintf(f, "    </PPointData>\n    <PPoints>\n%s<PDataArray type=\"Float64\" Name=\"Points\"",
+            in);
+    write_components(f, A_POINTS);
+    fputs("/>\n    </PPoints>\n", f);
     for (int k = 0; k < npieces; k++) {
         fputs("    <Piece Source=\"", f);
         write_xml_attr(f, pieces[k]);

@@ -10,7 +10,9 @@
  * X+u in 3D (2D: y = body->y_plane).  Point data: "displacement" (3), "velocity" (3),
  * "cauchy_stress" (6 components xx yy zz xy yz zx, from body->sigma), "sigma_vm" (von Mises),
  * "J" (det F), "strain_energy" (psi); with fracture also
- * "phase_field" (s) and "history" (H, eq. 8). */
+ * "phase_field" (s) and "history" (H, eq. 8).  Multi-component arrays name their components
+ * as ParaView does: X Y Z for vectors and points, XX YY ZZ XY YZ XZ for the stress.
+ * docs/outputs.md describes every array. */
 int sph_write_vtu(const char *path, const sph_body *b, double t);
 
 /* The frame of a body on many processes: a .pvtu file listing the pieces, one .vtu file of

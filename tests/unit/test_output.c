@@ -256,6 +256,60 @@ static void test_vtu_3d(void)
     free(v.data);
 }
 
+/* The components' names of the multi-component arrays, ParaView's: X Y Z for the vectors and
+ * points, XX YY ZZ XY YZ XZ for the stress (the order body->sigma holds); none for scalars. */
+static const char *const VECTOR_NAMES =
+    "NumberOfComponents=\"3\" ComponentName0=\"X\" ComponentName1=\"Y\" ComponentName2=\"Z\"";
+static const char *const TENSOR_NAMES =
+    "NumberOfComponents=\"6\" ComponentName0=\"XX\" ComponentName1=\"YY\" "
+    "ComponentName2=\"ZZ\" ComponentName3=\"XY\" ComponentName4=\"YZ\" ComponentName5=\"XZ\"";
+
+static void check_component_names(const char *text, const char *tag, const char *file)
+{
+    static const char *const vectors[] = {"displacement", "velocity", "Points"};
+    char want[512];
+    for (int k = 0; k < 3; k++) {
+        snprintf(want, sizeof want, "<%s type=\"Float64\" Name=\"%s\" %s", tag, vectors[k],
+                 VECTOR_NAMES);
+        CHECK(strstr(text, want) != NULL, "%s: %s names X Y Z", file, vectors[k]);
+    }
+    snprintf(want, sizeof want, "<%s type=\"Float64\" Name=\"cauchy_stress\" %s", tag,
+             TENSOR_NAMES);
+    CHECK(strstr(text, want) != NULL, "%s: cauchy_stress names XX YY ZZ XY YZ XZ", file);
+    const char *vm = strstr(text, "Name=\"sigma_vm\"");
+    CHECK(vm && !memchr(vm, 'C', (size_t)(strchr(vm, '>') - vm)), "%s: sigma_vm, a scalar, "
+          "names no component", file);
+}
+
+static void test_vtu_components(void)
+{
+    printf("vtu, pvtu: ParaView's names of the components\n");
+    double X[] = {0, 0, 0, 1, 0, 0}, zero[6] = {0};
+    int64_t gid[] = {7, 3};
+    sph_body b = {.n = 2, .nown = 2, .dim = 3, .X = X, .u = zero, .v = zero, .gid = gid};
+    const char *path = path_in_tmp("names_0000.vtu");
+    CHECK(sph_write_vtu(path, &b, 0) == 0, "sph_write_vtu returns 0");
+    vtu_file v;
+    if (load_vtu(path, &v) == 0) {
+        v.data[v.header_len] = '\0'; /* (the XML header only) */
+        check_component_names(v.data, "DataArray", path);
+        free(v.data);
+    } else {
+        CHECK(0, "cannot read back %s", path);
+    }
+    const char *pieces[] = {"names_0000_p0.vtu", "names_0000_p1.vtu"};
+    path = path_in_tmp("names_0000.pvtu");
+    CHECK(sph_write_pvtu(path, &b, pieces, 2) == 0, "sph_write_pvtu returns 0");
+    char *text = read_file(path, NULL);
+    if (text) {
+        check_component_names(text, "PDataArray", path);
+        CHECK(strstr(text, "<Piece Source=\"names_0000_p1.vtu\"/>") != NULL, "pieces listed");
+        free(text);
+    } else {
+        CHECK(0, "cannot read back %s", path);
+    }
+}
+
 static void test_vtu_empty_and_error(void)
 {
     printf("vtu: empty body; unwritable path fails (error message expected)\n");
@@ -414,6 +468,7 @@ int main(void)
     }
     test_vtu_2d();
     test_vtu_3d();
+    test_vtu_components();
     test_vtu_empty_and_error();
     test_pvd();
     test_csv();
