@@ -224,3 +224,79 @@ void sph_csv_resume(const char *const *paths, const long *lengths, int n)
         files.keep_len[k] = lengths[k];
     }
 }
+
+/* ------------------------------------------------------------------ reading */
+
+/* The comma-separated fields of line (cut in place, the newline dropped): how many. */
+static int split(char *line, char **field, int max)
+{
+    int n = 0;
+    line[strcspn(line, "\r\n")] = '\0';
+    for (char *p = line; n < max; p++) {
+        field[n++] = p;
+        p = strchr(p, ',');
+        if (!p)
+            break;
+        *p = '\0';
+    }
+    return n;
+}
+
+void sph_csv_table_free(sph_csv_table *t)
+{
+    for (int k = 0; t->names && k < t->ncols; k++)
+        free(t->names[k]);
+    free(t->names);
+    free(t->v);
+    *t = (sph_csv_table){0};
+}
+
+int sph_csv_read(const char *path, sph_csv_table *t)
+{
+    *t = (sph_csv_table){0};
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return -1;
+    char *line = NULL;
+    size_t cap = 0;
+    int bad = getline(&line, &cap, f) < 0;
+    char **field = bad ? NULL : calloc(strlen(line) + 2, sizeof *field);
+    const int max = field ? (int)strlen(line) + 1 : 0;
+    if (field) {
+        t->ncols = split(line, field, max);
+        t->names = calloc((size_t)t->ncols, sizeof *t->names);
+        for (int k = 0; t->names && k < t->ncols; k++)
+            t->names[k] = strdup(field[k]);
+        bad = !t->names;
+    }
+    long cap_rows = 0;
+    while (!bad && getline(&line, &cap, f) >= 0) {
+        if (split(line, field, max) != t->ncols)
+            break;
+        if (t->nrows == cap_rows) {
+            cap_rows = 2 * cap_rows + 64;
+            double *grown = realloc(t->v, (size_t)cap_rows * (size_t)t->ncols * sizeof *grown);
+            if (!grown) {
+                bad = 1;
+                break;
+            }
+            t->v = grown;
+        }
+        double *row = t->v + (size_t)t->nrows * (size_t)t->ncols;
+        int whole = 1;
+        for (int k = 0; k < t->ncols; k++) {
+            char *end;
+            row[k] = strtod(field[k], &end);
+            whole &= end != field[k];
+        }
+        if (!whole)
+            break;
+        t->nrows++;
+    }
+    free(field);
+    free(line);
+    fclose(f);
+    if (bad)
+        sph_csv_table_free(t);
+    return bad ? -1 : 0;
+}

@@ -25,4 +25,16 @@ int sph_csv_open_files(const char ***paths, long **lengths);
  * back to its length, and appends to it (no header); opening any other is an error. */
 void sph_csv_resume(const char *const *paths, const long *lengths, int n);
 
+/* A CSV file read back (comma-separated, a header line of names): ncols names, nrows rows of
+ * ncols numbers in v (row r, column k: v[r * ncols + k]).  A line without ncols numbers (none
+ * is written so) ends the table. */
+typedef struct {
+    int ncols;
+    char **names;
+    long nrows;
+    double *v;
+} sph_csv_table;
+int sph_csv_read(const char *path, sph_csv_table *t); /* 0, or -1 (no table: t is empty) */
+void sph_csv_table_free(sph_csv_table *t);
+
 #endif

@@ -569,7 +569,8 @@ static int summary_file(run_state *r, const char *status, double wall, int *fail
     }
     if (!strcmp(status, "running")) {
         sph_json_num(&j, "end_time", r->t_end);
-        return sph_json_close(&j);
+        const int bad = sph_json_close(&j);
+        return sph_run_report(r, status, NULL, NAN, NULL, 0) | bad;
     }
     sph_json_num(&j, "wall_time", wall);
     sph_json_num(&j, "setup_time", r->setup_seconds);
@@ -614,10 +615,17 @@ static int summary_file(run_state *r, const char *status, double wall, int *fail
         sph_json_bool(&j, "checkpoint", r->t_checkpoint > 0);
         sph_json_end_object(&j);
     }
-    *failed = strcmp(status, "finished") ? 0
-              : sph_expect_evaluate(r->m, &r->rec, &j, r->opt.quiet, r->errors,
-                                    sizeof r->errors);
-    return sph_json_close(&j);
+    const int finished = !strcmp(status, "finished");
+    sph_report_expect *expects = calloc((size_t)r->m->nexpects + 1, sizeof *expects);
+    *failed = finished ? sph_expect_evaluate(r->m, &r->rec, &j, r->opt.quiet, r->errors,
+                                             sizeof r->errors, expects)
+                       : 0;
+    int bad = sph_json_close(&j);
+    bad |= sph_run_report(r, status, r->unstable[0] ? r->unstable
+                                     : !strcmp(status, "stopped") ? stop_name() : NULL,
+                          wall, expects, finished && expects ? r->m->nexpects : 0);
+    free(expects);
+    return bad;
 }
 
 /* summary.json, written by process 0 from what all processes hold (collective). */
