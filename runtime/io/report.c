@@ -1,11 +1,12 @@
 /* report.c — summary.html, a run's report page: self-contained XHTML-compatible markup (no
  * script, no network) with the verdict, the expectations, and inline SVG plots of energies.csv
- * and of each measurement plane's CSV file.  Written whole beside its name and renamed over it
+ * and of each measurement plane's CSV file, and of the mean time step.  Written whole beside its name and renamed over it
  * (sph_open_whole), like summary.json, at the same moments.
  *
  * Every plotted line is a <polyline> that also carries the values it draws, as written in
  * the CSV file, in data-x and data-y (space-separated, the shortest text that reads back as
- * the same double); its <svg> names the file in data-csv, the line its column in
+ * the same double); its <svg> names the file in data-csv (none for the time step, which the
+ * run keeps in memory), the line its column in
  * data-column, and data-stride k says which rows were drawn: 0, k, 2k, ... and the last (a
  * file of more than MAX_POINTS rows is drawn downsampled, which the page says). */
 
@@ -127,7 +128,8 @@ static long stride_of(long n)
 #define FOR_DRAWN_ROWS(r, n, stride) \
     for (long r = 0; r < (n); r = r + (stride) < (n) || r == (n) - 1 ? r + (stride) : (n) - 1)
 
-/* A line plot of table t (file: its name in the output folder): column 0, the time, along x,
+/* A line plot of table t (file: its name in the output folder, NULL: a table of the run's
+ * memory, the <svg> without data-csv): column 0, the time, along x,
  * columns cols[0..ncols) each a line, named in a legend on the right. */
 static void line_plot(FILE *f, const char *file, const sph_csv_table *t, const int *cols,
                       int ncols, const char *yname, int width, int height)
@@ -135,7 +137,7 @@ static void line_plot(FILE *f, const char *file, const sph_csv_table *t, const i
     int legend = 0; /* (the longest name) */
     for (int c = 0; c < ncols; c++)
         legend = (int)fmax(legend, (double)strlen(t->names[cols[c]]));
-    const frame fr = {width, height, 70, 48 + 7 * legend, 12, 36};
+    const frame fr = {width, height, 84, 48 + 7 * legend, 12, 36};
     const long n = t->nrows, stride = stride_of(n);
     double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
     FOR_DRAWN_ROWS(r, n, stride) {
@@ -148,9 +150,13 @@ static void line_plot(FILE *f, const char *file, const sph_csv_table *t, const i
     }
     const axis ax = nice_axis(xlo, xhi), ay = nice_axis(ylo, yhi);
     fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
-               "viewBox=\"0 0 %d %d\" data-csv=\"", width, height, width, height);
-    put_text(f, file);
-    fprintf(f, "\" data-stride=\"%ld\" data-rows=\"%ld\">\n", stride, n);
+               "viewBox=\"0 0 %d %d\"", width, height, width, height);
+    if (file) {
+        fputs(" data-csv=\"", f);
+        put_text(f, file);
+        fputc('"', f);
+    }
+    fprintf(f, " data-stride=\"%ld\" data-rows=\"%ld\">\n", stride, n);
     put_axes(f, &fr, &ax, &ay, "time (s)", yname);
     for (int c = 0; c < ncols; c++) {
         const int k = cols[c];
@@ -271,6 +277,14 @@ static void put_energies(FILE *f, const sph_csv_table *t)
     free(cols);
 }
 
+static void put_time_steps(FILE *f, const sph_csv_table *t)
+{
+    const int col = 1;
+    fputs("<h2>Time step</h2>\n<p class=\"note\">The mean time step of each output interval "
+          "(its time over its steps), since this process started the run.</p>\n", f);
+    line_plot(f, NULL, t, &col, 1, "time step (s)", 560, 260);
+}
+
 static void put_plane(FILE *f, const char *name, const sph_csv_table *t, int dim)
 {
     char file[300];
@@ -308,6 +322,8 @@ int sph_report_write(const char *path, const sph_report *r)
     put_expectations(f, r);
     if (r->energies)
         put_energies(f, r->energies);
+    if (r->time_steps)
+        put_time_steps(f, r->time_steps);
     if (r->nplanes)
         fputs("<h2>Measurement planes</h2>\n", f);
     for (int q = 0; q < r->nplanes; q++)

@@ -24,6 +24,7 @@ typedef struct {
     const sph_report_expect *expects;
     int nexpects;
     const sph_csv_table *energies; /* NULL: none */
+    const sph_csv_table *time_steps; /* time, mean time step of each output interval; NULL */
     const sph_csv_table *planes;   /* nplanes measurement planes, */
     const char *const *plane_names; /* their names */
     int nplanes;

@@ -404,11 +404,29 @@ static int write_particles(run_state *r)
     return s->par->agree(bad);
 }
 
+/* The mean time step over the output interval that ends now (none at the first output). */
+static void note_time_step(run_state *r)
+{
+    const sph_sim *s = &r->sim;
+    sph_csv_table *t = &r->time_steps;
+    if (r->dt_step0 >= 0 && s->step > r->dt_step0) {
+        double *grown = realloc(t->v, 2 * ((size_t)t->nrows + 1) * sizeof *grown);
+        if (grown) {
+            t->v = grown;
+            t->v[2 * t->nrows] = s->t;
+            t->v[2 * t->nrows + 1] = (s->t - r->dt_t0) / (double)(s->step - r->dt_step0);
+            t->nrows++;
+        }
+    }
+    r->dt_t0 = s->t, r->dt_step0 = s->step;
+}
+
 /* An output time: a row of energies and measurements, and a frame of particle files when
  * one is due (every --frames interval, by default every output). */
 static int write_output(run_state *r)
 {
     int bad = 0;
+    note_time_step(r);
     const double t = r->sim.t, eps = 1e-9 * r->t_out;
     if (t >= r->next_frame - eps) {
         bad = write_particles(r);
@@ -663,6 +681,7 @@ static int restart(run_state *r, sph_ckpt *c)
     bad = bad || par->agree(open_outputs(r)) || sph_run_resume(c, r);
     sph_ckpt_free(c);
     r->t_resumed = r->sim.t, r->step_resumed = r->sim.step;
+    r->dt_t0 = r->sim.t, r->dt_step0 = r->sim.step; /* (the time step from here on) */
     if (!bad && !r->opt.quiet)
         printf("%s: resumed from %s at t = %g s (step %ld)\n", r->m->name, r->opt.restart,
                r->sim.t, r->sim.step);
@@ -998,6 +1017,9 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
     setvbuf(stdout, NULL, _IOLBF, 0);
     run_state r;
     memset(&r, 0, sizeof r);
+    static char *const time_step_names[] = {"time", "mean_dt"};
+    r.time_steps = (sph_csv_table){2, (char **)time_step_names, 0, NULL};
+    r.dt_step0 = -1;
     r.m = m;
     r.sim.par = par;
     sph_message_program(m->name);
@@ -1075,6 +1097,7 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
             sph_compat_close(&r.compat);
     }
     sph_sim_free(&r.sim);
+    free(r.time_steps.v);
     if (r.opt.profile) {
         const sph_profile_times t = {r.setup_seconds, r.step_seconds, r.check_seconds,
                                      r.output_seconds};

@@ -32,6 +32,7 @@ int sph_run_report(const run_state *r, const char *status, const char *message, 
         .time = r->sim.t, .end_time = r->t_end, .wall_time = wall, .steps = r->sim.step,
         .expects = expects, .nexpects = nexpects,
         .energies = have_energies ? &energies : NULL,
+        .time_steps = r->time_steps.nrows ? &r->time_steps : NULL,
         .planes = planes, .plane_names = names, .nplanes = np, .dim = m->dim,
     };
     path = joinf("%s/summary.html%s", r->opt.out_dir, "");

@@ -49,6 +49,11 @@ typedef struct {
     double stretch_seen;  /* the smallest principal stretch they saw, */
     long checks;          /* how many there were, */
     long device_checks;   /* and how many a device target's sums answered alone */
+    /* the mean time step of each output interval since this process started the run: rows
+     * of time and step ((t - t0) / (step - step0) over the interval), for the report page */
+    sph_csv_table time_steps;
+    double dt_t0;
+    long dt_step0;        /* -1: no output yet */
     char unstable[512];
     char errors[512];     /* the declared expectations' errors, for the final line */
 } run_state;

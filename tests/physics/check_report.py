@@ -38,6 +38,8 @@ def check_plots(root, out):
     errors, plotted = [], {}
     for svg in root.iter(SVG + "svg"):
         name = svg.get("data-csv")
+        if name is None:  # (the time step: checked in main)
+            continue
         with open(os.path.join(out, name), newline="") as f:
             table = list(csv.reader(f))
         header, rows = table[0], [[float(v) for v in r] for r in table[1:]]
@@ -115,6 +117,28 @@ def main():
     for name in os.listdir(out):
         if name.startswith("measure_") and name.endswith(".csv") and name not in plotted:
             errors.append(f"no plot of {name}")
+
+    # The mean time step of each output interval: at the output times after the first, each
+    # no longer than its interval.
+    steps = [s for s in root.iter(SVG + "svg") if s.get("data-csv") is None]
+    times = [float(r.split(",")[0]) for r in open(os.path.join(out, "energies.csv"))
+             .read().split()[1:]]
+    if len(steps) != 1:
+        errors.append(f"{len(steps)} time step plots (expected 1)")
+    else:
+        line = next(steps[0].iter(SVG + "polyline"))
+        xs = [float(v) for v in line.get("data-x").split()]
+        ys = [float(v) for v in line.get("data-y").split()]
+        want = times[1:][::int(steps[0].get("data-stride"))]
+        if len(times) > 1 and want[-1] != times[-1]:
+            want.append(times[-1])
+        if len(xs) != len(want) or any(abs(x - t) > 1e-9 * max(abs(t), 1e-30)
+                                       for x, t in zip(xs, want)):
+            errors.append(f"the time step is plotted at {xs[:5]}..., the outputs are at "
+                          f"{want[:5]}...")
+        elif steps[0].get("data-stride") == "1" and not all(
+                0 < y <= (b - a) * (1 + 1e-9) for y, a, b in zip(ys, times, times[1:])):
+            errors.append(f"a mean time step is not within its output interval: {ys[:5]}...")
 
     # The comparison can fail: one plotted number changed is found.
     line = next(root.iter(SVG + "polyline"))

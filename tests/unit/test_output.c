@@ -317,6 +317,14 @@ static void test_csv(void)
     sph_csv_close(&c);
     CHECK(c.f == NULL, "closed");
     CHECK(sph_csv_open(&c, path_in_tmp("nope/x.csv"), cols, 3) == -1, "bad path fails");
+
+    sph_csv_table t; /* read back: the names, and the numbers as printed */
+    CHECK(sph_csv_read(path, &t) == 0 && t.ncols == 3 && t.nrows == 2, "csv read back");
+    CHECK(t.ncols == 3 && !strcmp(t.names[0], "t") && !strcmp(t.names[2], "fz"), "its names");
+    CHECK(t.nrows == 2 && t.v[1] == 1e-7 && t.v[4] == 0.3333333333 && t.v[5] == 1234567890.0,
+          "its numbers");
+    sph_csv_table_free(&t);
+    CHECK(sph_csv_read(path_in_tmp("nope/x.csv"), &t) == -1 && t.nrows == 0, "no file: -1");
 }
 
 static void write_json_sample(const char *path)
