@@ -7,8 +7,9 @@
  * the CSV file, in data-x and data-y (space-separated, the shortest text that reads back as
  * the same double); its <svg> names the file in data-csv (none for the time step, which the
  * run keeps in memory), the line its column in
- * data-column, and data-stride k says which rows were drawn: 0, k, 2k, ... and the last (a
- * file of more than MAX_POINTS rows is drawn downsampled, which the page says). */
+ * data-column, and data-stride k says which of its data-rows rows were drawn: 0, k, 2k, ...
+ * and the last (the tables handed over keep at most SPH_REPORT_POINTS rows and the last: a
+ * longer file is drawn downsampled, which the page says). */
 
 #include <errno.h>
 #include <math.h>
@@ -19,8 +20,6 @@
 #include "fsutil.h"
 #include "report.h"
 #include "core/message.h"
-
-enum { MAX_POINTS = 2000 };
 
 static const char *const COLORS[] = {
     "#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
@@ -119,15 +118,6 @@ static void put_axes(FILE *f, const frame *fr, const axis *ax, const axis *ay,
     fputs("</text>\n", f);
 }
 
-/* The rows drawn of a table of n rows: every stride-th and the last. */
-static long stride_of(long n)
-{
-    return n > MAX_POINTS ? (n + MAX_POINTS - 2) / (MAX_POINTS - 1) : 1;
-}
-
-#define FOR_DRAWN_ROWS(r, n, stride) \
-    for (long r = 0; r < (n); r = r + (stride) < (n) || r == (n) - 1 ? r + (stride) : (n) - 1)
-
 /* A line plot of table t (file: its name in the output folder, NULL: a table of the run's
  * memory, the <svg> without data-csv): column 0, the time, along x,
  * columns cols[0..ncols) each a line, named in a legend on the right. */
@@ -138,9 +128,9 @@ static void line_plot(FILE *f, const char *file, const sph_csv_table *t, const i
     for (int c = 0; c < ncols; c++)
         legend = (int)fmax(legend, (double)strlen(t->names[cols[c]]));
     const frame fr = {width, height, 84, 48 + 7 * legend, 12, 36};
-    const long n = t->nrows, stride = stride_of(n);
+    const long n = t->nrows, stride = t->stride > 1 ? t->stride : 1;
     double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
-    FOR_DRAWN_ROWS(r, n, stride) {
+    for (long r = 0; r < n; r++) {
         const double *row = t->v + (size_t)r * (size_t)t->ncols;
         if (isfinite(row[0]))
             xlo = fmin(xlo, row[0]), xhi = fmax(xhi, row[0]);
@@ -156,7 +146,7 @@ static void line_plot(FILE *f, const char *file, const sph_csv_table *t, const i
         put_text(f, file);
         fputc('"', f);
     }
-    fprintf(f, " data-stride=\"%ld\" data-rows=\"%ld\">\n", stride, n);
+    fprintf(f, " data-stride=\"%ld\" data-rows=\"%ld\">\n", stride, t->total);
     put_axes(f, &fr, &ax, &ay, "time (s)", yname);
     for (int c = 0; c < ncols; c++) {
         const int k = cols[c];
@@ -165,18 +155,18 @@ static void line_plot(FILE *f, const char *file, const sph_csv_table *t, const i
         fputs("<polyline fill=\"none\" data-column=\"", f);
         put_text(f, t->names[k]);
         fprintf(f, "\" stroke=\"%s\" stroke-width=\"%s\"\n data-x=\"", color, total ? "2" : "1.3");
-        FOR_DRAWN_ROWS(r, n, stride) {
+        for (long r = 0; r < n; r++) {
             put_number(f, t->v[(size_t)r * (size_t)t->ncols]);
             fputc(r == n - 1 ? '"' : ' ', f);
         }
         fputs(n ? "\n data-y=\"" : "\" data-y=\"", f);
-        FOR_DRAWN_ROWS(r, n, stride) {
+        for (long r = 0; r < n; r++) {
             put_number(f, t->v[(size_t)r * (size_t)t->ncols + (size_t)k]);
             fputc(r == n - 1 ? '"' : ' ', f);
         }
         fputs(n ? "\n points=\"" : "\" points=\"", f);
         int first = 1; /* (a non-finite value is left out) */
-        FOR_DRAWN_ROWS(r, n, stride) {
+        for (long r = 0; r < n; r++) {
             const double *row = t->v + (size_t)r * (size_t)t->ncols;
             if (isfinite(row[0]) && isfinite(row[k])) {
                 fprintf(f, "%s%.1f,%.1f", first ? "" : " ", px(&fr, &ax, row[0]),
@@ -194,8 +184,8 @@ static void line_plot(FILE *f, const char *file, const sph_csv_table *t, const i
     }
     fputs("</svg>\n", f);
     if (stride > 1)
-        fprintf(f, "<p class=\"note\">%ld rows: one in %ld drawn, and the last.</p>\n", n,
-                stride);
+        fprintf(f, "<p class=\"note\">%ld rows: one in %ld drawn, and the last.</p>\n",
+                t->total, stride);
     else if (n == 0)
         fputs("<p class=\"note\">No rows yet.</p>\n", f);
 }

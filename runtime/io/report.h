@@ -4,6 +4,9 @@
 
 #include "csv.h"
 
+/* The most rows of a table the page draws (sph_csv_read, sph_csv_table_add: and the last). */
+enum { SPH_REPORT_POINTS = 2000 };
+
 /* An expectation of the model as evaluated (NAN where it has no such number). */
 typedef struct {
     const char *kind;      /* "period", "amplitude", "energy", "reference" */
@@ -14,7 +17,7 @@ typedef struct {
 } sph_report_expect;
 
 /* What the page shows: how the run stands, its expectations, and its CSV files as plots
- * (column 0 the time, the others a line each). */
+ * (column 0 the time, the others a line each; every row of a table is drawn). */
 typedef struct {
     const char *model;
     const char *status;    /* "running", "finished", "unstable", "stopped", "failed" */

@@ -408,15 +408,9 @@ static int write_particles(run_state *r)
 static void note_time_step(run_state *r)
 {
     const sph_sim *s = &r->sim;
-    sph_csv_table *t = &r->time_steps;
     if (r->dt_step0 >= 0 && s->step > r->dt_step0) {
-        double *grown = realloc(t->v, 2 * ((size_t)t->nrows + 1) * sizeof *grown);
-        if (grown) {
-            t->v = grown;
-            t->v[2 * t->nrows] = s->t;
-            t->v[2 * t->nrows + 1] = (s->t - r->dt_t0) / (double)(s->step - r->dt_step0);
-            t->nrows++;
-        }
+        const double row[2] = {s->t, (s->t - r->dt_t0) / (double)(s->step - r->dt_step0)};
+        sph_csv_table_add(&r->time_steps, row, SPH_REPORT_POINTS); /* (thinned when long) */
     }
     r->dt_t0 = s->t, r->dt_step0 = s->step;
 }
@@ -1018,7 +1012,7 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
     run_state r;
     memset(&r, 0, sizeof r);
     static char *const time_step_names[] = {"time", "mean_dt"};
-    r.time_steps = (sph_csv_table){2, (char **)time_step_names, 0, NULL};
+    r.time_steps = (sph_csv_table){.ncols = 2, .names = (char **)time_step_names};
     r.dt_step0 = -1;
     r.m = m;
     r.sim.par = par;

@@ -15,7 +15,7 @@ int sph_run_report(const run_state *r, const char *status, const char *message, 
     const sph_model *m = r->m;
     sph_csv_table energies;
     char *path = joinf("%s/energies.csv%s", r->opt.out_dir, "");
-    const int have_energies = !sph_csv_read(path, &energies);
+    const int have_energies = !sph_csv_read(path, &energies, SPH_REPORT_POINTS);
     free(path);
     sph_csv_table *planes = calloc((size_t)r->nmeasures + 1, sizeof *planes);
     const char **names = calloc((size_t)r->nmeasures + 1, sizeof *names);
@@ -23,7 +23,7 @@ int sph_run_report(const run_state *r, const char *status, const char *message, 
     for (int i = 0; planes && names && i < m->nbodies; i++)
         for (int k = 0; k < m->bodies[i].nmeasures; k++) {
             path = joinf("%s/measure_%s.csv", r->opt.out_dir, m->bodies[i].measures[k].name);
-            if (!sph_csv_read(path, &planes[np]))
+            if (!sph_csv_read(path, &planes[np], SPH_REPORT_POINTS))
                 names[np++] = m->bodies[i].measures[k].name;
             free(path);
         }
