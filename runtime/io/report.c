@@ -64,6 +64,8 @@ static axis nice_axis(double lo, double hi)
 {
     if (!(lo <= hi)) /* (no finite value) */
         lo = 0, hi = 1;
+    if (!isfinite(hi - lo)) /* (values near the largest double) */
+        lo = -1e300, hi = 1e300;
     if (hi - lo <= 1e-300 * fmax(1.0, fabs(hi))) {
         const double pad = lo != 0 ? 0.5 * fabs(lo) : 1.0;
         lo -= pad, hi += pad;
@@ -118,6 +120,18 @@ static void put_axes(FILE *f, const frame *fr, const axis *ax, const axis *ay,
     fputs("</text>\n", f);
 }
 
+/* The attribute name="..." of column k of t's rows, each number as put_number writes it. */
+static void put_column(FILE *f, const char *name, const sph_csv_table *t, int k)
+{
+    fprintf(f, "\n %s=\"", name);
+    for (long r = 0; r < t->nrows; r++) {
+        if (r)
+            fputc(' ', f);
+        put_number(f, t->v[(size_t)r * (size_t)t->ncols + (size_t)k]);
+    }
+    fputc('"', f);
+}
+
 /* A line plot of table t (file: its name in the output folder, NULL: a table of the run's
  * memory, the <svg> without data-csv): column 0, the time, along x,
  * columns cols[0..ncols) each a line, named in a legend on the right. */
@@ -154,17 +168,10 @@ static void line_plot(FILE *f, const char *file, const sph_csv_table *t, const i
         const char *color = total ? "#000" : COLORS[c % NCOLORS];
         fputs("<polyline fill=\"none\" data-column=\"", f);
         put_text(f, t->names[k]);
-        fprintf(f, "\" stroke=\"%s\" stroke-width=\"%s\"\n data-x=\"", color, total ? "2" : "1.3");
-        for (long r = 0; r < n; r++) {
-            put_number(f, t->v[(size_t)r * (size_t)t->ncols]);
-            fputc(r == n - 1 ? '"' : ' ', f);
-        }
-        fputs(n ? "\n data-y=\"" : "\" data-y=\"", f);
-        for (long r = 0; r < n; r++) {
-            put_number(f, t->v[(size_t)r * (size_t)t->ncols + (size_t)k]);
-            fputc(r == n - 1 ? '"' : ' ', f);
-        }
-        fputs(n ? "\n points=\"" : "\" points=\"", f);
+        fprintf(f, "\" stroke=\"%s\" stroke-width=\"%s\"", color, total ? "2" : "1.3");
+        put_column(f, "data-x", t, 0);
+        put_column(f, "data-y", t, k);
+        fputs("\n points=\"", f);
         int first = 1; /* (a non-finite value is left out) */
         for (long r = 0; r < n; r++) {
             const double *row = t->v + (size_t)r * (size_t)t->ncols;
