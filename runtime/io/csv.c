@@ -224,3 +224,90 @@ void sph_csv_resume(const char *const *paths, const long *lengths, int n)
         files.keep_len[k] = lengths[k];
     }
 }
+
+/* ------------------------------------------------------------------ reading */
+
+/* The comma-separated fields of line (cut in place, the newline dropped): how many. */
+static int split(char *line, char **field, int max)
+{
+    int n = 0;
+    line[strcspn(line, "\r\n")] = '\0';
+    for (char *p = line; n < max; p++) {
+        field[n++] = p;
+        p = strchr(p, ',');
+        if (!p)
+            break;
+        *p = '\0';
+    }
+    return n;
+}
+
+void sph_csv_table_free(sph_csv_table *t)
+{
+    for (int k = 0; t->names && k < t->ncols; k++)
+        free(t->names[k]);
+    free(t->names);
+    free(t->v);
+    *t = (sph_csv_table){0};
+}
+
+int sph_csv_table_add(sph_csv_table *t, const double *row, long max)
+{
+    const size_t w = (size_t)t->ncols;
+    const long index = t->total++;
+    if (t->stride < 1)
+        t->stride = 1;
+    if (t->tail) /* (the previous last row, off the stride) */
+        t->nrows--, t->tail = 0;
+    if (!t->v && !(t->v = malloc(((size_t)max + 1) * w * sizeof *t->v)))
+        return -1;
+    if (index % t->stride == 0 && t->nrows >= max) { /* every other row goes */
+        for (long r = 0; 2 * r < t->nrows; r++)
+            memmove(t->v + (size_t)r * w, t->v + (size_t)(2 * r) * w, w * sizeof *t->v);
+        t->nrows = (t->nrows + 1) / 2;
+        t->stride *= 2;
+    }
+    t->tail = index % t->stride != 0;
+    memcpy(t->v + (size_t)t->nrows++ * w, row, w * sizeof *t->v);
+    return 0;
+}
+
+int sph_csv_read(const char *path, sph_csv_table *t, long max)
+{
+    *t = (sph_csv_table){0};
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return -1;
+    char *line = NULL;
+    size_t cap = 0;
+    int bad = getline(&line, &cap, f) < 0;
+    char **field = bad ? NULL : calloc(strlen(line) + 2, sizeof *field);
+    const int nfield = field ? (int)strlen(line) + 1 : 0;
+    if (field) {
+        t->ncols = split(line, field, nfield);
+        t->names = calloc((size_t)t->ncols, sizeof *t->names);
+        for (int k = 0; t->names && k < t->ncols; k++)
+            t->names[k] = strdup(field[k]);
+        bad = !t->names;
+    }
+    double *row = bad ? NULL : malloc((size_t)t->ncols * sizeof *row);
+    bad = bad || !row;
+    while (!bad && getline(&line, &cap, f) >= 0 && split(line, field, nfield) == t->ncols) {
+        int whole = 1;
+        for (int k = 0; k < t->ncols; k++) {
+            char *end;
+            row[k] = strtod(field[k], &end);
+            whole &= end != field[k];
+        }
+        if (!whole)
+            break;
+        bad = sph_csv_table_add(t, row, max);
+    }
+    free(row);
+    free(field);
+    free(line);
+    fclose(f);
+    if (bad)
+        sph_csv_table_free(t);
+    return bad ? -1 : 0;
+}

@@ -25,4 +25,23 @@ int sph_csv_open_files(const char ***paths, long **lengths);
  * back to its length, and appends to it (no header); opening any other is an error. */
 void sph_csv_resume(const char *const *paths, const long *lengths, int n);
 
+/* A time series kept in at most max + 1 rows (a CSV file read back, or a series a run keeps):
+ * names of ncols columns; of the total rows added, those at 0, stride, 2 stride, ... and the
+ * last; nrows of ncols numbers in v (row r, column k: v[r * ncols + k]).  When max rows are
+ * kept every other one goes and the stride doubles.  A zero table ({ncols, names}) is empty. */
+typedef struct {
+    int ncols;
+    char **names;
+    long nrows;
+    double *v;
+    long total, stride; /* stride 0: 1 */
+    int tail;           /* the last row is there only as the last (not on the stride) */
+} sph_csv_table;
+/* Adds a row of ncols numbers (0, or -1 out of memory: the row is not kept). */
+int sph_csv_table_add(sph_csv_table *t, const double *row, long max);
+/* A CSV file (comma-separated, a header line of names) read back, at most max + 1 rows kept;
+ * a line without ncols numbers (none is written so) ends it.  0, or -1 (t then empty). */
+int sph_csv_read(const char *path, sph_csv_table *t, long max);
+void sph_csv_table_free(sph_csv_table *t); /* (the names too) */
+
 #endif

@@ -103,7 +103,7 @@ int sph_close_whole(FILE *f, const char *path)
 /* The names of the files a run writes (README, "The generated program"), in its folder and
  * in particles/; each also with the suffix of a file cut short while being written. */
 static const char *const TOP_FILES[] = {
-    "summary.json", "energies.csv", "measure_*.csv", "checkpoint.bin",
+    "summary.json", "summary.html", "energies.csv", "measure_*.csv", "checkpoint.bin",
     "DeformStruc_Energies.csv", "MeasuringPlData_MK*_PL*.csv", /* (models from XML) */
 };
 static const char *const PARTIAL[] = {"", ".tmp", ".part"};

@@ -109,7 +109,7 @@ static const char *no_error_reason(const sph_expect_desc *x)
 }
 
 int sph_expect_evaluate(const sph_model *m, const sph_record *r, sph_json *j, int quiet,
-                        char *errors, size_t len)
+                        char *errors, size_t len, sph_report_expect *out)
 {
     size_t used = 0;
     if (errors && len)
@@ -150,6 +150,11 @@ int sph_expect_evaluate(const sph_model *m, const sph_record *r, sph_json *j, in
             sph_json_num(j, "tolerance", x->tolerance);
         sph_json_bool(j, "pass", pass);
         sph_json_end_object(j);
+        if (out)
+            out[k] = (sph_report_expect){
+                KIND[x->kind], x->text, value,
+                x->kind == SPH_EXPECT_PERIOD || x->kind == SPH_EXPECT_AMPLITUDE ? x->value : NAN,
+                max_abs, error, x->tolerance, pass};
         if (errors && used < len)
             used += (size_t)(isfinite(error)
                                  ? snprintf(errors + used, len - used, "%s%s %.3g %%",

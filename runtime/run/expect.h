@@ -6,6 +6,7 @@
 
 #include "measure.h"
 #include "io/json.h"
+#include "io/report.h"
 #include "scene/model.h"
 
 /* Evaluate the model's expectations; writes them into the summary and prints a
@@ -16,8 +17,9 @@ typedef struct {
     sph_series energy;      /* rows: total strain, total kinetic */
 } sph_record;
 /* errors (if not NULL, len bytes) receives "period 1.91 %, energy 0.0059 %", one entry per
- * expectation, for the program's final line. */
+ * expectation, for the program's final line; out (if not NULL, m->nexpects entries) the
+ * results, for the report page. */
 int sph_expect_evaluate(const sph_model *m, const sph_record *r, sph_json *j, int quiet,
-                        char *errors, size_t len);
+                        char *errors, size_t len, sph_report_expect *out);
 
 #endif

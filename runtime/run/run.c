@@ -404,11 +404,23 @@ static int write_particles(run_state *r)
     return s->par->agree(bad);
 }
 
+/* The mean time step over the output interval that ends now (none at the first output). */
+static void note_time_step(run_state *r)
+{
+    const sph_sim *s = &r->sim;
+    if (r->dt_step0 >= 0 && s->step > r->dt_step0) {
+        const double row[2] = {s->t, (s->t - r->dt_t0) / (double)(s->step - r->dt_step0)};
+        sph_csv_table_add(&r->time_steps, row, SPH_REPORT_POINTS); /* (thinned when long) */
+    }
+    r->dt_t0 = s->t, r->dt_step0 = s->step;
+}
+
 /* An output time: a row of energies and measurements, and a frame of particle files when
  * one is due (every --frames interval, by default every output). */
 static int write_output(run_state *r)
 {
     int bad = 0;
+    note_time_step(r);
     const double t = r->sim.t, eps = 1e-9 * r->t_out;
     if (t >= r->next_frame - eps) {
         bad = write_particles(r);
@@ -569,7 +581,8 @@ static int summary_file(run_state *r, const char *status, double wall, int *fail
     }
     if (!strcmp(status, "running")) {
         sph_json_num(&j, "end_time", r->t_end);
-        return sph_json_close(&j);
+        const int bad = sph_json_close(&j);
+        return sph_run_report(r, status, NULL, NAN, NULL, 0) | bad;
     }
     sph_json_num(&j, "wall_time", wall);
     sph_json_num(&j, "setup_time", r->setup_seconds);
@@ -614,10 +627,17 @@ static int summary_file(run_state *r, const char *status, double wall, int *fail
         sph_json_bool(&j, "checkpoint", r->t_checkpoint > 0);
         sph_json_end_object(&j);
     }
-    *failed = strcmp(status, "finished") ? 0
-              : sph_expect_evaluate(r->m, &r->rec, &j, r->opt.quiet, r->errors,
-                                    sizeof r->errors);
-    return sph_json_close(&j);
+    const int finished = !strcmp(status, "finished");
+    sph_report_expect *expects = calloc((size_t)r->m->nexpects + 1, sizeof *expects);
+    *failed = finished ? sph_expect_evaluate(r->m, &r->rec, &j, r->opt.quiet, r->errors,
+                                             sizeof r->errors, expects)
+                       : 0;
+    int bad = sph_json_close(&j);
+    bad |= sph_run_report(r, status, r->unstable[0] ? r->unstable
+                                     : !strcmp(status, "stopped") ? stop_name() : NULL,
+                          wall, expects, finished && expects ? r->m->nexpects : 0);
+    free(expects);
+    return bad;
 }
 
 /* summary.json, written by process 0 from what all processes hold (collective). */
@@ -655,6 +675,7 @@ static int restart(run_state *r, sph_ckpt *c)
     bad = bad || par->agree(open_outputs(r)) || sph_run_resume(c, r);
     sph_ckpt_free(c);
     r->t_resumed = r->sim.t, r->step_resumed = r->sim.step;
+    r->dt_t0 = r->sim.t, r->dt_step0 = r->sim.step; /* (the time step from here on) */
     if (!bad && !r->opt.quiet)
         printf("%s: resumed from %s at t = %g s (step %ld)\n", r->m->name, r->opt.restart,
                r->sim.t, r->sim.step);
@@ -990,6 +1011,9 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
     setvbuf(stdout, NULL, _IOLBF, 0);
     run_state r;
     memset(&r, 0, sizeof r);
+    static char *const time_step_names[] = {"time", "mean_dt"};
+    r.time_steps = (sph_csv_table){.ncols = 2, .names = (char **)time_step_names};
+    r.dt_step0 = -1;
     r.m = m;
     r.sim.par = par;
     sph_message_program(m->name);
@@ -1067,6 +1091,7 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
             sph_compat_close(&r.compat);
     }
     sph_sim_free(&r.sim);
+    free(r.time_steps.v);
     if (r.opt.profile) {
         const sph_profile_times t = {r.setup_seconds, r.step_seconds, r.check_seconds,
                                      r.output_seconds};

@@ -13,6 +13,7 @@
 #include "io/checkpoint.h"
 #include "io/compat.h"
 #include "io/csv.h"
+#include "io/report.h"
 #include "par/team.h"
 #include "scene/model.h"
 #include "scene/sim.h"
@@ -48,6 +49,11 @@ typedef struct {
     double stretch_seen;  /* the smallest principal stretch they saw, */
     long checks;          /* how many there were, */
     long device_checks;   /* and how many a device target's sums answered alone */
+    /* the mean time step of each output interval since this process started the run: rows
+     * of time and step ((t - t0) / (step - step0) over the interval), for the report page */
+    sph_csv_table time_steps;
+    double dt_t0;
+    long dt_step0;        /* -1: no output yet */
     char unstable[512];
     char errors[512];     /* the declared expectations' errors, for the final line */
 } run_state;
@@ -77,5 +83,11 @@ int sph_run_write_checkpoint(run_state *r);
 int sph_run_resume_files(const sph_ckpt *c, const run_state *r);
 /* After the outputs are opened: times, frames, series, timers. */
 int sph_run_resume(const sph_ckpt *c, run_state *r);
+
+/* run_report.c: summary.html in the output folder (process 0, with summary.json): the status
+ * and message (where it went unstable, the signal; NULL: none), the wall time (NAN while
+ * running), the expectations' results, the CSV files read back; 0, or -1 after reporting. */
+int sph_run_report(const run_state *r, const char *status, const char *message, double wall,
+                   const sph_report_expect *expects, int nexpects);
 
 #endif

@@ -1,4 +1,5 @@
-# A run killed, stopped or started again never leaves a mix of two runs or a part of a file:
+# A run killed, stopped or started again never leaves a mix of two runs or a part of a file
+# (summary.html says what summary.json says):
 #   -DPROGRAM= -DOUT= -DCASE=used|killed|stopped|log [-DPRLIMIT=]
 # PROGRAM is the coarse beam (an output every 1 ms, a frame of its body `beam` each, some
 # 650 kB; some 3000 steps, 10 ms, a second on one thread).
@@ -72,6 +73,10 @@ function(expect_status dir status)
   file(READ ${dir}/summary.json summary)
   if(NOT summary MATCHES "\"status\": \"${status}\"")
     message(FATAL_ERROR "${dir}/summary.json does not say \"${status}\":\n${summary}")
+  endif()
+  file(READ ${dir}/summary.html page) # (the report page, written with it)
+  if(NOT page MATCHES "<p id=\"verdict\" class=\"verdict ${status}\">")
+    message(FATAL_ERROR "${dir}/summary.html does not say \"${status}\"")
   endif()
 endfunction()
 

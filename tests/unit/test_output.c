@@ -371,6 +371,24 @@ static void test_csv(void)
     sph_csv_close(&c);
     CHECK(c.f == NULL, "closed");
     CHECK(sph_csv_open(&c, path_in_tmp("nope/x.csv"), cols, 3) == -1, "bad path fails");
+
+    sph_csv_table t; /* read back: the names, and the numbers as printed */
+    CHECK(sph_csv_read(path, &t, 100) == 0 && t.ncols == 3 && t.nrows == 2, "csv read back");
+    CHECK(t.ncols == 3 && !strcmp(t.names[0], "t") && !strcmp(t.names[2], "fz"), "its names");
+    CHECK(t.nrows == 2 && t.v[1] == 1e-7 && t.v[4] == 0.3333333333 && t.v[5] == 1234567890.0,
+          "its numbers");
+    sph_csv_table_free(&t);
+    /* a long series thinned to at most 4 rows and the last: rows 0, 8, 16 of 0..19, and 19 */
+    static const char *const names[] = {"time"};
+    t = (sph_csv_table){.ncols = 1, .names = (char **)names};
+    for (int k = 0; k < 20; k++) {
+        const double row = k;
+        sph_csv_table_add(&t, &row, 4);
+    }
+    CHECK(t.nrows == 4 && t.stride == 8 && t.total == 20 && t.v[0] == 0 && t.v[1] == 8 &&
+          t.v[2] == 16 && t.v[3] == 19, "a long series thinned");
+    free(t.v);
+    CHECK(sph_csv_read(path_in_tmp("nope/x.csv"), &t, 100) == -1 && t.nrows == 0, "no file: -1");
 }
 
 static void write_json_sample(const char *path)

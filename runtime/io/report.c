@@ -1,0 +1,334 @@
+/* report.c — summary.html, a run's report page: self-contained XHTML-compatible markup (no
+ * script, no network) with the verdict, the expectations, and inline SVG plots of energies.csv
+ * and of each measurement plane's CSV file, and of the mean time step.  Written whole beside its name and renamed over it
+ * (sph_open_whole), like summary.json, at the same moments.
+ *
+ * Every plotted line is a <polyline> that also carries the values it draws, as written in
+ * the CSV file, in data-x and data-y (space-separated, the shortest text that reads back as
+ * the same double); its <svg> names the file in data-csv (none for the time step, which the
+ * run keeps in memory), the line its column in
+ * data-column, and data-stride k says which of its data-rows rows were drawn: 0, k, 2k, ...
+ * and the last (the tables handed over keep at most SPH_REPORT_POINTS rows and the last: a
+ * longer file is drawn downsampled, which the page says). */
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fsutil.h"
+#include "report.h"
+#include "core/message.h"
+
+static const char *const COLORS[] = {
+    "#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+    "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf",
+};
+enum { NCOLORS = sizeof COLORS / sizeof *COLORS };
+
+/* text with &, <, >, " escaped */
+static void put_text(FILE *f, const char *s)
+{
+    for (; s && *s; s++)
+        switch (*s) {
+        case '&': fputs("&amp;", f); break;
+        case '<': fputs("&lt;", f); break;
+        case '>': fputs("&gt;", f); break;
+        case '"': fputs("&quot;", f); break;
+        default: fputc(*s, f);
+        }
+}
+
+/* The shortest of %.15g, %.16g, %.17g that reads back as exactly v ("nan", "inf" as such). */
+static void put_number(FILE *f, double v)
+{
+    char buf[40];
+    for (int prec = 15; prec <= 17; prec++) {
+        snprintf(buf, sizeof buf, "%.*g", prec, v);
+        if (!isfinite(v) || strtod(buf, NULL) == v)
+            break;
+    }
+    fputs(buf, f);
+}
+
+/* ------------------------------------------------------------------ plots */
+
+/* An axis: from lo to hi with ticks every step (lo and hi on ticks). */
+typedef struct {
+    double lo, hi, step;
+} axis;
+
+/* A range with about 5 ticks at 1, 2 or 5 times a power of ten. */
+static axis nice_axis(double lo, double hi)
+{
+    if (!(lo <= hi)) /* (no finite value) */
+        lo = 0, hi = 1;
+    if (!isfinite(hi - lo)) /* (values near the largest double) */
+        lo = -1e300, hi = 1e300;
+    if (hi - lo <= 1e-300 * fmax(1.0, fabs(hi))) {
+        const double pad = lo != 0 ? 0.5 * fabs(lo) : 1.0;
+        lo -= pad, hi += pad;
+    }
+    const double raw = (hi - lo) / 5, mag = pow(10, floor(log10(raw))), r = raw / mag;
+    const double step = (r < 1.5 ? 1 : r < 3.5 ? 2 : r < 7.5 ? 5 : 10) * mag;
+    return (axis){floor(lo / step) * step, ceil(hi / step) * step, step};
+}
+
+/* A plot's frame: its size in pixels and the plotting area's margins. */
+typedef struct {
+    int width, height, left, right, top, bottom;
+} frame;
+
+static double px(const frame *fr, const axis *a, double x)
+{
+    return fr->left + (x - a->lo) / (a->hi - a->lo) * (fr->width - fr->left - fr->right);
+}
+
+static double py(const frame *fr, const axis *a, double y)
+{
+    return fr->height - fr->bottom -
+           (y - a->lo) / (a->hi - a->lo) * (fr->height - fr->top - fr->bottom);
+}
+
+/* The axes: the box, the ticks with their labels, grid lines, and the axes' names. */
+static void put_axes(FILE *f, const frame *fr, const axis *ax, const axis *ay,
+                     const char *xname, const char *yname)
+{
+    const double x0 = fr->left, x1 = fr->width - fr->right;
+    const double y0 = fr->height - fr->bottom, y1 = fr->top;
+    const long nx = lround((ax->hi - ax->lo) / ax->step), ny = lround((ay->hi - ay->lo) / ay->step);
+    for (long k = 0; k <= nx; k++) {
+        const double v = ax->lo + (double)k * ax->step, x = px(fr, ax, v);
+        fprintf(f, "<line x1=\"%.1f\" y1=\"%g\" x2=\"%.1f\" y2=\"%g\" stroke=\"#e4e4e4\"/>"
+                   "<text x=\"%.1f\" y=\"%g\" text-anchor=\"middle\">%.4g</text>\n",
+                x, y0, x, y1, x, y0 + 14, fabs(v) < 1e-9 * ax->step ? 0.0 : v);
+    }
+    for (long k = 0; k <= ny; k++) {
+        const double v = ay->lo + (double)k * ay->step, y = py(fr, ay, v);
+        fprintf(f, "<line x1=\"%g\" y1=\"%.1f\" x2=\"%g\" y2=\"%.1f\" stroke=\"#e4e4e4\"/>"
+                   "<text x=\"%g\" y=\"%.1f\" text-anchor=\"end\">%.4g</text>\n",
+                x0, y, x1, y, x0 - 4, y + 4, fabs(v) < 1e-9 * ay->step ? 0.0 : v);
+    }
+    fprintf(f, "<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" "
+               "stroke=\"#444\"/>\n", x0, y1, x1 - x0, y0 - y1);
+    fprintf(f, "<text x=\"%g\" y=\"%d\" text-anchor=\"middle\">", (x0 + x1) / 2, fr->height - 4);
+    put_text(f, xname);
+    fprintf(f, "</text>\n<text x=\"12\" y=\"%g\" text-anchor=\"middle\" "
+               "transform=\"rotate(-90 12 %g)\">", (y0 + y1) / 2, (y0 + y1) / 2);
+    put_text(f, yname);
+    fputs("</text>\n", f);
+}
+
+/* The attribute name="..." of column k of t's rows, each number as put_number writes it. */
+static void put_column(FILE *f, const char *name, const sph_csv_table *t, int k)
+{
+    fprintf(f, "\n %s=\"", name);
+    for (long r = 0; r < t->nrows; r++) {
+        if (r)
+            fputc(' ', f);
+        put_number(f, t->v[(size_t)r * (size_t)t->ncols + (size_t)k]);
+    }
+    fputc('"', f);
+}
+
+/* A line plot of table t (file: its name in the output folder, NULL: a table of the run's
+ * memory, the <svg> without data-csv): column 0, the time, along x,
+ * columns cols[0..ncols) each a line, named in a legend on the right. */
+static void line_plot(FILE *f, const char *file, const sph_csv_table *t, const int *cols,
+                      int ncols, const char *yname, int width, int height)
+{
+    int legend = 0; /* (the longest name) */
+    for (int c = 0; c < ncols; c++)
+        legend = (int)fmax(legend, (double)strlen(t->names[cols[c]]));
+    const frame fr = {width, height, 84, 48 + 7 * legend, 12, 36};
+    const long n = t->nrows, stride = t->stride > 1 ? t->stride : 1;
+    double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
+    for (long r = 0; r < n; r++) {
+        const double *row = t->v + (size_t)r * (size_t)t->ncols;
+        if (isfinite(row[0]))
+            xlo = fmin(xlo, row[0]), xhi = fmax(xhi, row[0]);
+        for (int c = 0; c < ncols; c++)
+            if (isfinite(row[cols[c]]))
+                ylo = fmin(ylo, row[cols[c]]), yhi = fmax(yhi, row[cols[c]]);
+    }
+    const axis ax = nice_axis(xlo, xhi), ay = nice_axis(ylo, yhi);
+    fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
+               "viewBox=\"0 0 %d %d\"", width, height, width, height);
+    if (file) {
+        fputs(" data-csv=\"", f);
+        put_text(f, file);
+        fputc('"', f);
+    }
+    fprintf(f, " data-stride=\"%ld\" data-rows=\"%ld\">\n", stride, t->total);
+    put_axes(f, &fr, &ax, &ay, "time (s)", yname);
+    for (int c = 0; c < ncols; c++) {
+        const int k = cols[c];
+        const int total = !strcmp(t->names[k], "total");
+        const char *color = total ? "#000" : COLORS[c % NCOLORS];
+        fputs("<polyline fill=\"none\" data-column=\"", f);
+        put_text(f, t->names[k]);
+        fprintf(f, "\" stroke=\"%s\" stroke-width=\"%s\"", color, total ? "2" : "1.3");
+        put_column(f, "data-x", t, 0);
+        put_column(f, "data-y", t, k);
+        fputs("\n points=\"", f);
+        int first = 1; /* (a non-finite value is left out) */
+        for (long r = 0; r < n; r++) {
+            const double *row = t->v + (size_t)r * (size_t)t->ncols;
+            if (isfinite(row[0]) && isfinite(row[k])) {
+                fprintf(f, "%s%.1f,%.1f", first ? "" : " ", px(&fr, &ax, row[0]),
+                        py(&fr, &ay, row[k]));
+                first = 0;
+            }
+        }
+        fputs("\"/>\n", f);
+        const int ly = fr.top + 8 + 16 * c, lx = width - fr.right + 10;
+        fprintf(f, "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"%s\" "
+                   "stroke-width=\"2\"/><text x=\"%d\" y=\"%d\">", lx, ly, lx + 20, ly, color,
+                lx + 26, ly + 4);
+        put_text(f, t->names[k]);
+        fputs("</text>\n", f);
+    }
+    fputs("</svg>\n", f);
+    if (stride > 1)
+        fprintf(f, "<p class=\"note\">%ld rows: one in %ld drawn, and the last.</p>\n",
+                t->total, stride);
+    else if (n == 0)
+        fputs("<p class=\"note\">No rows yet.</p>\n", f);
+}
+
+/* ------------------------------------------------------------------ the page */
+
+static const char STYLE[] =
+    "body{font-family:sans-serif;margin:1.5em;color:#222}"
+    "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 8px;"
+    "text-align:right}td.text{text-align:left;font-family:monospace}"
+    ".pass{color:#1a7f37}.fail{color:#c62828;font-weight:bold}"
+    ".verdict{font-size:1.2em;padding:6px 10px;border-radius:4px;display:inline-block}"
+    ".finished{background:#e6f4ea}.running{background:#e8f0fe}"
+    ".unstable,.failed{background:#fdecea}.stopped{background:#fff4e5}"
+    "svg text{font-size:11px;font-family:sans-serif}.note{color:#666;font-size:0.9em}"
+    ".planes svg{margin-right:1em}";
+
+static void put_verdict(FILE *f, const sph_report *r)
+{
+    fprintf(f, "<p id=\"verdict\" class=\"verdict %s\">", r->status);
+    if (!strcmp(r->status, "running"))
+        fprintf(f, "Running: t = %g s of %g s, step %ld (this page is written again at the "
+                   "end).", r->time, r->end_time, r->steps);
+    else if (!strcmp(r->status, "finished"))
+        fprintf(f, "Finished: t = %g s, %ld steps.", r->time, r->steps);
+    else if (!strcmp(r->status, "unstable"))
+        fputs("Unstable: ", f);
+    else if (!strcmp(r->status, "stopped"))
+        fprintf(f, "Stopped by %s at t = %g s (step %ld).", r->message ? r->message : "a signal",
+                r->time, r->steps);
+    else
+        fprintf(f, "Failed at t = %g s (step %ld): an output could not be written.", r->time,
+                r->steps);
+    if (r->message && !strcmp(r->status, "unstable"))
+        put_text(f, r->message);
+    fputs("</p>\n", f);
+    if (isfinite(r->wall_time))
+        fprintf(f, "<p>Wall time %.3g s.</p>\n", r->wall_time);
+}
+
+static void put_cell(FILE *f, double v, double scale)
+{
+    if (isfinite(v))
+        fprintf(f, "<td>%.4g</td>", scale * v);
+    else
+        fputs("<td></td>", f);
+}
+
+static void put_expectations(FILE *f, const sph_report *r)
+{
+    if (!r->nexpects)
+        return;
+    fputs("<h2>Expectations</h2>\n<table id=\"expectations\">\n<tr><th>expectation</th>"
+          "<th>value</th><th>expected</th><th>max |error|</th><th>relative error %</th>"
+          "<th>tolerance %</th><th>result</th></tr>\n", f);
+    for (int k = 0; k < r->nexpects; k++) {
+        const sph_report_expect *x = &r->expects[k];
+        fputs("<tr><td class=\"text\">", f);
+        put_text(f, x->text);
+        fputs("</td>", f);
+        put_cell(f, x->value, 1);
+        put_cell(f, x->expected, 1);
+        put_cell(f, x->max_abs_error, 1);
+        put_cell(f, x->relative_error, 100);
+        put_cell(f, x->tolerance >= 0 ? x->tolerance : NAN, 100);
+        fprintf(f, "<td class=\"%s\">%s</td></tr>\n", x->pass ? "pass" : "fail",
+                x->pass ? "pass" : "FAIL");
+    }
+    fputs("</table>\n", f);
+}
+
+static void put_energies(FILE *f, const sph_csv_table *t)
+{
+    fputs("<h2>Energies</h2>\n", f);
+    int *cols = malloc(((size_t)t->ncols + 1) * sizeof *cols), n = 0;
+    for (int k = 1; cols && k < t->ncols; k++)
+        cols[n++] = k;
+    line_plot(f, "energies.csv", t, cols, n, "energy", 760, 380);
+    free(cols);
+}
+
+static void put_time_steps(FILE *f, const sph_csv_table *t)
+{
+    const int col = 1;
+    fputs("<h2>Time step</h2>\n<p class=\"note\">The mean time step of each output interval "
+          "(its time over its steps), since this process started the run.</p>\n", f);
+    line_plot(f, NULL, t, &col, 1, "time step (s)", 560, 260);
+}
+
+static void put_plane(FILE *f, const char *name, const sph_csv_table *t, int dim)
+{
+    char file[300];
+    snprintf(file, sizeof file, "measure_%s.csv", name);
+    fputs("<h3>", f);
+    put_text(f, name);
+    fputs("</h3>\n<div class=\"planes\">\n", f);
+    for (int what = 0; what < 2; what++) { /* displacements, then forces */
+        int cols[3], n = 0;
+        for (int k = 1; k < t->ncols; k++) {
+            const char *c = t->names[k];
+            if (n < 3 && c[0] == (what ? 'f' : 'u') && !(dim == 2 && c[1] == 'y'))
+                cols[n++] = k;
+        }
+        line_plot(f, file, t, cols, n, what ? "force" : "displacement (m)",
+                  420, 240);
+    }
+    fputs("</div>\n", f);
+}
+
+int sph_report_write(const char *path, const sph_report *r)
+{
+    FILE *f = sph_open_whole(path);
+    if (!f) {
+        sph_error("cannot write %s: %s", path, strerror(errno));
+        return -1;
+    }
+    fputs("<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" lang=\"en\">\n"
+          "<head>\n<meta charset=\"utf-8\"/>\n<title>", f);
+    put_text(f, r->model);
+    fprintf(f, " — run report</title>\n<style>%s</style>\n</head>\n<body>\n<h1>", STYLE);
+    put_text(f, r->model);
+    fputs("</h1>\n", f);
+    put_verdict(f, r);
+    put_expectations(f, r);
+    if (r->energies)
+        put_energies(f, r->energies);
+    if (r->time_steps)
+        put_time_steps(f, r->time_steps);
+    if (r->nplanes)
+        fputs("<h2>Measurement planes</h2>\n", f);
+    for (int q = 0; q < r->nplanes; q++)
+        put_plane(f, r->plane_names[q], &r->planes[q], r->dim);
+    fputs("<p class=\"note\">The numbers in full: summary.json and the CSV files beside "
+          "this page.</p>\n</body>\n</html>\n", f);
+    const int err = sph_close_whole(f, path);
+    if (err)
+        sph_error("cannot write %s: %s", path, strerror(err));
+    return err ? -1 : 0;
+}

@@ -1,0 +1,40 @@
+/* report.h — summary.html, a run's report page (report.c). */
+#ifndef SPHRT_IO_REPORT_H
+#define SPHRT_IO_REPORT_H
+
+#include "csv.h"
+
+/* The most rows of a table the page draws (sph_csv_read, sph_csv_table_add: and the last). */
+enum { SPH_REPORT_POINTS = 2000 };
+
+/* An expectation of the model as evaluated (NAN where it has no such number). */
+typedef struct {
+    const char *kind;      /* "period", "amplitude", "energy", "reference" */
+    const char *text;      /* the model's line */
+    double value, expected, max_abs_error, relative_error;
+    double tolerance;      /* < 0: none (reported, never failed) */
+    int pass;
+} sph_report_expect;
+
+/* What the page shows: how the run stands, its expectations, and its CSV files as plots
+ * (column 0 the time, the others a line each; every row of a table is drawn). */
+typedef struct {
+    const char *model;
+    const char *status;    /* "running", "finished", "unstable", "stopped", "failed" */
+    const char *message;   /* unstable: where and how; stopped: the signal; NULL: none */
+    double time, end_time, wall_time; /* wall_time NAN: not known yet */
+    long steps;
+    const sph_report_expect *expects;
+    int nexpects;
+    const sph_csv_table *energies; /* NULL: none */
+    const sph_csv_table *time_steps; /* time, mean time step of each output interval; NULL */
+    const sph_csv_table *planes;   /* nplanes measurement planes, */
+    const char *const *plane_names; /* their names */
+    int nplanes;
+    int dim;               /* 2: the planes' uy and fy (zero) are not drawn */
+} sph_report;
+
+/* The page at path, written whole (sph_open_whole); 0, or -1 after reporting. */
+int sph_report_write(const char *path, const sph_report *r);
+
+#endif

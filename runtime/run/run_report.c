@@ -1,0 +1,48 @@
+/* run_report.c — the run's report page, summary.html (io/report.c), beside summary.json and
+ * written with it: how the run stands, its expectations, and its CSV files read back from
+ * the output folder (all their rows, those of the run before a checkpoint it resumed from
+ * included). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "run_state.h"
+#include "io/report.h"
+
+int sph_run_report(const run_state *r, const char *status, const char *message, double wall,
+                   const sph_report_expect *expects, int nexpects)
+{
+    const sph_model *m = r->m;
+    sph_csv_table energies;
+    char *path = joinf("%s/energies.csv%s", r->opt.out_dir, "");
+    const int have_energies = !sph_csv_read(path, &energies, SPH_REPORT_POINTS);
+    free(path);
+    sph_csv_table *planes = calloc((size_t)r->nmeasures + 1, sizeof *planes);
+    const char **names = calloc((size_t)r->nmeasures + 1, sizeof *names);
+    int np = 0;
+    for (int i = 0; planes && names && i < m->nbodies; i++)
+        for (int k = 0; k < m->bodies[i].nmeasures; k++) {
+            path = joinf("%s/measure_%s.csv", r->opt.out_dir, m->bodies[i].measures[k].name);
+            if (!sph_csv_read(path, &planes[np], SPH_REPORT_POINTS))
+                names[np++] = m->bodies[i].measures[k].name;
+            free(path);
+        }
+    const sph_report page = {
+        .model = m->name, .status = status, .message = message,
+        .time = r->sim.t, .end_time = r->t_end, .wall_time = wall, .steps = r->sim.step,
+        .expects = expects, .nexpects = nexpects,
+        .energies = have_energies ? &energies : NULL,
+        .time_steps = r->time_steps.nrows ? &r->time_steps : NULL,
+        .planes = planes, .plane_names = names, .nplanes = np, .dim = m->dim,
+    };
+    path = joinf("%s/summary.html%s", r->opt.out_dir, "");
+    const int bad = sph_report_write(path, &page);
+    free(path);
+    if (have_energies)
+        sph_csv_table_free(&energies);
+    for (int q = 0; q < np; q++)
+        sph_csv_table_free(&planes[q]);
+    free(planes);
+    free(names);
+    return bad;
+}

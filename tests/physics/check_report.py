@@ -1,0 +1,158 @@
+"""The report page, summary.html, against the files it reports (Python's standard library only).
+
+    check_report.py PROGRAM OUT [ARGS...]
+
+runs PROGRAM --quiet --overwrite --out OUT ARGS (it must exit 0), then checks OUT/summary.html:
+it is well-formed XML (XHTML); its verdict says how summary.json says the run ended; its
+table has each expectation of summary.json with its result and relative error; every plotted
+line's values (data-x, data-y: the rows data-stride picks) are those of its CSV file, row by
+row, and it draws one point for each finite pair; energies.csv has a plot with every column,
+each measure_*.csv one.  Then it checks that the comparison itself fails on a page with one
+number changed.
+"""
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+
+XHTML = "{http://www.w3.org/1999/xhtml}"
+SVG = "{http://www.w3.org/2000/svg}"
+
+
+def same(a, b):
+    return a == b or (math.isnan(a) and math.isnan(b))
+
+
+def drawn_rows(n, stride):
+    rows = list(range(0, n, stride))
+    if n and rows[-1] != n - 1:
+        rows.append(n - 1)
+    return rows
+
+
+def check_plots(root, out):
+    """The errors of the page's plots against the CSV files of folder out."""
+    errors, plotted = [], {}
+    for svg in root.iter(SVG + "svg"):
+        name = svg.get("data-csv")
+        if name is None:  # (the time step: checked in main)
+            continue
+        with open(os.path.join(out, name), newline="") as f:
+            table = list(csv.reader(f))
+        header, rows = table[0], [[float(v) for v in r] for r in table[1:]]
+        if int(svg.get("data-rows")) != len(rows):
+            errors.append(f"{name}: the page says {svg.get('data-rows')} rows, the file has "
+                          f"{len(rows)}")
+        picked = drawn_rows(len(rows), int(svg.get("data-stride")))
+        for line in svg.iter(SVG + "polyline"):
+            column = line.get("data-column")
+            if column not in header:
+                errors.append(f"{name}: no column {column}")
+                continue
+            k = header.index(column)
+            plotted.setdefault(name, set()).add(column)
+            xs = [float(v) for v in line.get("data-x").split()]
+            ys = [float(v) for v in line.get("data-y").split()]
+            if len(xs) != len(picked) or len(ys) != len(picked):
+                errors.append(f"{name} {column}: {len(xs)} x and {len(ys)} y values for "
+                              f"{len(picked)} rows drawn")
+                continue
+            for x, y, r in zip(xs, ys, picked):
+                if not same(x, rows[r][0]) or not same(y, rows[r][k]):
+                    errors.append(f"{name} {column}: row {r + 1} plotted as ({x}, {y}), the "
+                                  f"file has ({rows[r][0]}, {rows[r][k]})")
+                    break
+            finite = sum(math.isfinite(x) and math.isfinite(y) for x, y in zip(xs, ys))
+            if len(line.get("points").split()) != finite:
+                errors.append(f"{name} {column}: {len(line.get('points').split())} points "
+                              f"drawn for {finite} finite pairs")
+    return errors, plotted
+
+
+def main():
+    program, out, args = sys.argv[1], sys.argv[2], sys.argv[3:]
+    run = subprocess.run([program, "--quiet", "--overwrite", "--out", out] + args,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if run.returncode != 0:
+        sys.exit(f"{program} exited {run.returncode}:\n{run.stdout}")
+    page = os.path.join(out, "summary.html")
+    with open(page, encoding="utf-8") as f:
+        text = f.read()
+    root = ET.fromstring(text)
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    errors = []
+
+    verdict = next(e for e in root.iter(XHTML + "p") if e.get("id") == "verdict")
+    words = {"finished": "Finished", "unstable": "Unstable", "stopped": "Stopped",
+             "running": "Running", "failed": "Failed"}
+    if not "".join(verdict.itertext()).startswith(words[summary["status"]]):
+        errors.append(f"the verdict '{''.join(verdict.itertext())}' is not "
+                      f"'{summary['status']}'")
+
+    expects = summary.get("expectations", [])
+    table = [e for e in root.iter(XHTML + "table") if e.get("id") == "expectations"]
+    rows = list(table[0].iter(XHTML + "tr"))[1:] if table else []
+    if len(rows) != len(expects):
+        errors.append(f"{len(rows)} expectations on the page, {len(expects)} in summary.json")
+    for row, x in zip(rows, expects):
+        cells = ["".join(c.itertext()) for c in row.iter(XHTML + "td")]
+        if cells[0] != x["model"] or cells[-1] != ("pass" if x["pass"] else "FAIL"):
+            errors.append(f"expectation row {cells} is not {x['model']} ({x['pass']})")
+        error = x["relative_error"]
+        if error is not None and float(cells[4]) != float(f"{100 * error:.4g}"):
+            errors.append(f"{x['model']}: relative error {cells[4]} % on the page, "
+                          f"{100 * error} % in summary.json")
+
+    plot_errors, plotted = check_plots(root, out)
+    errors += plot_errors
+    with open(os.path.join(out, "energies.csv")) as f:
+        columns = set(f.readline().strip().split(",")[1:])
+    if plotted.get("energies.csv") != columns:
+        errors.append(f"energies.csv's columns {sorted(columns)}, plotted "
+                      f"{sorted(plotted.get('energies.csv', []))}")
+    for name in os.listdir(out):
+        if name.startswith("measure_") and name.endswith(".csv") and name not in plotted:
+            errors.append(f"no plot of {name}")
+
+    # The mean time step of each output interval: at the output times after the first, each
+    # no longer than its interval.
+    steps = [s for s in root.iter(SVG + "svg") if s.get("data-csv") is None]
+    times = [float(r.split(",")[0]) for r in open(os.path.join(out, "energies.csv"))
+             .read().split()[1:]]
+    if len(steps) != 1:
+        errors.append(f"{len(steps)} time step plots (expected 1)")
+    else:
+        line = next(steps[0].iter(SVG + "polyline"))
+        xs = [float(v) for v in line.get("data-x").split()]
+        ys = [float(v) for v in line.get("data-y").split()]
+        want = times[1:][::int(steps[0].get("data-stride"))]
+        if len(times) > 1 and want[-1] != times[-1]:
+            want.append(times[-1])
+        if len(xs) != len(want) or any(abs(x - t) > 1e-9 * max(abs(t), 1e-30)
+                                       for x, t in zip(xs, want)):
+            errors.append(f"the time step is plotted at {xs[:5]}..., the outputs are at "
+                          f"{want[:5]}...")
+        elif steps[0].get("data-stride") == "1" and not all(
+                0 < y <= (b - a) * (1 + 1e-9) for y, a, b in zip(ys, times, times[1:])):
+            errors.append(f"a mean time step is not within its output interval: {ys[:5]}...")
+
+    # The comparison can fail: one plotted number changed is found.
+    line = next(root.iter(SVG + "polyline"))
+    ys = line.get("data-y").split()
+    ys[-1] = repr(float(ys[-1]) * 1.001 + 1e-300)
+    line.set("data-y", " ".join(ys))
+    if not check_plots(root, out)[0]:
+        errors.append("a page with a plotted number changed passes the check")
+
+    if errors:
+        sys.exit("summary.html:\n  " + "\n  ".join(errors))
+    print(f"summary.html: {summary['status']}, {len(expects)} expectations, "
+          f"{sum(len(v) for v in plotted.values())} lines in {len(plotted)} files match")
+
+
+if __name__ == "__main__":
+    main()
