@@ -17,6 +17,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "expect.h"
 #include "main.h"
@@ -73,12 +74,30 @@ static double dt_floor(const run_state *r)
 /* A run that gets SIGTERM (a batch system's notice) or SIGINT stops after the step under
  * way (on the device: after the batch of steps queued, at most 20), writes summary.json
  * ("stopped") and, with checkpoints, a checkpoint, and exits (SPH_EXIT_STOPPED with a
- * checkpoint, SPH_EXIT_SIGNALLED without); a second signal ends it at once. */
+ * checkpoint, SPH_EXIT_SIGNALLED without); a second signal ends it at once.  One notice
+ * often comes twice within microseconds: `timeout` and batch systems signal the process and
+ * then its process group, and a process that takes the first at once on another core sees
+ * the second as a new one.  A signal within STOP_REPEAT_SECONDS of the first is that
+ * notice again and changes nothing. */
+enum { STOP_REPEAT_SECONDS = 1 };
 static volatile sig_atomic_t stop_signal;
+static struct timespec stop_when; /* when the first came (CLOCK_MONOTONIC) */
 
 static void on_stop_signal(int sig)
 {
-    stop_signal = sig;
+    struct timespec now; /* (clock_gettime, signal and raise are async-signal-safe) */
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    if (!stop_signal) {
+        stop_when = now;
+        stop_signal = sig;
+        return;
+    }
+    const double since = (double)(now.tv_sec - stop_when.tv_sec) +
+                         1e-9 * (double)(now.tv_nsec - stop_when.tv_nsec);
+    if (since < STOP_REPEAT_SECONDS)
+        return;
+    signal(sig, SIG_DFL); /* a second notice: the default action, at once */
+    raise(sig);
 }
 
 static const char *stop_name(void)
@@ -91,8 +110,9 @@ static void catch_stop_signals(void)
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_stop_signal;
-    sa.sa_flags = SA_RESETHAND; /* the second one: the default action */
     sigemptyset(&sa.sa_mask);
+    sigaddset(&sa.sa_mask, SIGTERM); /* one handler at a time */
+    sigaddset(&sa.sa_mask, SIGINT);
     sigaction(SIGTERM, &sa, NULL);
     sigaction(SIGINT, &sa, NULL);
 }
