@@ -578,12 +578,8 @@ static int not_held(const sph_ckpt *c, const sph_body *b, const int64_t *id,
     long missing = 0;
     for (int q = k; q < b->nown; q++)
         missing += !seen[q];
-    const double *x = b->X + (size_t)k * b->dim;
     char at[96];
-    if (b->dim == 3)
-        snprintf(at, sizeof at, "x = %g, y = %g, z = %g", x[0], x[1], x[2]);
-    else
-        snprintf(at, sizeof at, "x = %g, z = %g", x[0], x[1]);
+    sph_reference_position(b, k, at, sizeof at);
     sph_error("cannot restart from %s: no piece of it holds particle %lld of body '%s' "
               "(reference position %s; %ld missing in all): it is damaged", c->path,
               (long long)id[k], b->desc->name, at, missing);

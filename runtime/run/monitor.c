@@ -86,15 +86,15 @@ static int fastest(const sph_body *b, double *speed)
 /* "step S, t = T s, body 'B', particle P (reference position ...)" at the start of msg. */
 int sph_monitor_where(char *msg, size_t len, const sph_sim *s, const sph_body *b, int particle)
 {
-    const double *X = b->X + (size_t)particle * b->dim;
-    char id[48]; /* on many processes the global id (partition.h), the same on any number */
+    char id[48], at[96]; /* on many processes the global id (partition.h), the same on any number */
     if (b->gid)
         snprintf(id, sizeof id, "global id %lld", (long long)b->gid[particle]);
     else
         snprintf(id, sizeof id, "%d", particle);
+    sph_reference_position(b, particle, at, sizeof at);
     return snprintf(msg, len, "step %ld, t = %.6g s, body '%s', particle %s (reference position "
-                              "x = %g, %s = %g)",
-                    s->step, s->t, b->desc->name, id, X[0], b->dim == 2 ? "z" : "y", X[1]);
+                              "%s)",
+                    s->step, s->t, b->desc->name, id, at);
 }
 
 /* On many processes: the lowest process where `found`, whose msg every process then gets;

@@ -583,12 +583,8 @@ static int too_few_neighbours(const sph_body *b, const sph_body_desc *d, int nsi
 {
     if (d->fracture && d->fracture->nnotches)
         return 0;
-    const double *x = b->X + (size_t)first * b->dim;
     char at[96];
-    if (b->dim == 3)
-        snprintf(at, sizeof at, "(%g, %g, %g)", x[0], x[1], x[2]);
-    else
-        snprintf(at, sizeof at, "(x %g, z %g)", x[0], x[1]);
+    sph_reference_position(b, first, at, sizeof at);
     sph_error("body '%s': %d of its %d particles have too few neighbours for the kernel "
               "correction (the %d of particle %d at %s do not span %d dimensions): the body is "
               "too small or too thin for its spacing %g; make the spacing smaller (dp, refine) "

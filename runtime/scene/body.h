@@ -5,6 +5,7 @@
 #define SPHRT_SCENE_BODY_H
 
 #include <stdint.h>
+#include <stdio.h>
 
 #include "body_desc.h"
 #include "pass_types.h"
@@ -182,6 +183,16 @@ static inline void sph_step_sums_set(sph_body *b, const double x[SPH_STEP_NSUMS]
 #define SPH_STEP_SUM_SET(member, ...) b->member = x[SPH_STEP_SUM_##member];
     SPH_STEP_SUMS(SPH_STEP_SUM_SET)
 #undef SPH_STEP_SUM_SET
+}
+
+/* Particle i's reference position for a message: "x = X, z = Z" (2D, the x-z plane) or
+ * "x = X, y = Y, z = Z" (3D), into buf; returns what snprintf returns. */
+static inline int sph_reference_position(const sph_body *b, int i, char *buf, size_t len)
+{
+    const double *x = b->X + (size_t)i * b->dim;
+    if (b->dim == 3)
+        return snprintf(buf, len, "x = %g, y = %g, z = %g", x[0], x[1], x[2]);
+    return snprintf(buf, len, "x = %g, z = %g", x[0], x[1]);
 }
 
 /* The first k < n with a[k stride] >= v (n when none): a binary search of ascending values. */
