@@ -14,14 +14,21 @@
 
 #include "plan.h"
 
-/* "pair terms (hourglass, ...)": the settings whose terms B_pair_terms adds (why, of size n). */
-static const char *pair_terms(const BodyPlan *p, char *why, size_t n)
+/* "pair terms (hourglass, ...)": the settings whose terms B_pair_terms adds, which the
+ * blocks and the stencil do not call (they gather only the pair values of physics/pairs.c).
+ * One buffer: the phrase is printed before the next is asked for. */
+static const char *pair_terms(const BodyPlan *p)
 {
-    snprintf(why, n, "pair terms (");
+    static char why[160];
+    const char *sep = "pair terms (";
+    why[0] = 0;
     for (int k = 0; k < BODY_NSETTINGS; k++)
-        if (BODY_SETTING_ROWS[k].pair && (p->terms >> k & 1))
-            snprintf(why + strlen(why), n - strlen(why), "%s, ", BODY_SETTING_ROWS[k].keyword);
-    snprintf(why + strlen(why) - 2, n - strlen(why) + 2, ")");
+        if (BODY_SETTING_ROWS[k].pair && (p->terms >> k & 1)) {
+            snprintf(why + strlen(why), sizeof why - strlen(why), "%s%s", sep,
+                     BODY_SETTING_ROWS[k].keyword);
+            sep = ", ";
+        }
+    snprintf(why + strlen(why), sizeof why - strlen(why), ")");
     return why;
 }
 
@@ -42,20 +49,14 @@ const char *layout_momentum_blocks_refused(const Model *m, const BodyPlan *p)
         return "fracture";
     if (!p->viscosity)
         return "no viscosity (the blocks' break-even was measured with it)";
-    static char why[160]; /* the blocks copy only the pair values of physics/pairs.c */
-    if (p->pair_terms)
-        return pair_terms(p, why, sizeof why);
-    return NULL;
+    return p->pair_terms ? pair_terms(p) : NULL;
 }
 
 const char *layout_stencil_momentum_refused(const Model *m, const BodyPlan *p)
 {
     if (m->dim != 2)
         return "3D";
-    static char why[160];
-    if (p->pair_terms)
-        return pair_terms(p, why, sizeof why);
-    return NULL;
+    return p->pair_terms ? pair_terms(p) : NULL;
 }
 
 static void line(FILE *out, const char *pass, const char *layout, const char *why)

@@ -32,7 +32,7 @@
     X(measure, "measure", MEASURE, b->nmeasures > 0) /* measurement planes */                      \
     X(bc_fns, "bc_fns", BC_FNS, bcs_applied(b, BC_VELOCITY) + bcs_applied(b, BC_FORCE))            \
     X(symplectic, NULL, SYMPLECTIC, m->integrator == INTEGRATOR_SYMPLECTIC) /* else Verlet */      \
-    X(pair_terms, NULL, PAIR_TERMS, body_has_pair_terms(b)) /* any term of B_pair_terms */       \
+    X(pair_terms, NULL, PAIR_TERMS, plan_has_pair_terms(p)) /* any term of B_pair_terms */       \
     X(pair_v, NULL, PAIR_V, p->viscosity || p->pair_terms) /* pairs read v of a neighbour */    \
     X(dim3, NULL, DIM3, m->dim == 3) /* else 2D (plane strain) */                               \
     X(staged, NULL, STAGED, stress_staged(m, r, &p->law)) /* the CPU's stress pass by blocks */ \
@@ -89,6 +89,16 @@ typedef struct {
     int contact;        /* contact between the bodies (model_has_contact) */
     int fracture;       /* some body has phase-field fracture */
 } Plan;
+
+/* Whether a setting of body p switches on a pair term (BodyPlan.terms; a pair row of
+ * model/body_settings.h). */
+static inline int plan_has_pair_terms(const BodyPlan *p)
+{
+    for (int k = 0; k < BODY_NSETTINGS; k++)
+        if (BODY_SETTING_ROWS[k].pair && (p->terms >> k & 1))
+            return 1;
+    return 0;
+}
 
 /* Why the CPU's offset blocks cannot run body p's gradient or momentum pass, or the 2D
  * lattice stencil its momentum pass (a phrase for --dump=plan), or NULL where they can; the

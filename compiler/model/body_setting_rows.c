@@ -72,11 +72,3 @@ void body_settings_default(BodyModel *b)
             *body_setting_number(b, s) = s->def;
     }
 }
-
-int body_has_pair_terms(const BodyModel *b)
-{
-    for (int k = 0; k < BODY_NSETTINGS; k++)
-        if (BODY_SETTING_ROWS[k].pair && body_setting_value(b, &BODY_SETTING_ROWS[k]) != 0)
-            return 1;
-    return 0;
-}

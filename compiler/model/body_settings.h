@@ -13,7 +13,7 @@
  *   switch   a number that switches a term of the body's code on where nonzero: the template
  *            switch (//@if SWITCH) and key (@SWITCH@, its value), shown by --dump=plan as
  *            keyword=0|1; NULL: none;
- *   pair     1: that term is a pair term, called by B_pair_terms (templates/body_particle.c)
+ *   pair     1 (with a switch): that term is a pair term, called by B_pair_terms (templates/body_particle.c)
  *            in both targets' momentum passes (lower/layouts.c chooses the layouts that call it);
  *   what     the value in words, for errors ("the hourglass coefficient must lie in ...").
  *

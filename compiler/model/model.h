@@ -114,9 +114,6 @@ double *body_setting_number(BodyModel *b, const BodySetting *s);
 const double *body_setting_point(const BodyModel *b, const BodySetting *s);
 /* SET_POINT: the flag that it was given. */
 int *body_setting_given(BodyModel *b, const BodySetting *s);
-/* Whether some setting of b switches on a pair term. */
-int body_has_pair_terms(const BodyModel *b);
-
 
 typedef struct {
     ExpectKind kind;
