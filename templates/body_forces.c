@@ -84,6 +84,9 @@ static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
         @B@_pair_tensor(u + (size_t)j * D, ui, wtab[hk[p]], &t);
         @B@_tensor_add(&Ai, &t);
         @B@_tensor_add_to(A + (size_t)j * D * R, &t);
+//@if QUADRATIC
+        @B@_quad_gradient_pair(b->Aq, i, j, u, b->qtab + (size_t)hk[p] * @B@_QN);
+//@endif
     }
     @B@_tensor_add_to(A + (size_t)i * D * R, &Ai);
 //@if FRACTURE
@@ -199,6 +202,9 @@ static void @B@_gradient_pass(sph_body *b)
 //@if MPI
     b->par->wait(b, halo_in, nhalo_in);
     @B@_gradient_halo_pairs(b);
+//@endif
+//@if QUADRATIC
+    @B@_quad_fit(b);
 //@endif
 }
 
@@ -400,6 +406,9 @@ static void @B@_stress_pass(sph_body *b)
 #pragma omp parallel for schedule(static)
     for (int i0 = 0; i0 < n; i0 += @B@_BLOCK)
         @B@_stress_block(b, i0, n - i0 < @B@_BLOCK ? n - i0 : @B@_BLOCK);
+//@if QUADRATIC
+    @B@_quad_stress(b);
+//@endif
 }
 //@else
 static void @B@_stress_pass(sph_body *b)
@@ -430,6 +439,9 @@ SPH_IVDEP /* particle i reads and writes entry i of arrays that never overlap */
 //@endif
         }
     }
+//@if QUADRATIC
+    @B@_quad_stress(b);
+//@endif
 }
 //@endif
 
@@ -469,6 +481,14 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
         for (int c = 0; c < D; c++)
             f += (Qi[c] + Qj[c]) * w[c];
         f *= inv_rho;
+//@if QUADRATIC
+        {
+            sph_real fq[D] = {0};
+            @B@_quad_momentum(b, i, j, k, inv_rho, fq);
+            for (int r = 0; r < D; r++)
+                f[r] += fq[r];
+        }
+//@endif
 //@if VISCOSITY
         /* The viscosity of eq. 57-60 as @B@_viscosity_term (templates/physics/pairs.c, which
          * has its reasons), with a tensor's columns in short vectors: the viscous direction

@@ -162,6 +162,7 @@ static int scene_setting(Model *m, const Setting *s)
     static const char *const integrators[] = {"verlet", "symplectic"};
     static const char *const precisions[] = {"double", "single"};
     static const char *const timesteps[] = {"auto", "undeformed", "stretch"};
+    static const char *const gradients[] = {"linear", "quadratic"};
     int k;
     double v;
     if (!strcmp(s->key, "dimension")) {
@@ -196,6 +197,13 @@ static int scene_setting(Model *m, const Setting *s)
         if (scene_name(s, timesteps, 3, &k))
             return -1;
         m->dt_mode = (TimestepKind)k;
+        return 0;
+    }
+    if (!strcmp(s->key, "gradient")) {
+        if (scene_name(s, gradients, 2, &k))
+            return -1;
+        m->gradient = (GradientKind)k;
+        m->gradient_loc = s->loc;
         return 0;
     }
     if (!strcmp(s->key, "gravity"))

@@ -344,6 +344,13 @@ static const struct {
 int build_program(const Plan *plan, const Options *o, const Paths *paths)
 {
     const Model *m = plan->model;
+    if (m->gradient == GRADIENT_QUADRATIC && (o->target == TARGET_CUDA || o->mpi)) {
+        /* (its pair sums and halo are the CPU lists' so far: templates/body_quadratic.c) */
+        diag_error(m->gradient_loc, "'gradient quadratic' runs on the CPU target on one process; "
+                                    "%s needs 'gradient linear'",
+                   o->mpi ? "--mpi" : "--target cuda");
+        return -1;
+    }
     if (o->mpi && mpi_ready(m, o, paths))
         return -1;
     char dir[4096];

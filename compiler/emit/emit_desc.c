@@ -194,6 +194,8 @@ static void bodies_desc(Emitter *E)
             fputs("        .viscous = 1,\n", out);
         if (E->plans[i].crush)
             fputs("        .crush = 1,\n", out);
+        if (E->plans[i].quadratic)
+            fputs("        .quadratic = 1, /* the gradient exact for quadratic fields */\n", out);
         const int blocks = (E->plans[i].offset_blocks ? 1 : 0) | (E->plans[i].momentum_blocks ? 2 : 0);
         if (blocks && !strcmp(E->target->name, "cpu"))
             fprintf(out, "        .offset_blocks = %d, /* the pair passes' offset blocks */\n",

@@ -77,6 +77,7 @@ static const BodyPiece BODY_CPU[] = {
     {PIECE_LANES, "physics/pairs.c"},
     {PIECE_TEMPLATE, "body_pairs.c"},
     {PIECE_TEMPLATE, "body_stencil.c"},
+    {PIECE_TEMPLATE, "body_quadratic.c"},
     {PIECE_TEMPLATE, "body_forces.c"},
     {PIECE_BCS, NULL},
     {PIECE_TEMPLATE, "body_sums.c"},

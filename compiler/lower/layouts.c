@@ -32,12 +32,17 @@ static const char *pair_terms(const BodyPlan *p)
     return why;
 }
 
+/* (the quadratic fit's pair sums ride with the lists' pairs: templates/body_quadratic.c) */
+#define QUADRATIC "the quadratic gradient (its pair sums ride with the lists')"
+
 const char *layout_gradient_blocks_refused(const Model *m, const BodyPlan *p)
 {
     if (m->dim != 3)
         return "2D (the lattice stencil serves 2D)";
     if (p->fracture)
         return "fracture (the phase field's Laplacian rides with the lists' pairs)";
+    if (p->quadratic)
+        return QUADRATIC;
     return NULL;
 }
 
@@ -47,6 +52,8 @@ const char *layout_momentum_blocks_refused(const Model *m, const BodyPlan *p)
         return "2D (the lattice stencil serves 2D)";
     if (p->fracture)
         return "fracture";
+    if (p->quadratic)
+        return QUADRATIC;
     if (!p->viscosity)
         return "no viscosity (the blocks' break-even was measured with it)";
     return p->pair_terms ? pair_terms(p) : NULL;
@@ -56,6 +63,8 @@ const char *layout_stencil_momentum_refused(const Model *m, const BodyPlan *p)
 {
     if (m->dim != 2)
         return "3D";
+    if (p->quadratic)
+        return QUADRATIC;
     return p->pair_terms ? pair_terms(p) : NULL;
 }
 
@@ -74,7 +83,10 @@ static void line(FILE *out, const char *pass, const char *layout, const char *wh
 void layouts_dump(const Model *m, const BodyPlan *p, FILE *out)
 {
     if (m->dim == 2) {
-        line(out, "gradient", STENCIL, NULL);
+        if (p->quadratic)
+            line(out, "gradient", "half lists", QUADRATIC);
+        else
+            line(out, "gradient", STENCIL, NULL);
         const char *why = layout_stencil_momentum_refused(m, p);
         line(out, "momentum", why ? "half lists" : STENCIL, why);
         return;

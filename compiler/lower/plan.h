@@ -31,6 +31,7 @@
     X(crush, "crush", CRUSH, model_has_crush(m)) /* time step bound on compression */              \
     X(measure, "measure", MEASURE, b->nmeasures > 0) /* measurement planes */                      \
     X(bc_fns, "bc_fns", BC_FNS, bcs_applied(b, BC_VELOCITY) + bcs_applied(b, BC_FORCE))            \
+    X(quadratic, "quadratic", QUADRATIC, m->gradient == GRADIENT_QUADRATIC) /* body_quadratic.c */ \
     X(symplectic, NULL, SYMPLECTIC, m->integrator == INTEGRATOR_SYMPLECTIC) /* else Verlet */      \
     X(pair_terms, NULL, PAIR_TERMS, plan_has_pair_terms(p)) /* any term of B_pair_terms */       \
     X(pair_v, NULL, PAIR_V, p->viscosity || p->pair_terms) /* pairs read v of a neighbour */    \
@@ -61,7 +62,9 @@
     X(gc, GC, b->fracture.Gc, p->fracture)                                                         \
     X(eps0, EPS0, b->fracture.eps0, p->fracture)                                                   \
     X(slimit, SLIMIT, b->fracture.limit, p->fracture) /* s_l of eq. 63 */                          \
-    X(pf_a, PF_A, b->c0 * b->c0 / (2 * b->fracture.eps0), p->fracture) /* c^2 / (2 eps0) */
+    X(pf_a, PF_A, b->c0 * b->c0 / (2 * b->fracture.eps0), p->fracture) /* c^2 / (2 eps0) */ \
+    X(qlambda, QLAMBDA, b->lambda, p->quadratic) /* the strain-gradient term's moduli */           \
+    X(qmu, QMU, b->mu, p->quadratic)
 
 typedef struct {
 #define PLAN_MEMBER(member, name, sw, value) int member;

@@ -131,6 +131,9 @@ typedef enum { INTEGRATOR_VERLET = 0, INTEGRATOR_SYMPLECTIC = 1 } IntegratorKind
 /* `timestep`: eq. 65 follows the current spacing of compressed bodies where the Courant
  * number on it would exceed SPH_CFL_CURRENT (auto), always (stretch), or never (undeformed:
  * the paper's bound, on the undeformed spacing); docs/stability.md */
+/* The corrected gradient: eq. 63's, exact for linear fields, or the fit exact for quadratic
+ * ones with its strain-gradient quadrature (templates/body_quadratic.c). */
+typedef enum { GRADIENT_LINEAR = 0, GRADIENT_QUADRATIC = 1 } GradientKind;
 typedef enum { TIMESTEP_AUTO = 0, TIMESTEP_UNDEFORMED = 1, TIMESTEP_STRETCH = 2 } TimestepKind;
 #define SPH_CFL_CURRENT 0.4
 
@@ -144,6 +147,8 @@ typedef struct {
     IntegratorKind integrator;
     int single;           /* precision single: the pair passes' arrays in float */
     TimestepKind dt_mode; /* how eq. 65 sees compressed bodies (docs/stability.md) */
+    GradientKind gradient;
+    SrcLoc gradient_loc;  /* where the scene sets it (for the targets that refuse it) */
     double gravity[3];
     ConstDef *consts;
     int nconsts;

@@ -86,6 +86,9 @@ void model_dump(const Model *m, FILE *out)
             m->integrator == INTEGRATOR_VERLET ? "verlet" : "symplectic", m->cfl, m->dtmin, m->dt,
             m->t_end, m->t_out, m->gravity[0], m->gravity[1], m->gravity[2],
             m->single ? "single" : "double");
+    if (m->gradient == GRADIENT_QUADRATIC)
+        fputs("  gradient: quadratic (exact for quadratic fields, strain-gradient quadrature)\n",
+              out);
     if (model_has_contact(m))
         fprintf(out, "  contact between the bodies: stiffness multiplier %g\n", m->contact);
     if (m->t_checkpoint > 0)

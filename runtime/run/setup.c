@@ -20,6 +20,7 @@
 #include "pairs/neighbours.h"
 #include "pairs/notch.h"
 #include "pairs/offset_blocks.h"
+#include "pairs/quadratic.h"
 #include "pairs/stencil.h"
 #include "par/par.h"
 #include "scene/body.h"
@@ -135,6 +136,10 @@ static void allocate(sph_body *b)
     b->A = zalloc_lines(n * SPH_TENSOR_SIZE(D), sizeof *b->A);
     b->Cv = zalloc_lines(n * SPH_TENSOR_SIZE(D), sizeof *b->Cv);
     b->Cs = zalloc(n, sizeof *b->Cs);
+    if (b->desc->quadratic) {
+        b->Aq = zalloc_lines(n * D * SPH_QN(D), sizeof *b->Aq);
+        b->Qq = zalloc_lines(n * D * SPH_QN(D), sizeof *b->Qq);
+    }
     b->psi = zalloc(n, sizeof(double));
     b->sigma = zalloc(n * 6, sizeof(double));
     b->fix = zalloc(n, 1);
@@ -271,6 +276,29 @@ static void table_entry(sph_body *b, int k, int i, long p, sph_kernel_kind kerne
     b->htab[k] = (sph_real)(b->vol * sph_kernel_w(kernel, D, sqrt(r2), b->h) / (b->rho0 * r2));
     if (b->ltab) /* eq. 62: 2 V_j (r0 . grad W) / r0^2 = 2 V dW/dr / r */
         b->ltab[k] = (sph_real)(2 * f);
+    if (b->qtab) { /* the pair weight's monomials (pairs/quadratic.h; even in dX) */
+        double q[SPH_QN3];
+        sph_quad_monomials(D, dX, q);
+        for (int c = 0; c < SPH_QN(D); c++)
+            b->qtab[(size_t)k * SPH_QN(D) + c] = (sph_real)(-f * q[c]);
+    }
+}
+
+/* The quadratic gradient's moments (pairs/quadratic.h): M_i^{-1} per particle, which takes the
+ * linear correction's place, L = I (the stress pass's F = I + A L then reads the fit's
+ * gradient from A: templates/body_quadratic.c).  Particles with too few neighbours for a
+ * quadratic fit keep their L inside M_i^{-1}; the set-up says how many. */
+static void quadratic_moments(sph_body *b, sph_kernel_kind kernel)
+{
+    const int D = b->dim;
+    const int nlinear = sph_quadratic_moments(b->X, b->nown, D, b->nb_start, b->nb, kernel, b->h,
+                                              b->vol, b->L, &b->Mq);
+    for (int i = 0; i < b->nown; i++)
+        for (int k = 0; k < D * D; k++)
+            b->L[(size_t)i * D * D + k] = k % (D + 1) == 0 ? 1.0 : 0.0;
+    if (nlinear)
+        sph_note("body '%s': %d of %d particles have too few neighbours for the quadratic "
+                 "gradient and keep the linear one", b->desc->name, nlinear, b->nown);
 }
 
 /* Per-pair tables (see sphrt.h): one entry per distinct lattice offset, or one per pair
@@ -331,6 +359,8 @@ static void offset_tables(sph_body *b, sph_kernel_kind kernel)
     b->htab = zalloc((size_t)ntab, sizeof *b->htab);
     if (b->desc->fracture)
         b->ltab = zalloc((size_t)ntab, sizeof *b->ltab);
+    if (b->desc->quadratic)
+        b->qtab = zalloc((size_t)ntab * SPH_QN(D), sizeof *b->qtab);
     if (lattice) {
         for (int k = 0; k < ntab; k++)
             table_entry(b, k, first_i[k], first_p[k], kernel);
@@ -668,10 +698,13 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, doub
         return -1;
     SPH_TIMED("set-up: silent pairs", drop_silent_pairs(b, m->kernel));
     SPH_TIMED("set-up: offset tables", offset_tables(b, m->kernel));
+    if (d->quadratic)
+        SPH_TIMED("set-up: quadratic moments", quadratic_moments(b, m->kernel));
     SPH_TIMED("set-up: offset blocks", sph_offset_blocks_setup(b));
     SPH_TIMED("set-up: half lists and stripes", half_lists(b));
     SPH_TIMED("set-up: momentum blocks", sph_momentum_blocks_setup(b));
-    SPH_TIMED("set-up: lattice stencil", sph_stencil_setup(b));
+    if (!d->quadratic) /* (its runs sum the linear moments only) */
+        SPH_TIMED("set-up: lattice stencil", sph_stencil_setup(b));
     SPH_TIMED("set-up: arrays", allocate(b));
     SPH_TIMED("set-up: BC and plane selections", selections(b, d, t_end));
     if (d->fracture)
@@ -695,7 +728,7 @@ void sph_body_free(sph_body *b)
     free(b->nb_start), free(b->nb), free(b->nb_k), free(b->wtab), free(b->gtab), free(b->htab);
     free(b->hb_start), free(b->hb), free(b->hb_k), free(b->stripe), free(b->stripe_sum), free(b->A);
     free(b->s), free(b->sd), free(b->sdd), free(b->H), free(b->lap), free(b->sd_n);
-    free(b->ltab), free(b->state);
+    free(b->ltab), free(b->state), free(b->qtab), free(b->Aq), free(b->Qq), free(b->Mq);
     free(b->st_k), free(b->st_o), free(b->st_run);
     free(b->rest), free(b->rest_start), free(b->rest_j), free(b->rest_k);
     free(b->ob_start), free(b->ob), free(b->ob_u);

@@ -121,6 +121,15 @@ struct sph_body {
     long mb_pairs;
     sph_real *A;          /* n*SPH_TENSOR_SIZE(dim): sum_j (u_j - u_i) (x) w_ij, the pair part of
                            * eq. 53, row by row, rows padded like wtab (CPU only) */
+    /* The corrected gradient exact for quadratic fields (desc->quadratic; pairs/quadratic.h;
+     * CPU only, NULL otherwise).  qtab: ntab*SPH_QN(dim), the pair weight's monomial part
+     * -V_j (dW/dr / r) q(X_j - X_i) for each offset table entry (the same both ways); Mq:
+     * n*SPH_QM(dim)^2, each particle's inverse moment matrix; Aq: n*dim*SPH_QN(dim), the
+     * gradient pass's sum_j (u_j - u_i) (x) qtab, then the fit's second-derivative
+     * coefficients; Qq: n*dim*SPH_QN(dim), the stress's share the momentum pass contracts
+     * with qtab (templates/body_quadratic.c).  Particle i's at i*dim*SPH_QN(dim), row by row. */
+    sph_real *qtab, *Aq, *Qq;
+    double *Mq;
     /* Full lists (both directions) for device targets, whose threads each sum their own
      * particle's pairs, stored slot by slot: pair s of particle i (s < fb_count[i]) is
      * fb[s*n + i], so the threads of a warp read consecutive words.  fb_k is the offset table

@@ -69,6 +69,8 @@ typedef struct {
                                    reports */
     int crush;                  /* 1: the time step follows the current spacing where the body
                                    is compressed (sph_model.dt_lambda_on; lam2 below) */
+    int quadratic;              /* 1: the corrected gradient exact for quadratic fields, with
+                                   its strain-gradient quadrature (pairs/quadratic.h); CPU */
     int offset_blocks;          /* the CPU's pair passes by offset blocks where the body is a
                                    lattice (offset_blocks.c): bit 0 the gradient pass, bit 1
                                    the momentum pass; 0: the lists alone */
