@@ -54,11 +54,13 @@
 #include "pairs/gradients.h"  /* corrected kernel gradients */
 #include "pairs/stencil.h"    /* the lattice stencil */
 #include "pairs/offset_blocks.h" /* 3D offset blocks */
+#include "pairs/quadratic.h"  /* the gradient exact for quadratic fields */
 #include "contact/contact.h"  /* contact between bodies */
 #include "run/main.h"         /* sph_main */
 #include "run/setup.h"        /* a body's set-up, --whole-law */
 #include "run/sim.h"          /* the simulation without the program */
 #include "run/measure.h"      /* energies, measurements */
+#include "run/clamp.h"        /* a clamp by mirror images */
 #include "run/table.h"        /* reference solutions' tables */
 #include "run/time_step.h"    /* the time step, eq. 64-66 */
 

@@ -175,6 +175,9 @@ static void @B@_gradient_lists(sph_body *b)
 
 static void @B@_gradient_pass(sph_body *b)
 {
+//@if CLAMP
+    sph_clamp_images(b); /* the clamp's images move with their particles (run/clamp.c) */
+//@endif
 //@if MPI
     enum { D = @DIM@ };
     /* On many processes the halo's values are on their way while the pairs of own particles
@@ -409,6 +412,9 @@ static void @B@_stress_pass(sph_body *b)
 //@if QUADRATIC
     @B@_quad_stress(b);
 //@endif
+//@if CLAMP
+    sph_clamp_quiet(b);
+//@endif
 }
 //@else
 static void @B@_stress_pass(sph_body *b)
@@ -441,6 +447,9 @@ SPH_IVDEP /* particle i reads and writes entry i of arrays that never overlap */
     }
 //@if QUADRATIC
     @B@_quad_stress(b);
+//@endif
+//@if CLAMP
+    sph_clamp_quiet(b);
 //@endif
 }
 //@endif
@@ -802,6 +811,13 @@ static void @B@_momentum_pass(sph_body *b)
     for (int s = 0; s < b->nstripes; s++)
         visc_power += b->stripe_sum[s];
     b->visc_rate = -b->mass * visc_power; /* energy per second the viscosity dissipates */
+//@endif
+//@if CLAMP
+//@if GRAVITY
+    sph_clamp_reactions(b, @B@_gravity);
+//@else
+    sph_clamp_reactions(b, NULL);
+//@endif
 //@endif
 }
 

@@ -483,6 +483,36 @@ static int check_plane(const Model *m, const Setting *s, BodyModel *b)
     return 0;
 }
 
+/* `clamp P, N`: a point of the clamped plane and its normal, pointing into the body (in 2D
+ * in the x-z plane); the normal is stored as a unit vector. */
+static int check_clamp(const Model *m, const Setting *s, BodyModel *b)
+{
+    if (s->nvalues != 2) {
+        diag_error(s->loc, "'clamp' takes a point of the clamped plane and the plane's normal "
+                           "into the body: clamp [x, y, z], [nx, ny, nz]");
+        return -1;
+    }
+    if (check_vec3(m, s->values[0], "the clamp's point", b->clamp_p) ||
+        check_vec3(m, s->values[1], "the clamp's normal", b->clamp_n))
+        return -1;
+    if (m->dim == 2 && b->clamp_n[1] != 0) {
+        diag_error(s->values[1]->loc, "a 2D body's clamp has its normal in the x-z plane "
+                                      "(got y component %g)", b->clamp_n[1]);
+        return -1;
+    }
+    const double n = sqrt(b->clamp_n[0] * b->clamp_n[0] + b->clamp_n[1] * b->clamp_n[1] +
+                          b->clamp_n[2] * b->clamp_n[2]);
+    if (!(n > 0) || !isfinite(n)) {
+        diag_error(s->values[1]->loc, "the clamp's normal must be a nonzero vector");
+        return -1;
+    }
+    for (int c = 0; c < 3; c++)
+        b->clamp_n[c] /= n;
+    b->has_clamp = 1;
+    b->clamp_loc = s->loc;
+    return 0;
+}
+
 /* The plane of a 2D body with `plane` must cut every surface, prism and pyramid of it (the
  * others take any plane). */
 static int plane_cuts(const BodyModel *b)
@@ -510,6 +540,7 @@ static const struct {
 } OWN_SETTINGS[] = {
     {"viscosity", check_viscosity},
     {"plane", check_plane},
+    {"clamp", check_clamp},
 };
 
 /* Setting s of row `row` of the table (model/body_settings.h) into body b. */

@@ -351,6 +351,13 @@ int build_program(const Plan *plan, const Options *o, const Paths *paths)
                    o->mpi ? "--mpi" : "--target cuda");
         return -1;
     }
+    for (int i = 0; i < m->nbodies; i++)
+        if (m->bodies[i].has_clamp && (o->target == TARGET_CUDA || o->mpi)) {
+            diag_error(m->bodies[i].clamp_loc, "a body's 'clamp' runs on the CPU target on one "
+                                               "process; %s needs a velocity condition instead",
+                       o->mpi ? "--mpi" : "--target cuda");
+            return -1;
+        }
     if (o->mpi && mpi_ready(m, o, paths))
         return -1;
     char dir[4096];

@@ -194,6 +194,14 @@ static void bodies_desc(Emitter *E)
             fputs("        .viscous = 1,\n", out);
         if (E->plans[i].crush)
             fputs("        .crush = 1,\n", out);
+        if (b->has_clamp) {
+            fprintf(out, "        .clamp = 1,\n        .clamp_p = {%.17g, %.17g, %.17g},\n"
+                         "        .clamp_n = {%.17g, %.17g, %.17g},\n        .clamp_where = ",
+                    b->clamp_p[0], b->clamp_p[1], b->clamp_p[2], b->clamp_n[0], b->clamp_n[1],
+                    b->clamp_n[2]);
+            emit_where(out, b->clamp_loc);
+            fputs(",\n", out);
+        }
         if (E->plans[i].quadratic)
             fputs("        .quadratic = 1, /* the gradient exact for quadratic fields */\n", out);
         const int blocks = (E->plans[i].offset_blocks ? 1 : 0) | (E->plans[i].momentum_blocks ? 2 : 0);

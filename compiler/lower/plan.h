@@ -32,6 +32,7 @@
     X(measure, "measure", MEASURE, b->nmeasures > 0) /* measurement planes */                      \
     X(bc_fns, "bc_fns", BC_FNS, bcs_applied(b, BC_VELOCITY) + bcs_applied(b, BC_FORCE))            \
     X(quadratic, "quadratic", QUADRATIC, m->gradient == GRADIENT_QUADRATIC) /* body_quadratic.c */ \
+    X(clamp, NULL, CLAMP, b->has_clamp) /* a clamp by mirror images (runtime/run/clamp.c) */    \
     X(symplectic, NULL, SYMPLECTIC, m->integrator == INTEGRATOR_SYMPLECTIC) /* else Verlet */      \
     X(pair_terms, NULL, PAIR_TERMS, plan_has_pair_terms(p)) /* any term of B_pair_terms */       \
     X(pair_v, NULL, PAIR_V, p->viscosity || p->pair_terms) /* pairs read v of a neighbour */    \

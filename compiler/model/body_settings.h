@@ -35,7 +35,8 @@
     X(restitution, SET_NUMBER, 1, Q_RESTITUTION, NULL, 0, "the coefficient of restitution")       \
     X(friction, SET_NUMBER, 0, Q_FRICTION, NULL, 0, "the friction coefficient")                   \
     X(soundspeed, SET_NUMBER, 0, Q_SPEED, NULL, 0, "the sound speed") /* 0: eq. 59's */            \
-    X(plane, SET_OWN, 0, Q_COUNT, NULL, 0, "the y of the plane a 2D body's shapes are cut in")
+    X(plane, SET_OWN, 0, Q_COUNT, NULL, 0, "the y of the plane a 2D body's shapes are cut in")  \
+    X(clamp, SET_OWN, 0, Q_COUNT, NULL, 0, "a point of the clamped plane and its normal")
 
 typedef enum { SET_INT, SET_NUMBER, SET_POINT, SET_OWN } SettingForm;
 

@@ -91,6 +91,11 @@ typedef struct BodyModel {
     int has_plane;                 /* 2D: `plane y0`, the y of the plane the shapes are cut in */
     double plane;
     SrcLoc plane_loc;
+    /* `clamp P, N`: clamped on the plane through P with unit normal N into the body, by the
+     * mirror images of its particles (runtime/run/clamp.c) */
+    int has_clamp;
+    double clamp_p[3], clamp_n[3];
+    SrcLoc clamp_loc;
     const MaterialDef *law;
     double *law_args;              /* value of each law parameter, in law order */
     BcModel *bcs;

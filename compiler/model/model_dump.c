@@ -38,6 +38,9 @@ static void settings(FILE *out, const BodyModel *b)
             fprintf(out, " viscosity %g %g", b->beta1, b->beta2);
         else if (!strcmp(s->keyword, "plane") && b->has_plane)
             fprintf(out, " plane %g", b->plane);
+        else if (!strcmp(s->keyword, "clamp") && b->has_clamp)
+            fprintf(out, " clamp [%g %g %g] [%g %g %g]", b->clamp_p[0], b->clamp_p[1],
+                    b->clamp_p[2], b->clamp_n[0], b->clamp_n[1], b->clamp_n[2]);
     }
     fputs("\n", out);
 }

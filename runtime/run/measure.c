@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "measure.h"
+#include "clamp.h"
 #include "core/alloc.h"
 #include "core/defs.h"
 #include "core/exit_codes.h"
@@ -44,6 +45,7 @@ void sph_body_energies(const sph_body *b, double *strain, double *kinetic)
     for (int k = 0; k < nblocks; k++)
         es += part[2 * k], ek += part[2 * k + 1];
     free(part);
+    ek -= sph_clamp_image_v2(b); /* (a clamp's images are not material) */
     *strain = es * b->vol;
     *kinetic = 0.5 * b->mass * ek;
 }

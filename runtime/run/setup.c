@@ -22,6 +22,7 @@
 #include "pairs/offset_blocks.h"
 #include "pairs/quadratic.h"
 #include "pairs/stencil.h"
+#include "run/clamp.h"
 #include "par/par.h"
 #include "scene/body.h"
 #include "scene/body_desc.h"
@@ -684,6 +685,8 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, doub
     if (par->agree(check_size(b, b->n))) /* (with the halo, on many processes) */
         return -1;
     SPH_TIMED("set-up: particle order", order_particles(b));
+    if (d->clamp && sph_clamp_setup(b))
+        return -1;
     SPH_TIMED("set-up: neighbour search",
               sph_neighbours(b->X, b->n, b->dim, 2.0 * b->h, d->nbsrange, b->dx, &b->nb_start,
                              &b->nb));
@@ -729,6 +732,7 @@ void sph_body_free(sph_body *b)
     free(b->hb_start), free(b->hb), free(b->hb_k), free(b->stripe), free(b->stripe_sum), free(b->A);
     free(b->s), free(b->sd), free(b->sdd), free(b->H), free(b->lap), free(b->sd_n);
     free(b->ltab), free(b->state), free(b->qtab), free(b->Aq), free(b->Qq), free(b->Mq);
+    free(b->image), free(b->image_of);
     free(b->st_k), free(b->st_o), free(b->st_run);
     free(b->rest), free(b->rest_start), free(b->rest_j), free(b->rest_k);
     free(b->ob_start), free(b->ob), free(b->ob_u);

@@ -130,6 +130,9 @@ struct sph_body {
      * with qtab (templates/body_quadratic.c).  Particle i's at i*dim*SPH_QN(dim), row by row. */
     sph_real *qtab, *Aq, *Qq;
     double *Mq;
+    /* A clamp by mirror images (desc->clamp; run/clamp.c): particle image[k] behind the
+     * plane moves with minus particle image_of[k]'s displacement, k < nimages. */
+    int nimages, *image, *image_of;
     /* Full lists (both directions) for device targets, whose threads each sum their own
      * particle's pairs, stored slot by slot: pair s of particle i (s < fb_count[i]) is
      * fb[s*n + i], so the threads of a warp read consecutive words.  fb_k is the offset table

@@ -69,6 +69,11 @@ typedef struct {
                                    reports */
     int crush;                  /* 1: the time step follows the current spacing where the body
                                    is compressed (sph_model.dt_lambda_on; lam2 below) */
+    /* `clamp P, N`: clamped on the plane through clamp_p with unit normal clamp_n into the
+     * body, the particles behind it the mirror images of those in front (run/clamp.c) */
+    int clamp;
+    double clamp_p[3], clamp_n[3];
+    const char *clamp_where;    /* its model line, for messages */
     int quadratic;              /* 1: the corrected gradient exact for quadratic fields, with
                                    its strain-gradient quadrature (pairs/quadratic.h); CPU */
     int offset_blocks;          /* the CPU's pair passes by offset blocks where the body is a
