@@ -265,6 +265,15 @@ static int check_scene(Model *m, const Item *scene)
     }
     if (m->cfl > 1.0)
         diag_warning(scene->loc, "cfl %g is above 1: the run is likely to be unstable", m->cfl);
+    /* The quadratic fit's stiffest modes, at a corner, are about 2.5 times as fast as eq. 63's
+     * (bench/bending/diagnose): stable up to cfl 0.35 in 3D and 0.4 in 2D when measured. */
+    const double cfl_quadratic = m->dim == 3 ? 0.3 : 0.35;
+    if (m->gradient == GRADIENT_QUADRATIC && !(m->dt > 0) && m->cfl > cfl_quadratic) {
+        const SrcLoc *at = setting_loc(scene, "cfl");
+        diag_warning(at ? *at : m->gradient_loc, "cfl %g with 'gradient quadratic': its explicit "
+                     "step was stable up to about %g in %dD; %g or less is safe", m->cfl,
+                     m->dim == 3 ? 0.35 : 0.4, m->dim, cfl_quadratic);
+    }
     /* The adaptive step is at most cfl h/c0 (eq. 64, 65) and the run stops as unstable below
      * dtmin h/c0: with cfl < dtmin the very first step would. */
     if (!(m->dt > 0) && m->cfl < m->dtmin) {
