@@ -71,6 +71,9 @@ static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
     double ui[D]; /* (read once for all of i's pairs) */
     for (int r = 0; r < D; r++)
         ui[r] = u[(size_t)i * D + r];
+//@if QUADRATIC
+    @B@_qvec aqi[D] = {{0}};
+//@endif
 //@if FRACTURE
     double lapi = 0;
 //@endif
@@ -85,10 +88,22 @@ static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
         @B@_tensor_add(&Ai, &t);
         @B@_tensor_add_to(A + (size_t)j * D * R, &t);
 //@if QUADRATIC
-        @B@_quad_gradient_pair(b->Aq, i, j, u, b->qtab + (size_t)hk[p] * @B@_QN);
+        { /* the quadratic fit's sums (body_quadratic.c): q_ij is even, u_j - u_i odd */
+            const @B@_qvec q = *(const @B@_qvec *)(b->qtab + (size_t)hk[p] * @B@_QR);
+            @B@_qvec *aqj = (@B@_qvec *)(b->Aq + (size_t)j * D * @B@_QR);
+            for (int r = 0; r < D; r++) {
+                const @B@_qvec t = (sph_real)(u[(size_t)j * D + r] - ui[r]) * q;
+                aqi[r] += t;
+                aqj[r] -= t;
+            }
+        }
 //@endif
     }
     @B@_tensor_add_to(A + (size_t)i * D * R, &Ai);
+//@if QUADRATIC
+    for (int r = 0; r < D; r++)
+        ((@B@_qvec *)(b->Aq + (size_t)i * D * @B@_QR))[r] += aqi[r];
+//@endif
 //@if FRACTURE
     lap[i] += lapi;
 //@endif
@@ -491,12 +506,7 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
             f += (Qi[c] + Qj[c]) * w[c];
         f *= inv_rho;
 //@if QUADRATIC
-        {
-            sph_real fq[D] = {0};
-            @B@_quad_momentum(b, i, j, k, inv_rho, fq);
-            for (int r = 0; r < D; r++)
-                f[r] += fq[r];
-        }
+        @B@_quad_momentum(b, i, j, k, inv_rho, &f);
 //@endif
 //@if VISCOSITY
         /* The viscosity of eq. 57-60 as @B@_viscosity_term (templates/physics/pairs.c, which

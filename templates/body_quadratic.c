@@ -17,7 +17,9 @@
  * the first term the momentum pass's (Q_lin in b->Q), the second added pair by pair here;
  * a pair's force on j is minus that on i.  The lists alone sum these pairs
  * (lower/layouts.c). */
-enum { @B@_QN = @DIM@ == 3 ? 6 : 3, @B@_QM = @DIM@ + @B@_QN };
+enum { @B@_QN = @DIM@ == 3 ? 6 : 3, @B@_QM = @DIM@ + @B@_QN, @B@_QR = @DIM@ == 3 ? 8 : 4 };
+/* a row of Aq or an entry of qtab (the monomials, padded with zeros) in one short vector */
+SPH_VECTOR(@B@_qvec, @B@_QR);
 
 /* The monomial of pair weight column m for the second derivative d^2 u / dX_a dX_b, and the
  * derivative's factor on it: x^2's coefficient is half of d^2 u / dx^2 (runtime/pairs/
@@ -29,45 +31,29 @@ static inline int @B@_quad_monomial(int a, int b)
     return @DIM@ == 2 ? 2 : a + b == 1 ? 3 : a + b == 3 ? 4 : 5;
 }
 
-/* Pair (i, j) of the gradient pass's half lists: (u_j - u_i) (x) q_ij to Aq_i, and to Aq_j
- * the same with the sign of u_i - u_j (q is even in the offset). */
-static inline void @B@_quad_gradient_pair(sph_real *restrict Aq, int i, int j,
-                                          const double *restrict u, const sph_real *q)
-{
-    enum { D = @DIM@, NQ = @B@_QN };
-    sph_real *ai = Aq + (size_t)i * D * NQ, *aj = Aq + (size_t)j * D * NQ;
-    for (int r = 0; r < D; r++) {
-        const sph_real d = (sph_real)(u[(size_t)j * D + r] - u[(size_t)i * D + r]);
-        for (int m = 0; m < NQ; m++) {
-            ai[r * NQ + m] += d * q[m];
-            aj[r * NQ + m] -= d * q[m];
-        }
-    }
-}
-
 /* After the gradient pass: each particle's fit c = [A, Aq] M^{-1}, its gradient back into A
  * (read by the stress pass as F = I + A, L being I) and its second-derivative
  * coefficients into Aq (read by @B@_quad_stress). */
 static void @B@_quad_fit(sph_body *b)
 {
-    enum { D = @DIM@, R = SPH_ROW(D), NQ = @B@_QN, M = @B@_QM };
+    enum { D = @DIM@, R = SPH_ROW(D), NQ = @B@_QN, QR = @B@_QR, M = @B@_QM };
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < b->nown; i++) {
-        sph_real *Ai = b->A + (size_t)i * D * R, *Aqi = b->Aq + (size_t)i * D * NQ;
+        sph_real *Ai = b->A + (size_t)i * D * R, *Aqi = b->Aq + (size_t)i * D * QR;
         const double *Mi = b->Mq + (size_t)i * M * M;
         for (int r = 0; r < D; r++) {
             double a[M], c[M] = {0};
             for (int k = 0; k < D; k++)
                 a[k] = Ai[r * R + k];
             for (int k = 0; k < NQ; k++)
-                a[D + k] = Aqi[r * NQ + k];
+                a[D + k] = Aqi[r * QR + k];
             for (int k = 0; k < M; k++)
                 for (int m = 0; m < M; m++)
                     c[m] += a[k] * Mi[k * M + m];
             for (int k = 0; k < D; k++)
                 Ai[r * R + k] = (sph_real)c[k];
             for (int k = 0; k < NQ; k++)
-                Aqi[r * NQ + k] = (sph_real)c[D + k];
+                Aqi[r * QR + k] = (sph_real)c[D + k];
         }
     }
 }
@@ -117,11 +103,11 @@ static inline double @B@_quad_term(const double F[@DIM@][@DIM@],
  * quadratic part into b->Qq for the momentum pass. */
 static void @B@_quad_stress(sph_body *b)
 {
-    enum { D = @DIM@, NQ = @B@_QN, M = @B@_QM };
+    enum { D = @DIM@, R = SPH_ROW(D), NQ = @B@_QN, QR = @B@_QR, M = @B@_QM };
     const double k = pow(b->vol, 2.0 / D) / 12.0; /* l^2 / 12, the cell's second moment */
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < b->nown; i++) {
-        sph_real *Aqi = b->Aq + (size_t)i * D * NQ, *Qqi = b->Qq + (size_t)i * D * NQ;
+        sph_real *Aqi = b->Aq + (size_t)i * D * QR, *Qqi = b->Qq + (size_t)i * NQ * R;
         const double *Mi = b->Mq + (size_t)i * M * M;
         double F[D][D], H[D][D][D], Tl[D][D], Tq[D][NQ] = {{0}};
         for (int r = 0; r < D; r++)
@@ -132,8 +118,8 @@ static void @B@_quad_stress(sph_body *b)
         for (int a = 0; a < D; a++)
             for (int r = 0; r < D; r++)
                 for (int c = 0; c < D; c++)
-                    H[a][r][c] = (a == c ? 2.0 : 1.0) * Aqi[r * NQ + @B@_quad_monomial(a, c)];
-        for (int m = 0; m < D * NQ; m++)
+                    H[a][r][c] = (a == c ? 2.0 : 1.0) * Aqi[r * QR + @B@_quad_monomial(a, c)];
+        for (int m = 0; m < D * QR; m++)
             Aqi[m] = 0; /* ready for the next step's gradient pass */
         b->psi[i] += @B@_quad_term(F, H, k, Tl, Tq);
         for (int r = 0; r < D; r++)
@@ -146,24 +132,21 @@ static void @B@_quad_stress(sph_body *b)
                 if (m < D)
                     b->Q[SPH_TENSOR(i, r, m, D, b->n)] = (sph_real)s;
                 else
-                    Qqi[r * NQ + m - D] = (sph_real)s;
+                    Qqi[(m - D) * R + r] = (sph_real)s; /* column m - D, like Q's */
             }
     }
 }
 
-/* The momentum pass's pair term: (Q_i - Q_j)_quad q_ij / rho0 added to the pair's force f
- * on i (as a row vector of D entries). */
+/* The momentum pass's pair term: (Q_i - Q_j)_quad q_ij / rho0 added to the pair's force f on
+ * i, column by column (a column of Qq in a short vector, like Q's). */
 static inline void @B@_quad_momentum(const sph_body *b, int i, int j, int k, sph_real inv_rho,
-                                     sph_real *f)
+                                     @B@_vec *f)
 {
-    enum { D = @DIM@, NQ = @B@_QN };
-    const sph_real *qi = b->Qq + (size_t)i * D * NQ, *qj = b->Qq + (size_t)j * D * NQ;
-    const sph_real *q = b->qtab + (size_t)k * NQ;
-    for (int r = 0; r < D; r++) {
-        sph_real s = 0;
-        for (int m = 0; m < NQ; m++)
-            s += (qi[r * NQ + m] - qj[r * NQ + m]) * q[m];
-        f[r] += s * inv_rho;
-    }
+    enum { NQ = @B@_QN };
+    const @B@_vec *qi = (const @B@_vec *)b->Qq + (size_t)i * NQ;
+    const @B@_vec *qj = (const @B@_vec *)b->Qq + (size_t)j * NQ;
+    const sph_real *q = b->qtab + (size_t)k * @B@_QR;
+    for (int m = 0; m < NQ; m++)
+        *f += (qi[m] - qj[m]) * (q[m] * inv_rho);
 }
 //@endif

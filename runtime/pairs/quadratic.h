@@ -15,6 +15,9 @@ enum { SPH_QN3 = 6, SPH_QN2 = 3 };
 #define SPH_QN(dim) ((dim) == 3 ? SPH_QN3 : SPH_QN2)
 /* The fit's coefficients: the gradient's dim and the monomials' (9 in 3D, 5 in 2D). */
 #define SPH_QM(dim) ((dim) + SPH_QN(dim))
+/* A row of monomial values padded with zeros to a short vector's length (8 in 3D, 4 in 2D):
+ * an offset table entry of qtab, a row of Aq (templates/body_quadratic.c). */
+#define SPH_QR(dim) ((dim) == 3 ? 8 : 4)
 
 SPH_FN void sph_quad_monomials(int dim, const double *d, double *q)
 {

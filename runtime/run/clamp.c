@@ -143,8 +143,8 @@ void sph_clamp_quiet(sph_body *b)
             for (int c = 0; c < D; c++)
                 b->Q[SPH_TENSOR(g, r, c, D, b->n)] = 0;
         if (b->Qq)
-            for (int m = 0; m < D * SPH_QN(D); m++)
-                b->Qq[(size_t)g * D * SPH_QN(D) + m] = 0;
+            for (int m = 0; m < SPH_QN(D) * SPH_ROW(D); m++)
+                b->Qq[(size_t)g * SPH_QN(D) * SPH_ROW(D) + m] = 0;
         b->psi[g] = 0;
     }
 }

@@ -138,8 +138,8 @@ static void allocate(sph_body *b)
     b->Cv = zalloc_lines(n * SPH_TENSOR_SIZE(D), sizeof *b->Cv);
     b->Cs = zalloc(n, sizeof *b->Cs);
     if (b->desc->quadratic) {
-        b->Aq = zalloc_lines(n * D * SPH_QN(D), sizeof *b->Aq);
-        b->Qq = zalloc_lines(n * D * SPH_QN(D), sizeof *b->Qq);
+        b->Aq = zalloc_lines(n * D * SPH_QR(D), sizeof *b->Aq);
+        b->Qq = zalloc_lines(n * SPH_QN(D) * SPH_ROW(D), sizeof *b->Qq);
     }
     b->psi = zalloc(n, sizeof(double));
     b->sigma = zalloc(n * 6, sizeof(double));
@@ -281,7 +281,7 @@ static void table_entry(sph_body *b, int k, int i, long p, sph_kernel_kind kerne
         double q[SPH_QN3];
         sph_quad_monomials(D, dX, q);
         for (int c = 0; c < SPH_QN(D); c++)
-            b->qtab[(size_t)k * SPH_QN(D) + c] = (sph_real)(-f * q[c]);
+            b->qtab[(size_t)k * SPH_QR(D) + c] = (sph_real)(-f * q[c]);
     }
 }
 
@@ -361,7 +361,7 @@ static void offset_tables(sph_body *b, sph_kernel_kind kernel)
     if (b->desc->fracture)
         b->ltab = zalloc((size_t)ntab, sizeof *b->ltab);
     if (b->desc->quadratic)
-        b->qtab = zalloc((size_t)ntab * SPH_QN(D), sizeof *b->qtab);
+        b->qtab = zalloc_lines((size_t)ntab * SPH_QR(D), sizeof *b->qtab);
     if (lattice) {
         for (int k = 0; k < ntab; k++)
             table_entry(b, k, first_i[k], first_p[k], kernel);

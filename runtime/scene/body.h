@@ -122,12 +122,13 @@ struct sph_body {
     sph_real *A;          /* n*SPH_TENSOR_SIZE(dim): sum_j (u_j - u_i) (x) w_ij, the pair part of
                            * eq. 53, row by row, rows padded like wtab (CPU only) */
     /* The corrected gradient exact for quadratic fields (desc->quadratic; pairs/quadratic.h;
-     * CPU only, NULL otherwise).  qtab: ntab*SPH_QN(dim), the pair weight's monomial part
-     * -V_j (dW/dr / r) q(X_j - X_i) for each offset table entry (the same both ways); Mq:
-     * n*SPH_QM(dim)^2, each particle's inverse moment matrix; Aq: n*dim*SPH_QN(dim), the
-     * gradient pass's sum_j (u_j - u_i) (x) qtab, then the fit's second-derivative
-     * coefficients; Qq: n*dim*SPH_QN(dim), the stress's share the momentum pass contracts
-     * with qtab (templates/body_quadratic.c).  Particle i's at i*dim*SPH_QN(dim), row by row. */
+     * CPU only, NULL otherwise).  qtab: ntab*SPH_QR(dim), the pair weight's monomial part
+     * -V_j (dW/dr / r) q(X_j - X_i) for each offset table entry (the same both ways, padded
+     * with zeros); Mq: n*SPH_QM(dim)^2, each particle's inverse moment matrix; Aq:
+     * n*dim*SPH_QR(dim), row by row, the gradient pass's sum_j (u_j - u_i) (x) qtab, then the
+     * fit's second-derivative coefficients; Qq: n*SPH_QN(dim)*SPH_ROW(dim), column by column
+     * like Q, the stress's share the momentum pass contracts with qtab
+     * (templates/body_quadratic.c). */
     sph_real *qtab, *Aq, *Qq;
     double *Mq;
     /* A clamp by mirror images (desc->clamp; run/clamp.c): particle image[k] behind the
