@@ -495,6 +495,15 @@ int check_program(const Program *p, Model *m)
     if (check_scene_item(m, p))
         return -1; /* bodies need the dimension */
     bad |= check_bodies(m, p);
+    /* The strain-gradient term of the quadratic gradient's cells is the undamaged body's
+     * (templates/body_quadratic.c): a crack's phase field does not degrade it yet. */
+    for (int i = 0; i < m->nbodies && !bad && m->gradient == GRADIENT_QUADRATIC; i++)
+        if (m->bodies[i].fracture.on) {
+            diag_error(m->gradient_loc, "'gradient quadratic' does not take phase-field "
+                                        "fracture (body '%s'): use 'gradient linear'",
+                       m->bodies[i].name);
+            bad = 1;
+        }
     for (int i = 0; i < p->n && !bad; i++)
         if (p->items[i].kind == IT_EXPECT)
             bad |= check_expect(m, &p->items[i]) != 0;
