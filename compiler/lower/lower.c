@@ -114,6 +114,14 @@ int lower_model(const Model *m, Plan *plan)
             law_verify_moduli(m, b);
         bad |= !built;
         p->nstate = p->roots.nslots;
+        /* the quadratic gradient's strain-gradient term is elastic (templates/body_quadratic.c):
+         * where a law with state flows, it resists the flow's gradients */
+        if (built && p->nstate > 0 && m->gradient == GRADIENT_QUADRATIC)
+            diag_warning(m->gradient_loc, "'gradient quadratic' with a law that has state (body "
+                         "'%s', material '%s'): the cells' strain-gradient term stays elastic "
+                         "and resists plastic flow (the Taylor bar's foot 30 %% too narrow at "
+                         "dp 1 mm, docs/verification.md); 'gradient linear' suits flow",
+                         b->name, b->law->name);
         features(m, b, &p->roots, p);
         if (p->rare && law_fast(&p->law, &p->roots, &p->fast, &p->fast_flag))
             p->rare = 0;
