@@ -17,6 +17,7 @@ in the time-stepping runs of docs/verification.md).  What can be switched, one a
   clamp      'held'       the particles behind the clamp's plane held at zero displacement
              'images'     those particles the mirror images of the ones in front, u = -u(mirror),
                           without energy (runtime/run/clamp.c)
+  hourglass  alpha of the body setting `hourglass` (0: none), linearised
   clamp layers, the kernel (Wendland C2 or cubic spline) and coefh (h = coefh sqrt(3) dx).
 
 Needs numpy and scipy (Debian: python3-numpy, python3-scipy); run with /usr/bin/python3.
@@ -127,6 +128,40 @@ def stiffness(X, V, Ve, dx, scheme, lam, mu):
     return K.tocsr()
 
 
+def hourglass(X, V, dx, scheme, lam, mu):
+    """The linearised hourglass penalty of `hourglass alpha` (templates/body_particle.c,
+    Ganzenmueller 2015) as a matrix Kh, f = -Kh u: for every pair (i, j), X = X_j - X_i,
+    s = X . ((grad u_i + grad u_j) X - 2 (u_j - u_i)) and the force on i
+    -(alpha E / 2) V^2 W(r) s X / r^4 (on j the opposite).  Not symmetric in general."""
+    alpha = scheme.get('hourglass', 0.0)
+    h = scheme.get('coefh', 1.0) * np.sqrt(3) * dx
+    kind = scheme.get('kernel', 'wendland')
+    I, J, G, _ = operators(X, V, h, kind, scheme['gradient'])
+    N, P = len(X), len(I)
+    B = bmatrix(N, I, J, G)
+    d = X[J] - X[I]
+    r = np.linalg.norm(d, axis=1)
+    W, _ = kernel(kind, r, h)
+    E = mu * (3 * lam + 2 * mu) / (lam + mu)
+    c = 0.5 * alpha * E * V[I] * V[J] * W / r**4
+    rows = np.repeat(np.arange(P), 9)
+    xx = (d[:, :, None] * d[:, None, :]).reshape(-1)
+    cols_i = (I[:, None] * 9 + np.arange(9)).reshape(-1)
+    cols_j = (J[:, None] * 9 + np.arange(9)).reshape(-1)
+    A = sp.csr_matrix((np.concatenate([xx, xx]), (np.concatenate([rows, rows]),
+                       np.concatenate([cols_i, cols_j]))), shape=(P, 9 * N))
+    rows3 = np.repeat(np.arange(P), 3)
+    Dm = sp.csr_matrix((np.concatenate([-2 * d.reshape(-1), 2 * d.reshape(-1)]),
+                        (np.concatenate([rows3, rows3]),
+                         np.concatenate([(J[:, None] * 3 + np.arange(3)).reshape(-1),
+                                         (I[:, None] * 3 + np.arange(3)).reshape(-1)]))),
+                       shape=(P, 3 * N))
+    S = A @ B + Dm
+    Pm = sp.csr_matrix((d.reshape(-1), ((I[:, None] * 3 + np.arange(3)).reshape(-1), rows3)),
+                       shape=(3 * N, P))
+    return (Pm @ sp.diags(c) @ S).tocsr()
+
+
 def clamped_system(X, dx, scheme, lam, mu, clamp_x=0.0):
     """K reduced to the particles in front of the plane x = clamp_x: held (behind it zero) or
     with images (behind it minus the mirror particle's displacement, no energy).  Returns the
@@ -137,6 +172,8 @@ def clamped_system(X, dx, scheme, lam, mu, clamp_x=0.0):
     images = scheme.get('clamp', 'held') == 'images'
     Ve = np.where(free, V, 0.0) if images else V
     K = stiffness(X, V, Ve, dx, scheme, lam, mu)
+    if scheme.get('hourglass', 0.0) > 0:
+        K = K + hourglass(X, V, dx, scheme, lam, mu)
     idx = np.where(free)[0]
     key = {tuple(np.round(X[i] / dx * 2).astype(int)): k for k, i in enumerate(idx)}
     rows, cols, vals = [], [], []
