@@ -1,9 +1,10 @@
-/* bending_check.h — the static bending tests (test_bending5.c, test_bending10.c): a square
- * cantilever clamped on x = 0, its end layer loaded in -z by a total force P that is ramped up
+/* bending_check.h — the static bending tests (test_bending5.c, test_bending10.c; in plane
+ * strain test_bending2d5.c, test_bending2d10.c): a square cantilever clamped on x = 0, its end layer loaded in -z by a total force P that is ramped up
  * over t_ramp and then held; the tip measurement's mean u_z over the rest of the run (two
  * periods or more of the beam's first mode, which averages out what the ramp leaves of its
- * ringing) against the finite-element deflection (bench/fe-references/cantilever_static.py:
- * the mean u_z over the loaded slab, converged P2 elements, in units of P / (E t)). */
+ * ringing) against the finite-element deflection (bench/fe-references/cantilever_static.py,
+ * cantilever_2d.py: the mean u_z over the loaded slab, converged Q2 elements, in units of
+ * P / (E t)). */
 #include "check.h"
 #include "run/measure.h"
 #ifdef _OPENMP
@@ -13,7 +14,8 @@
 typedef struct {
     double t_ramp;   /* the load's ramp [s] */
     double P;        /* the total end load [N] (negative: -z) */
-    double E, t;     /* Young's modulus [Pa], thickness [m] */
+    double E, t;     /* Young's modulus [Pa], thickness [m]; 2D: t = 1 (the load and the
+                      * FE deflection are per unit width, u = fe P / E) */
     double fe;       /* the FE deflection for P = -1, E = 1, t = 1 */
     double tol;      /* the relative tolerance */
     const char *what;
