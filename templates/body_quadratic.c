@@ -21,9 +21,10 @@ enum { @B@_QN = @DIM@ == 3 ? 6 : 3, @B@_QM = @DIM@ + @B@_QN, @B@_QR = @DIM@ == 3
 /* a row of Aq or an entry of qtab (the monomials, padded with zeros) in one short vector */
 SPH_VECTOR(@B@_qvec, @B@_QR);
 
-/* The monomial of pair weight column m for the second derivative d^2 u / dX_a dX_b, and the
- * derivative's factor on it: x^2's coefficient is half of d^2 u / dx^2 (runtime/pairs/
- * quadratic.h's order: 3D x^2, y^2, z^2, xy, yz, xz; 2D x^2, z^2, xz). */
+/* The monomial (the column of Aq and of qtab) whose coefficient gives d^2 u / dX_a dX_b: the
+ * whole derivative for a != b, half of it for a == b (x^2's coefficient is half of
+ * d^2 u / dx^2); runtime/pairs/quadratic.h's order: 3D x^2, y^2, z^2, xy, yz, xz; 2D x^2,
+ * z^2, xz. */
 static inline int @B@_quad_monomial(int a, int b)
 {
     if (a == b)
