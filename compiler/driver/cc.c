@@ -341,23 +341,28 @@ static const struct {
     [TARGET_CUDA] = {compile_cuda, "nvcc"},
 };
 
+/* What runs on the CPU target on one process only (the quadratic gradient's pair sums and a
+ * clamp's images are the CPU lists'): an error at its line for --target cuda or --mpi, 1;
+ * 0 otherwise. */
+static int off_cpu(const Options *o, SrcLoc loc, const char *what, const char *instead)
+{
+    if (o->target != TARGET_CUDA && !o->mpi)
+        return 0;
+    diag_error(loc, "%s runs on the CPU target on one process; %s needs %s", what,
+               o->mpi ? "--mpi" : "--target cuda", instead);
+    return 1;
+}
+
 int build_program(const Plan *plan, const Options *o, const Paths *paths)
 {
     const Model *m = plan->model;
-    if (m->gradient == GRADIENT_QUADRATIC && (o->target == TARGET_CUDA || o->mpi)) {
-        /* (its pair sums and halo are the CPU lists' so far: templates/body_quadratic.c) */
-        diag_error(m->gradient_loc, "'gradient quadratic' runs on the CPU target on one process; "
-                                    "%s needs 'gradient linear'",
-                   o->mpi ? "--mpi" : "--target cuda");
+    if (m->gradient == GRADIENT_QUADRATIC && off_cpu(o, m->gradient_loc, "'gradient quadratic'",
+                                                     "'gradient linear'"))
         return -1;
-    }
     for (int i = 0; i < m->nbodies; i++)
-        if (m->bodies[i].has_clamp && (o->target == TARGET_CUDA || o->mpi)) {
-            diag_error(m->bodies[i].clamp_loc, "a body's 'clamp' runs on the CPU target on one "
-                                               "process; %s needs a velocity condition instead",
-                       o->mpi ? "--mpi" : "--target cuda");
+        if (m->bodies[i].has_clamp && off_cpu(o, m->bodies[i].clamp_loc, "a body's 'clamp'",
+                                              "a velocity condition instead"))
             return -1;
-        }
     if (o->mpi && mpi_ready(m, o, paths))
         return -1;
     char dir[4096];
