@@ -267,6 +267,9 @@ typedef struct {
 //@if CRUSH
     double lam2[@B@_BLOCK];
 //@endif
+//@if LAW_DT
+    double dt; /* the time since the law's last evaluation */
+//@endif
 } @B@_stage;
 
 /* Particle q of a stage through @B@_stress_of.  With fast (RARE), its law's fast path
@@ -290,6 +293,9 @@ SPH_FLAT int @B@_stress_lane(@B@_stage *g, int q, int fast)
     @B@_stress_of(a, l,
 //@if FRACTURE
                   g->s[q], g->lap[q], &g->H[q], &g->sdd[q],
+//@endif
+//@if LAW_DT
+                  g->dt,
 //@endif
 //@if STATE
                   sq, snq,
@@ -356,6 +362,9 @@ static void @B@_stress_block(sph_body *b, int i0, int m)
 {
     enum { D = @DIM@, R = SPH_ROW(D), T = D * D };
     @B@_stage g;
+//@if LAW_DT
+    g.dt = b->law_dt;
+//@endif
     sph_real *restrict Ab = b->A + (size_t)i0 * D * R;
     const double *restrict Lb = b->L + (size_t)i0 * T;
 //@if STATE

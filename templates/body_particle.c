@@ -39,10 +39,16 @@ SPH_FN void @B@_phase_move(double *s, double *sd, double h)
 //@if STATE
  * The law's state st (plasticity) advances once per step, here: st_new.
 //@endif
+//@if LAW_DT
+ * dt: the time since the law's last evaluation (its state's step).
+//@endif
  */
 SPH_FLAT void @B@_stress_of(const double *A, const double *L,
 //@if FRACTURE
                             double s, double lap, double *H, double *sdd,
+//@endif
+//@if LAW_DT
+                            double dt,
 //@endif
 //@if STATE
                             const double *st, double *st_new,
@@ -86,14 +92,14 @@ SPH_FLAT void @B@_stress_of(const double *A, const double *L,
 //@if RARE
     /* fast: the law without its rare `if` blocks, *rare whether one was due */
     if (fast)
-        @B@_material_fast(F, st, st_new, S, &e, rare);
+        @B@_material_fast(F, @LAW_DT_ARG@st, st_new, S, &e, rare);
     else
-        @B@_material(F, st, st_new, S, &e);
+        @B@_material(F, @LAW_DT_ARG@st, st_new, S, &e);
 //@else
-    @B@_material(F, st, st_new, S, &e);
+    @B@_material(F, @LAW_DT_ARG@st, st_new, S, &e);
 //@endif
 //@else
-    @B@_material(F, S, &e);
+    @B@_material(F, @LAW_DT_ARG@S, &e);
 //@endif
 //@endif
     *psi = e;
@@ -158,6 +164,9 @@ SPH_FLAT void @B@_particle_stress(sph_body *b, int i, const double *A)
     @B@_stress_of(A, b->L + (size_t)i * D * D,
 //@if FRACTURE
                   b->s[i], b->lap[i], &b->H[i], &b->sdd[i],
+//@endif
+//@if LAW_DT
+                  b->law_dt,
 //@endif
 //@if STATE
                   st, st_new,

@@ -68,6 +68,12 @@ void emit_consts_fns(Emitter *E)
         fputs("\n", E->out);
 }
 
+/* The material function's dt argument, where its law reads one. */
+static const char *dt_arg(const BodyPlan *p)
+{
+    return p->law_dt ? "double dt, " : "";
+}
+
 void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
 {
     FILE *out = E->out;
@@ -81,22 +87,24 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
     }
     const LawRoots *r = &p->roots;
     if (p->nstate) {
-        fprintf(out, ".\n * In: deformation gradient F (3x3), the particle's state st (%d values:",
-                p->nstate);
+        fprintf(out, ".\n * In: deformation gradient F (3x3),%s the particle's state st (%d values:",
+                p->law_dt ? " dt (the time since the law's last evaluation)," : "", p->nstate);
         for (int k = 0; k < r->nstates; k++)
             fprintf(out, " %s%s", r->states[k].name, r->states[k].size == 9 ? "[9]" : "");
         fprintf(out, ").\n * Out: second Piola-Kirchhoff stress S, strain energy density psi, "
                      "the state at the end of the step st_new. */\n");
-        fprintf(out, "SPH_FLAT void %s_material(const double F[9], const double *st, "
+        fprintf(out, "SPH_FLAT void %s_material(const double F[9], %sconst double *st, "
                      "double *st_new, double S[9],\n                                   double *psi)\n{\n",
-                b->name);
+                b->name, dt_arg(p));
     } else {
-        fprintf(out, ".\n * In: deformation gradient F (3x3). Out: second Piola-Kirchhoff stress S, "
-                     "strain energy density psi. */\n");
-        fprintf(out, "SPH_FLAT void %s_material(const double F[9], double S[9], double *psi)\n{\n",
-                b->name);
+        fprintf(out, ".\n * In: deformation gradient F (3x3)%s. Out: second Piola-Kirchhoff "
+                     "stress S, strain energy density psi. */\n", p->law_dt ? ", dt" : "");
+        fprintf(out, "SPH_FLAT void %s_material(const double F[9], %sdouble S[9], double *psi)\n{\n",
+                b->name, dt_arg(p));
     }
     fputs(p->nstate ? "    (void)F;\n    (void)st;\n" : "    (void)F;\n", out);
+    if (p->law_dt)
+        fputs("    (void)dt;\n", out);
     emit_law_body(out, p, 0);
     fputs("}\n\n", out);
     if (!p->rare)
@@ -106,10 +114,10 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
                  " * where one should have been: there the results are not the law's, and the\n"
                  " * stress pass takes %s_material's instead (templates/body_forces.c). */\n",
             b->name);
-    fprintf(out, "SPH_FLAT void %s_material_fast(const double F[9], const double *st, "
+    fprintf(out, "SPH_FLAT void %s_material_fast(const double F[9], %sconst double *st, "
                  "double *st_new,\n                                        double S[9], "
-                 "double *psi, double *rare)\n{\n", b->name);
-    fputs("    (void)F;\n    (void)st;\n", out);
+                 "double *psi, double *rare)\n{\n", b->name, dt_arg(p));
+    fputs(p->law_dt ? "    (void)F;\n    (void)dt;\n    (void)st;\n" : "    (void)F;\n    (void)st;\n", out);
     emit_law_fast_body(out, p);
     fputs("}\n\n", out);
 }

@@ -19,6 +19,11 @@ static void step_forces(Emitter *E, int i)
         emit_pass(E, i, "velocity_bcs", "b, t, dt");
     if (p->symplectic)
         emit_pass(E, i, "predict", "b, dt");
+    /* the time since its law's last evaluation: the stress pass is at the step's start
+     * (Verlet) or its middle (symplectic), and the state starts at t = 0 */
+    if (p->law_dt)
+        fprintf(E->out, "        b->law_dt = %s;\n",
+                p->symplectic ? "0.5 * (s->dt_prev + dt)" : "s->dt_prev");
     /* (its stress and momentum passes each through SPH_PASS on the CPU) */
     fprintf(E->out, "        %s_forces(b);\n", E->m->bodies[i].name);
 }

@@ -31,6 +31,7 @@ typedef struct {
     SGraph *g;
     const MaterialDef *law;
     const double *params;  /* NULL: symbolic parameters (checking) */
+    double rho0;           /* the body's reference density; NaN: symbolic (checking) */
     Binding *env;
     int nenv, capenv;
     int has_stress, has_energy;
@@ -185,6 +186,34 @@ static Val t_pos(Law *L, Val a)
 
 static Val eval(Law *L, const Expr *e);
 
+/* J = det F; with an energy of C or E, sqrt(det C) (C = 2 E + I). */
+static int volume_ratio(Law *L)
+{
+    if (!L->of)
+        return t_det(L, find_binding(L, "F")->v);
+    Val C = L->var;
+    if (!strcmp(L->of, "E"))
+        C = t_map2(L, SN_ADD, t_map2(L, SN_MUL, C, scalar(sg_const(L->g, 2.0))), identity(L));
+    return sg_call(L->g, BI_sqrt, t_det(L, C));
+}
+
+/* What a law reads besides F (or C, E), its parameters and state: the step of its update
+ * dt (an input of the material function), the volume ratio J, the reference density rho0
+ * (the body's) and the current density rho = rho0 / J.  BAD for another name. */
+static Val law_input(Law *L, const char *name)
+{
+    if (!strcmp(name, LAW_INPUT_DT))
+        return scalar(sg_input(L->g, LAW_INPUT_DT, -1));
+    if (!strcmp(name, "J"))
+        return scalar(volume_ratio(L));
+    const int rho0 = isnan(L->rho0) ? sg_input(L->g, "rho0", -1) : sg_const(L->g, L->rho0);
+    if (!strcmp(name, "rho0"))
+        return scalar(rho0);
+    if (!strcmp(name, "rho"))
+        return scalar(sg_binary(L->g, SN_DIV, rho0, volume_ratio(L)));
+    return BAD;
+}
+
 static Val lookup(Law *L, const Expr *e)
 {
     for (int i = L->nenv - 1; i >= 0; i--)
@@ -195,6 +224,9 @@ static Val lookup(Law *L, const Expr *e)
             return scalar(L->params ? sg_const(L->g, L->params[i]) : sg_param(L->g, i));
     if (!strcmp(e->name, "I"))
         return identity(L);
+    Val in = law_input(L, e->name);
+    if (ok(in))
+        return in;
     double v;
     if (eval_expr(L->m, e, NULL, &v) == EVAL_OK)
         return scalar(sg_const(L->g, v));
@@ -962,7 +994,54 @@ static int finite_results(const SGraph *g, const MaterialDef *law, const double 
     return -1;
 }
 
-int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *params, int dim,
+/* The location of the law's energy statement at line (the law's or its tension block's). */
+static SrcLoc energy_loc(const MaterialDef *law, int line)
+{
+    for (int i = 0; i < law->body.n; i++) {
+        const MatStmt *s = &law->body.items[i];
+        if (s->kind == MS_ENERGY && s->loc.line == line)
+            return s->loc;
+        for (int j = 0; s->kind == MS_BLOCK && j < s->body.n; j++)
+            if (s->body.items[j].kind == MS_ENERGY && s->body.items[j].loc.line == line)
+                return s->body.items[j].loc;
+    }
+    return (SrcLoc){law->loc.file, line, 0};
+}
+
+/* An energy is a function of the deformation and the state: one that reads the step of the
+ * update dt other than through the state's end values (held, as for the derived stress) is a
+ * modelling error, at its line.  Returns 0, or -1 after reporting. */
+static int energy_reads_rate(Law *L)
+{
+    const struct { int psi, line, on; const char *what; } energies[] = {
+        {L->out.psi, L->energy_line, 1, "energy"},
+        {L->out.psip, L->tension_energy_line, L->out.has_tension, "tensile energy"},
+    };
+    for (int k = 0; k < 2; k++) {
+        if (!energies[k].on ||
+            sg_input_reached(L->g, energies[k].psi, L->out.next, L->out.nslots, LAW_INPUT_DT) < 0)
+            continue;
+        diag_error(energy_loc(L->law, energies[k].line), "the %s of material '%s' reads dt: an energy is a function of the "
+                        "deformation and the state; a rate enters through the state's update "
+                        "(state Cv = ..., Cv = ... dt ...), whose end value the energy may read",
+                   energies[k].what, L->law->name);
+        return -1;
+    }
+    return 0;
+}
+
+int law_reads(const SGraph *g, const LawRoots *r, const char *input)
+{
+    LawRoots copy = *r;
+    int *slots[LAW_MAX_RESULTS];
+    const int n = result_slots(&copy, copy.has_tension, slots);
+    for (int k = 0; k < n; k++)
+        if (sg_input_reached(g, *slots[k], NULL, 0, input) >= 0)
+            return 1;
+    return 0;
+}
+
+int law_build(SGraph *g, const Model *m, const MaterialDef *law, const BodyModel *b, int dim,
               int tension, LawRoots *out)
 {
     Law L = {0};
@@ -970,7 +1049,8 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *p
     L.m = m;
     L.g = g;
     L.law = law;
-    L.params = params;
+    L.params = b ? b->law_args : NULL;
+    L.rho0 = b ? b->rho0 : NAN;
     L.g->line = law->loc.line;
     L.g->file = law->loc.file;
     const int derived = !writes_stress(&law->body);
@@ -996,6 +1076,8 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *p
         for (int k = 0; k < st->size; k++)
             L.out.next[st->offset + k] = st->size == 1 ? end.s : end.t[k];
     }
+    if (!bad)
+        bad = energy_reads_rate(&L) != 0;
     if (!bad && (derived || (derived_p && L.out.has_tension)))
         bad = derive_stresses(&L, dim, derived, derived_p && L.out.has_tension) != 0;
     if (!bad && L.of)
@@ -1008,7 +1090,7 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *p
         degrade(L.g, &L.out);
     }
     if (!bad)
-        bad = finite_results(L.g, law, params, &L.out) != 0;
+        bad = finite_results(L.g, law, L.params, &L.out) != 0;
     if (!bad)
         *out = L.out;
     return bad ? -1 : 0;

@@ -42,18 +42,21 @@ typedef struct {
  * 0, fast's results are r's).  Returns 0, or -1 when the law has no such block. */
 int law_fast(SGraph *g, const LawRoots *r, LawRoots *fast, int *flag);
 
-/* Evaluate `law` for a body of dimension dim with parameter values params (NULL:
- * symbolic).  The `tension` block is evaluated only when tension is set (bodies with
- * fracture).  Returns 0, or -1 after reporting errors. */
-int law_build(SGraph *g, const Model *m, const MaterialDef *law, const double *params, int dim,
+/* Evaluate `law` for a body b of dimension dim, with its parameter values and reference
+ * density (b NULL: symbolic).  The `tension` block is evaluated only when tension is set
+ * (bodies with fracture).  Returns 0, or -1 after reporting errors. */
+int law_build(SGraph *g, const Model *m, const MaterialDef *law, const BodyModel *b, int dim,
               int tension, LawRoots *out);
+/* Whether the law's results (S, psi, the state's end values, the tension block's) read the
+ * graph input named input (LAW_INPUT_DT): its material function then takes it. */
+int law_reads(const SGraph *g, const LawRoots *r, const char *input);
 
 /* A law that writes its stress (or its tension block's S+) and its energy: both evaluated
  * in 3D with parameter values params at a few sample deformations, and a warning at the
  * `stress` statement where S differs from F^-1 dpsi/dF (S+ from psi+'s) by more than
  * round-off; a law with state is differentiated at its returned state.  Returns the number
  * of warnings (law_verify.c). */
-int law_verify(const Model *m, const MaterialDef *law, const double *params);
+int law_verify(const Model *m, const BodyModel *b);
 /* An error, at the law's `energy` (or `stress`, or the tension block's) statement, when the
  * law g, r built for body b gives an energy, a stress or a state that is not finite at F = I
  * or at a small deformation near it (where every particle starts), with a note where the
@@ -73,6 +76,8 @@ int law_check(const Model *m, const MaterialDef *law);
 #define LAW_INPUT_F "F"
 #define LAW_INPUT_S "s"
 #define LAW_INPUT_STATE "st"
+/* The step of the law's update: the time since its last evaluation (a scalar argument). */
+#define LAW_INPUT_DT "dt"
 /* The variables of an energy given as psi(C) or psi(E), replaced by F's before emission. */
 #define LAW_INPUT_C "C"
 #define LAW_INPUT_E "E"

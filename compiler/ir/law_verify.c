@@ -86,6 +86,8 @@ static double input_at(const char *name, int index, void *ctx)
         return p->r->init[index];
     if (!strcmp(name, LAW_INPUT_S))
         return 1.0;
+    if (!strcmp(name, LAW_INPUT_DT)) /* the instantaneous response: no time for the state */
+        return 0.0;
     return NAN; /* C or E: replaced by F's, dead */
 }
 
@@ -252,15 +254,16 @@ static int check_objective(const SGraph *g, const LawRoots *r, const MaterialDef
     return 1;
 }
 
-int law_verify(const Model *m, const MaterialDef *law, const double *params)
+int law_verify(const Model *m, const BodyModel *b)
 {
+    const MaterialDef *law = b->law;
     const MatStmt *stress = stress_stmt(&law->body), *tension = tension_stmt(law);
     const MatStmt *stress_p = tension ? stress_stmt(&tension->body) : NULL;
     SGraph g;
     sg_init(&g);
     LawRoots r;
     int warnings = 0;
-    if (law_build(&g, m, law, params, 3, 1, &r) == 0) {
+    if (law_build(&g, m, law, b, 3, 1, &r) == 0) {
         Sample s[NSAMPLES];
         samples(s);
         double worst;
@@ -379,7 +382,7 @@ static const char *nonfinite_name(double v)
 }
 
 static void report_nonfinite(const BodyModel *b, const SGraph *g, const double *val,
-                             const Result *res, int entry, int sample)
+                             const Result *res, int entry, int sample, int reads_dt)
 {
     const MaterialDef *law = b->law;
     char name[32], values[512];
@@ -394,9 +397,10 @@ static void report_nonfinite(const BodyModel *b, const SGraph *g, const double *
     const double v = val[res->ids[entry]];
     const SrcLoc at = res->stmt ? res->stmt->loc : law->loc;
     diag_error(at, "the %s of material '%s' is not finite at %s (%s = %s) with body '%s''s "
-               "parameters%s%s%s: every particle starts at F = I and deforms from there",
+               "parameters%s%s%s: every particle starts at F = I and deforms from there%s",
                res->what, law->name, NEAR_IDENTITY[sample].what, name, nonfinite_name(v),
-               b->name, *values ? " (" : "", values, *values ? ")" : "");
+               b->name, *values ? " (" : "", values, *values ? ")" : "",
+               reads_dt ? ", and the law's first evaluation, at t = 0, has dt = 0" : "");
     const SNode *o = &g->nodes[nonfinite_origin(g, val, res->ids[entry])];
     if (o->file && o->line > 0 && o->line != at.line)
         diag_note((SrcLoc){o->file, o->line, 0}, "the first value that is not finite (%s) is "
@@ -408,6 +412,7 @@ int law_verify_finite(const BodyModel *b, const SGraph *g, const LawRoots *r)
     Result res[5];
     const int nres = results_checked(b->law, r, res);
     double *val = malloc((size_t)g->n * sizeof *val);
+    const int reads_dt = law_reads(g, r, LAW_INPUT_DT); /* (evaluated at dt = 0: input_at) */
     int bad = 0;
     for (int q = 0; q < NNEAR && !bad; q++) {
         Point p = {NEAR_IDENTITY[q].F, r};
@@ -415,7 +420,7 @@ int law_verify_finite(const BodyModel *b, const SGraph *g, const LawRoots *r)
         for (int i = 0; i < nres && !bad; i++)
             for (int k = 0; k < res[i].n && !bad; k++)
                 if (!isfinite(val[res[i].ids[k]])) {
-                    report_nonfinite(b, g, val, &res[i], k, q);
+                    report_nonfinite(b, g, val, &res[i], k, q, reads_dt);
                     bad = 1;
                 }
     }
@@ -438,7 +443,7 @@ int law_verify_moduli(const Model *m, const BodyModel *b)
     sg_init(&g);
     LawRoots r;
     int warnings = 0;
-    if (law_build(&g, m, b->law, b->law_args, 3, 0, &r) == 0) {
+    if (law_build(&g, m, b->law, b, 3, 0, &r) == 0) {
         const double t = 1e-6;
         double shear[9] = {1, t, 0, 0, 1, 0, 0, 0, 1}, dilate[9] = {1 + t, 0, 0, 0, 1 + t, 0, 0,
                                                                       0, 1 + t};

@@ -362,6 +362,32 @@ void sg_mark_live(const SGraph *g, const int *roots, int nroots, char *live)
     }
 }
 
+int sg_input_reached(const SGraph *g, int root, const int *held, int nheld, const char *name)
+{
+    char *live = calloc((size_t)g->n + 1, 1), *stop = calloc((size_t)g->n + 1, 1);
+    for (int k = 0; k < nheld; k++)
+        if (held[k] >= 0)
+            stop[held[k]] = 1;
+    int found = -1;
+    if (root >= 0)
+        live[root] = 1;
+    for (int id = root; id >= 0 && found < 0; id--) {
+        const SNode *s = &g->nodes[id];
+        if (!live[id] || stop[id])
+            continue;
+        if (s->op == SN_INPUT && !strcmp(s->name, name))
+            found = id;
+        for (int k = 0; s->op == SN_EXT && k < s->nargs; k++)
+            live[s->args[k]] = 1;
+        const int ops[3] = {s->a, s->b, s->c};
+        for (int k = 0; s->op != SN_EXT && k < 3; k++)
+            if (ops[k] >= 0)
+                live[ops[k]] = 1;
+    }
+    free(live), free(stop);
+    return found;
+}
+
 int sg_operations(const SGraph *g, const int *roots, int nroots)
 {
     char *live = calloc((size_t)g->n + 1, 1);

@@ -75,6 +75,10 @@ void sg_eval(const SGraph *g, int upto, SgInput input, void *ctx, const double *
 /* Marks in live[0 .. g->n - 1] (zeroed by the caller) the nodes that roots[0 .. nroots-1]
  * need (a root < 0 needs none): the nodes a printer of the graph writes. */
 void sg_mark_live(const SGraph *g, const int *roots, int nroots, char *live);
+/* An input node named `name` that root needs along a path that does not pass through the
+ * nodes held[0 .. nheld-1], or -1 when it needs none so (a law's energy that reads the rate
+ * of its update other than through its state's end values). */
+int sg_input_reached(const SGraph *g, int root, const int *held, int nheld, const char *name);
 /* The operations computing roots[0 .. nroots-1] takes: the nodes they reach, less constants,
  * inputs, parameters and a runtime routine's outputs (its call counts once). */
 int sg_operations(const SGraph *g, const int *roots, int nroots);

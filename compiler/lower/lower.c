@@ -105,11 +105,11 @@ int lower_model(const Model *m, Plan *plan)
         memset(p, 0, sizeof *p);
         sg_init(&p->law);
         int built =
-            law_build(&p->law, m, b->law, b->law_args, m->dim, b->fracture.on, &p->roots) == 0;
+            law_build(&p->law, m, b->law, b, m->dim, b->fracture.on, &p->roots) == 0;
         if (built && law_verify_finite(b, &p->law, &p->roots))
             built = 0;
         if (built && first_use(m, i))
-            law_verify(m, b->law, b->law_args);
+            law_verify(m, b);
         if (built)
             law_verify_moduli(m, b);
         bad |= !built;
@@ -123,6 +123,12 @@ int lower_model(const Model *m, Plan *plan)
                          "dp 1 mm, docs/verification.md); 'gradient linear' suits flow",
                          b->name, b->law->name);
         features(m, b, &p->roots, p);
+        if (built && p->fracture && p->law_dt) {
+            diag_error(b->fracture.loc, "fracture cannot be combined with material '%s', which "
+                       "reads dt: the paper's phase field is for elastic materials (section "
+                       "2.3.3, remark 3)", b->law->name);
+            bad = 1;
+        }
         if (p->rare && law_fast(&p->law, &p->roots, &p->fast, &p->fast_flag))
             p->rare = 0;
         numbers(m, b, p);

@@ -27,6 +27,7 @@
     X(fracture, "fracture", FRACTURE, b->fracture.on) /* phase field, eq. 6-9, 61-63 */            \
     X(restrict_phase, "restrict", RESTRICT, b->fracture.restrict_expr != NULL)                     \
     X(state, "state", STATE, r->nslots > 0) /* its law has state (plasticity) */                   \
+    X(law_dt, NULL, LAW_DT, law_reads(&p->law, r, LAW_INPUT_DT)) /* its law reads dt */      \
     X(contact, "contact", CONTACT, model_has_contact(m)) /* between the scene's bodies */          \
     X(crush, "crush", CRUSH, model_has_crush(m)) /* time step bound on compression */              \
     X(measure, "measure", MEASURE, b->nmeasures > 0) /* measurement planes */                      \

@@ -106,6 +106,8 @@ void plan_dump(const Plan *plan, FILE *out)
         fputs("\n", out);
         layouts_dump(m, p, out);
         law_summary(p, b->law, out);
+        if (p->law_dt)
+            fputs("  the law reads: dt (the time since its last evaluation)\n", out);
         law_graph(p, 0, out);
         if (p->rare) {
             fprintf(out, "  fast path (the CPU's stress pass; no `if` without `else` taken, rare "

@@ -44,7 +44,7 @@ int sph_sim_init_par(sph_sim *s, const sph_model *m, double t_end, int verbose,
     sph_message_program(m->name);
     s->m = m;
     s->par = par;
-    s->t = s->dt = 0;
+    s->t = s->dt = s->dt_prev = 0;
     s->step = 0;
     s->contact = NULL;
     s->nbodies = m->nbodies;
@@ -162,6 +162,7 @@ double sph_sim_stable_dt(sph_sim *s)
 
 void sph_sim_step(sph_sim *s, double dt)
 {
+    s->dt_prev = s->dt;
     s->dt = dt;
     s->m->step(s, dt);
     s->t += dt;

@@ -158,6 +158,8 @@ struct sph_body {
     double *red;
 
     double *state;        /* n*nstate state of the material law (NULL without state) */
+    double law_dt;        /* the time since the law's last evaluation (a law that reads dt:
+                           * the step sets it before the stress pass, from sph_sim.dt_prev) */
 
     /* Phase-field fracture (NULL unless the body has fracture). */
     double *s, *sd, *sdd; /* n phase field (1 intact, 0 broken), ds/dt, d2s/dt2 */

@@ -14,6 +14,7 @@ struct sph_sim {
     sph_body *bodies;
     int nbodies;
     double t, dt;
+    double dt_prev;        /* the step before the one being taken (0 before the first) */
     long step;
     int threads;
     sph_contact *contact;  /* contact state (contact.c); NULL until the first contact pass */
