@@ -7,6 +7,7 @@
 #include "check.h"
 #include "check_body.h"
 #include "check_expr.h"
+#include "law_require.h"
 #include "reference_csv.h"
 #include "seen_settings.h"
 #include "util/diag.h"
@@ -122,7 +123,8 @@ static int check_law_def(Model *m, const Item *it)
             return -1;
         }
     m->laws[m->nlaws++] = &it->material;
-    return law_check(m, &it->material);
+    const int bad = law_check(m, &it->material) != 0;
+    return law_require_check(m, &it->material) || bad ? -1 : 0;
 }
 
 /* ------------------------------------------------------------------ scene */

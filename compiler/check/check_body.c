@@ -11,6 +11,7 @@
 #include "check_body.h"
 #include "check_expr.h"
 #include "check_fracture.h"
+#include "law_require.h"
 #include "quad.h"
 #include "seen_settings.h"
 #include "model/admissible.h"
@@ -668,7 +669,9 @@ static int check_item(Model *m, const BodyItem *it, BodyModel *b, int *nshape, i
             diag_error(it->loc, "body '%s' has more than one material", b->name);
             return -1;
         }
-        return check_material_use(m, &it->material, b);
+        if (check_material_use(m, &it->material, b))
+            return -1;
+        return law_require_body(m, b, it->loc); /* with the elastic constants derived */
     case BI_SETTING:
         if (!strcmp(it->setting.key, "restrict"))
             return check_fracture_item(m, it, &b->fracture);

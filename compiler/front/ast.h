@@ -83,7 +83,8 @@ typedef enum {
     MS_IF,     /* if cond { body } else { orelse }        */
     MS_BLOCK,  /* named block, e.g. tension { ... }       */
     MS_ASSIGN, /* name = expr          (a new value of a let or state) */
-    MS_DISSIPATION /* dissipation name: state `name` is the dissipated energy density */
+    MS_DISSIPATION, /* dissipation name: state `name` is the dissipated energy density */
+    MS_REQUIRE /* require cond [, "message"]: what the parameters must satisfy (law_require.c) */
 } MatStmtKind;
 
 typedef struct MatStmt MatStmt;
@@ -96,11 +97,12 @@ struct MatStmt {
     MatStmtKind kind;
     SrcLoc loc;
     char *name;        /* LET/STRESS/ENERGY/STATE/ASSIGN target, BLOCK name */
-    Expr *value;       /* LET/STRESS/ENERGY/STATE/ASSIGN value, IF condition */
+    Expr *value;       /* LET/STRESS/ENERGY/STATE/ASSIGN value, IF/REQUIRE condition */
     MatStmtList body;  /* IF then-part, BLOCK contents */
     MatStmtList orelse;/* IF else-part */
     int depth;         /* levels of blocks from here down: 1 for a statement without */
     char *of;          /* ENERGY: the variable it is a function of (C or E), or NULL */
+    char *message;     /* REQUIRE: its message (without the quotes), or NULL */
 };
 
 typedef struct {

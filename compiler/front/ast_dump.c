@@ -118,7 +118,7 @@ static void dump_matstmts(const MatStmtList *l, FILE *out, int depth);
 
 static void dump_matstmt(const MatStmt *m, FILE *out, int depth)
 {
-    static const char *const words[] = { "let", "stress", "energy", "state", "", "", "" };
+    static const char *const words[] = { "let", "stress", "energy", "state", "", "", "", "", "" };
     indent(out, depth);
     switch (m->kind) {
     case MS_LET:
@@ -147,6 +147,13 @@ static void dump_matstmt(const MatStmt *m, FILE *out, int depth)
         break;
     case MS_DISSIPATION:
         fprintf(out, "(dissipation %s)", m->name);
+        break;
+    case MS_REQUIRE:
+        fputs("(require ", out);
+        ast_dump_expr(m->value, out);
+        if (m->message)
+            fprintf(out, " \"%s\"", m->message);
+        fputc(')', out);
         break;
     case MS_ASSIGN:
         fprintf(out, "(= %s ", m->name);

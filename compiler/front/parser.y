@@ -313,7 +313,7 @@ static void report_unclosed(ParseState *ps, const YYLTYPE *at, int at_eof, const
 %token <char *> STRING "string"
 %token IMPORT "import" SCENE "scene" LET "let" FN "fn" MATERIAL "material" BODY "body"
 %token SHAPE "shape" STRESS "stress" ENERGY "energy" STATE "state" IF "if" ELSE "else"
-%token DISSIPATION "dissipation"
+%token DISSIPATION "dissipation" REQUIRE "require"
 %token VELOCITY "velocity" FORCE "force"
 %token FROM "from" TO "to" NEAR "near" MEASURE "measure" PLANE "plane"
 %token EXPECT "expect" REFERENCE "reference" WITHIN "within"
@@ -454,6 +454,9 @@ matstmt
                                           $$.body = $3; $$ = block_depth_limited($$); }
     | IDENT '=' expr                    { $$ = ast_matstmt(MS_ASSIGN, LOC(@1), $1, $3); }
     | DISSIPATION IDENT                 { $$ = ast_matstmt(MS_DISSIPATION, LOC(@2), $2, NULL); }
+    | REQUIRE expr                      { $$ = ast_matstmt(MS_REQUIRE, LOC(@1), NULL, $2); }
+    | REQUIRE expr ',' STRING           { $$ = ast_matstmt(MS_REQUIRE, LOC(@1), NULL, $2);
+                                          $$.message = $4; }
     ;
 
 else_opt
@@ -721,7 +724,7 @@ static int yyreport_syntax_error(const yypcontext_t *ctx, yyscan_t scanner, Pars
 
     if (bad == YYSYMBOL_STRING) {
         diag_error(loc, "unexpected string %.160s (strings are only file names, as in "
-                        "surface(file \"beam.vtk\"))", text);
+                        "surface(file \"beam.vtk\"), and the messages of requirements)", text);
         return 0;
     }
     if (want_close && is_toplevel_only(bad)) {

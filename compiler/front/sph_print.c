@@ -289,7 +289,7 @@ static void print_stmts(const MatStmtList *l, int depth, FILE *out);
 
 static void print_stmt(const MatStmt *s, int depth, FILE *out)
 {
-    static const char *const words[] = {"let", "stress", "energy", "state", "", "", ""};
+    static const char *const words[] = {"let", "stress", "energy", "state", "", "", "", "", ""};
     fprintf(out, "%*s", 2 * depth, "");
     switch (s->kind) {
     case MS_LET: case MS_STRESS: case MS_ENERGY: case MS_STATE:
@@ -311,6 +311,13 @@ static void print_stmt(const MatStmt *s, int depth, FILE *out)
         return;
     case MS_DISSIPATION:
         fprintf(out, "dissipation %s\n", s->name);
+        return;
+    case MS_REQUIRE:
+        fputs("require ", out);
+        sph_print_expr(s->value, out);
+        if (s->message)
+            fprintf(out, ", \"%s\"", s->message);
+        fputc('\n', out);
         return;
     case MS_ASSIGN:
         fprintf(out, "%s = ", s->name);

@@ -697,6 +697,8 @@ static int statement(Law *L, const MatStmt *s)
         return assign_stmt(L, s);
     case MS_DISSIPATION:
         return dissipation_stmt(L, s);
+    case MS_REQUIRE: /* a condition on the parameters, no part of the graph (check/law_require.c) */
+        return 0;
     }
     return -1;
 }
