@@ -32,6 +32,12 @@ static void @B@_gradient_halo_pairs(sph_body *b)
         double ui[D]; /* (read once for all of i's pairs) */
         for (int r = 0; r < D; r++)
             ui[r] = u[(size_t)i * D + r];
+//@if LAW_FDOT
+        @B@_tensor Adi = {0};
+        double vi[D];
+        for (int r = 0; r < D; r++)
+            vi[r] = b->v[(size_t)i * D + r];
+//@endif
 //@if FRACTURE
         double lapi = 0;
 //@endif
@@ -42,8 +48,15 @@ static void @B@_gradient_halo_pairs(sph_body *b)
 //@endif
             @B@_pair_tensor(u + (size_t)j * D, ui, wtab[xk[p]], &t);
             @B@_tensor_add(&Ai, &t);
+//@if LAW_FDOT
+            @B@_pair_tensor(b->v + (size_t)j * D, vi, wtab[xk[p]], &t);
+            @B@_tensor_add(&Adi, &t);
+//@endif
         }
         @B@_tensor_add_to(A + (size_t)i * D * R, &Ai);
+//@if LAW_FDOT
+        @B@_tensor_add_to(b->Ad + (size_t)i * D * R, &Adi);
+//@endif
 //@if FRACTURE
         lap[i] += lapi;
 //@endif
@@ -71,6 +84,13 @@ static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
     double ui[D]; /* (read once for all of i's pairs) */
     for (int r = 0; r < D; r++)
         ui[r] = u[(size_t)i * D + r];
+//@if LAW_FDOT
+    /* the velocity's gradient, for a law that reads the rate of F: the same pair sum of v */
+    @B@_tensor Adi = {0};
+    double vi[D];
+    for (int r = 0; r < D; r++)
+        vi[r] = b->v[(size_t)i * D + r];
+//@endif
 //@if QUADRATIC
     @B@_qvec aqi[D] = {{0}};
 //@endif
@@ -87,6 +107,11 @@ static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
         @B@_pair_tensor(u + (size_t)j * D, ui, wtab[hk[p]], &t);
         @B@_tensor_add(&Ai, &t);
         @B@_tensor_add_to(A + (size_t)j * D * R, &t);
+//@if LAW_FDOT
+        @B@_pair_tensor(b->v + (size_t)j * D, vi, wtab[hk[p]], &t);
+        @B@_tensor_add(&Adi, &t);
+        @B@_tensor_add_to(b->Ad + (size_t)j * D * R, &t);
+//@endif
 //@if QUADRATIC
         { /* the quadratic fit's sums (body_quadratic.c): q_ij is even, u_j - u_i odd */
             const @B@_qvec q = *(const @B@_qvec *)(b->qtab + (size_t)hk[p] * @B@_QR);
@@ -100,6 +125,9 @@ static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
 //@endif
     }
     @B@_tensor_add_to(A + (size_t)i * D * R, &Ai);
+//@if LAW_FDOT
+    @B@_tensor_add_to(b->Ad + (size_t)i * D * R, &Adi);
+//@endif
 //@if QUADRATIC
     for (int r = 0; r < D; r++)
         ((@B@_qvec *)(b->Aq + (size_t)i * D * @B@_QR))[r] += aqi[r];
@@ -198,7 +226,8 @@ static void @B@_gradient_pass(sph_body *b)
     /* On many processes the halo's values are on their way while the pairs of own particles
      * are summed; the pairs with the halo follow (docs/mpi.md).  What the pair passes read of
      * a neighbour: u here, and v for the viscosity and the pair terms of the momentum pass
-     * (unchanged until then), the phase field for its Laplacian. */
+     * (unchanged until then) and for the velocity's gradient here, the phase field for its
+     * Laplacian. */
     const sph_field halo_in[] = {
         SPH_FIELD(b->u, D),
 //@if PAIR_V
@@ -267,6 +296,9 @@ typedef struct {
 //@if CRUSH
     double lam2[@B@_BLOCK];
 //@endif
+//@if LAW_FDOT
+    double Ad[@DIM@ * @DIM@][@B@_BLOCK], Fd[@DIM@ * @DIM@][@B@_BLOCK];
+//@endif
 //@if LAW_DT
     double dt; /* the time since the law's last evaluation */
 //@endif
@@ -281,6 +313,11 @@ SPH_FLAT int @B@_stress_lane(@B@_stage *g, int q, int fast)
     double a[T], l[T], f[T], qq[T];
     for (int k = 0; k < T; k++)
         a[k] = g->A[k][q], l[k] = g->L[k][q];
+//@if LAW_FDOT
+    double ad[T], fd[T];
+    for (int k = 0; k < T; k++)
+        ad[k] = g->Ad[k][q];
+//@endif
 //@if VISCOSITY
     double cv[T];
 //@endif
@@ -293,6 +330,9 @@ SPH_FLAT int @B@_stress_lane(@B@_stage *g, int q, int fast)
     @B@_stress_of(a, l,
 //@if FRACTURE
                   g->s[q], g->lap[q], &g->H[q], &g->sdd[q],
+//@endif
+//@if LAW_FDOT
+                  ad, fd,
 //@endif
 //@if LAW_DT
                   g->dt,
@@ -313,6 +353,9 @@ SPH_FLAT int @B@_stress_lane(@B@_stage *g, int q, int fast)
                   );
     for (int k = 0; k < T; k++) {
         g->F[k][q] = f[k], g->Q[k][q] = qq[k];
+//@if LAW_FDOT
+        g->Fd[k][q] = fd[k];
+//@endif
 //@if VISCOSITY
         g->Cv[k][q] = cv[k];
 //@endif
@@ -383,6 +426,14 @@ static void @B@_stress_block(sph_body *b, int i0, int m)
             Ab[q * D * R + k] = 0; /* ready for the next step's gradient pass */
         for (int k = 0; k < T; k++)
             g.L[k][q] = Lb[q * T + k];
+//@if LAW_FDOT
+        sph_real *Adq = b->Ad + (size_t)(i0 + q) * D * R;
+        for (int r = 0; r < D; r++)
+            for (int c = 0; c < D; c++)
+                g.Ad[r * D + c][q] = Adq[r * R + c];
+        for (int k = 0; k < D * R; k++)
+            Adq[k] = 0;
+//@endif
 //@if FRACTURE
         g.s[q] = b->s[i0 + q], g.lap[q] = b->lap[i0 + q], g.H[q] = b->H[i0 + q];
         b->lap[i0 + q] = 0; /* ready for the next step's gradient pass */
@@ -403,6 +454,9 @@ static void @B@_stress_block(sph_body *b, int i0, int m)
         for (int r = 0; r < D; r++)
             for (int c = 0; c < D; c++) {
                 Fb[q * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] = g.F[r * D + c][q];
+//@if LAW_FDOT
+                b->Fd[i * 9 + (size_t)(sph_axis(D, r) * 3 + sph_axis(D, c))] = g.Fd[r * D + c][q];
+//@endif
                 Qb[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)g.Q[r * D + c][q];
 //@if VISCOSITY
                 Cb[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)g.Cv[r * D + c][q];

@@ -11,14 +11,17 @@ static void @B@_stress_output(sph_body *b)
         double ep;
         @B@_material(F, b->s[i], S, &e, &ep);
 //@else
+//@if LAW_FDOT
+        const double *Fd = b->Fd + (size_t)i * 9; /* the rate of the last stress pass */
+//@endif
 //@if LAW_DT
         const double dt = 0; /* no time passes: the law's response at its state */
 //@endif
 //@if STATE
         double st_new[@NSTATE@]; /* the state as the last step left it: not advanced here */
-        @B@_material(F, @LAW_DT_ARG@b->state + (size_t)i * @NSTATE@, st_new, S, &e);
+        @B@_material(F, @LAW_ARGS@b->state + (size_t)i * @NSTATE@, st_new, S, &e);
 //@else
-        @B@_material(F, @LAW_DT_ARG@S, &e);
+        @B@_material(F, @LAW_ARGS@S, &e);
 //@endif
 //@endif
         sph_mat3_mul(F, S, FS);

@@ -39,6 +39,10 @@ SPH_FN void @B@_phase_move(double *s, double *sd, double h)
 //@if STATE
  * The law's state st (plasticity) advances once per step, here: st_new.
 //@endif
+//@if LAW_FDOT
+ * Ad = sum_j V_j (v_j - v_i) (x) grad W_ij gives the rate Fd = dF/dt the law reads (Fdp: its
+ * in-plane block, out).
+//@endif
 //@if LAW_DT
  * dt: the time since the law's last evaluation (its state's step).
 //@endif
@@ -46,6 +50,9 @@ SPH_FN void @B@_phase_move(double *s, double *sd, double h)
 SPH_FLAT void @B@_stress_of(const double *A, const double *L,
 //@if FRACTURE
                             double s, double lap, double *H, double *sdd,
+//@endif
+//@if LAW_FDOT
+                            const double *Ad, double *Fdp,
 //@endif
 //@if LAW_DT
                             double dt,
@@ -74,6 +81,18 @@ SPH_FLAT void @B@_stress_of(const double *A, const double *L,
                 a += A[r * D + k] * L[c * D + k];
             F[sph_axis(D, r) * 3 + sph_axis(D, c)] += a;
         }
+//@if LAW_FDOT
+    /* dF/dt = Ad L^T, the velocity's corrected gradient as F's of the displacement */
+    double Fd[9] = {0};
+    for (int r = 0; r < D; r++)
+        for (int c = 0; c < D; c++) {
+            double a = 0;
+            for (int k = 0; k < D; k++)
+                a += Ad[r * D + k] * L[c * D + k];
+            Fd[sph_axis(D, r) * 3 + sph_axis(D, c)] = a;
+            Fdp[r * D + c] = a;
+        }
+//@endif
     double S[9], e;
 //@if FRACTURE
     /* eq. 63: a broken particle carries no deformation (a select, not a branch, like
@@ -92,14 +111,14 @@ SPH_FLAT void @B@_stress_of(const double *A, const double *L,
 //@if RARE
     /* fast: the law without its rare `if` blocks, *rare whether one was due */
     if (fast)
-        @B@_material_fast(F, @LAW_DT_ARG@st, st_new, S, &e, rare);
+        @B@_material_fast(F, @LAW_ARGS@st, st_new, S, &e, rare);
     else
-        @B@_material(F, @LAW_DT_ARG@st, st_new, S, &e);
+        @B@_material(F, @LAW_ARGS@st, st_new, S, &e);
 //@else
-    @B@_material(F, @LAW_DT_ARG@st, st_new, S, &e);
+    @B@_material(F, @LAW_ARGS@st, st_new, S, &e);
 //@endif
 //@else
-    @B@_material(F, @LAW_DT_ARG@S, &e);
+    @B@_material(F, @LAW_ARGS@S, &e);
 //@endif
 //@endif
     *psi = e;
@@ -161,9 +180,22 @@ SPH_FLAT void @B@_particle_stress(sph_body *b, int i, const double *A)
 //@if STATE
     double *st = b->state + (size_t)i * @NSTATE@, st_new[@NSTATE@];
 //@endif
+//@if LAW_FDOT
+    enum { R = SPH_ROW(D) };
+    double Ad[D * D], Fdp[D * D];
+    sph_real *Adi = b->Ad + (size_t)i * D * R;
+    for (int r = 0; r < D; r++)
+        for (int c = 0; c < D; c++)
+            Ad[r * D + c] = Adi[r * R + c];
+    for (int k = 0; k < D * R; k++)
+        Adi[k] = 0; /* ready for the next step's gradient pass */
+//@endif
     @B@_stress_of(A, b->L + (size_t)i * D * D,
 //@if FRACTURE
                   b->s[i], b->lap[i], &b->H[i], &b->sdd[i],
+//@endif
+//@if LAW_FDOT
+                  Ad, Fdp,
 //@endif
 //@if LAW_DT
                   b->law_dt,
@@ -192,6 +224,9 @@ SPH_FLAT void @B@_particle_stress(sph_body *b, int i, const double *A)
     for (int r = 0; r < D; r++)
         for (int c = 0; c < D; c++) {
             b->F[(size_t)i * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] = F[r * D + c];
+//@if LAW_FDOT
+            b->Fd[(size_t)i * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] = Fdp[r * D + c];
+//@endif
             b->Q[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)Q[r * D + c];
 //@if VISCOSITY
             b->Cv[SPH_TENSOR(i, r, c, D, b->n)] = (sph_real)Cv[r * D + c];

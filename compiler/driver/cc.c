@@ -364,10 +364,11 @@ int build_program(const Plan *plan, const Options *o, const Paths *paths)
                                               "a velocity condition instead"))
             return -1;
     for (int i = 0; i < m->nbodies && o->target == TARGET_CUDA; i++)
-        if (plan->bodies[i].law_dt) {
-            diag_error(m->bodies[i].law->loc, "material '%s' reads dt (body '%s'), which runs on "
+        if (plan->bodies[i].law_dt || plan->bodies[i].law_fdot) {
+            diag_error(m->bodies[i].law->loc, "material '%s' reads %s (body '%s'), which runs on "
                        "the CPU target; --target cuda needs a law without it",
-                       m->bodies[i].law->name, m->bodies[i].name);
+                       m->bodies[i].law->name, plan->bodies[i].law_dt ? "dt" : "a rate",
+                       m->bodies[i].name);
             return -1;
         }
     if (o->mpi && mpi_ready(m, o, paths))

@@ -37,8 +37,8 @@ static void body_env(const Emitter *E, const BodyModel *b, const BodyPlan *p, Tp
     /* the suffix of the pair terms in sph_real, the pair lists' type (_d or _f) */
     tpl_set(env, "RS", "%s", E->m->single ? LANES_F.S : LANES_D.S);
     tpl_set(env, "NSTATE", "%d", p->nstate);
-    /* the law's dt, where it reads one, among its material function's arguments */
-    tpl_set(env, "LAW_DT_ARG", "%s", p->law_dt ? "dt, " : "");
+    /* what the law reads besides F among its material function's arguments: Fd, dt */
+    tpl_set(env, "LAW_ARGS", "%s%s", p->law_fdot ? "Fd, " : "", p->law_dt ? "dt, " : "");
     int k = 0;
 #define PLAN_KEY(member, key, value, when)                                                    \
     if (p->numbers >> k++ & 1)                                                                 \

@@ -68,10 +68,12 @@ void emit_consts_fns(Emitter *E)
         fputs("\n", E->out);
 }
 
-/* The material function's dt argument, where its law reads one. */
+/* The material function's arguments after F: Fdot and dt, where its law reads them. */
 static const char *dt_arg(const BodyPlan *p)
 {
-    return p->law_dt ? "double dt, " : "";
+    static const char *const args[2][2] = {{"", "double dt, "},
+                                           {"const double Fd[9], ", "const double Fd[9], double dt, "}};
+    return args[p->law_fdot][p->law_dt];
 }
 
 void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
@@ -87,7 +89,8 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
     }
     const LawRoots *r = &p->roots;
     if (p->nstate) {
-        fprintf(out, ".\n * In: deformation gradient F (3x3),%s the particle's state st (%d values:",
+        fprintf(out, ".\n * In: deformation gradient F (3x3),%s%s the particle's state st (%d values:",
+                p->law_fdot ? " its rate Fd," : "",
                 p->law_dt ? " dt (the time since the law's last evaluation)," : "", p->nstate);
         for (int k = 0; k < r->nstates; k++)
             fprintf(out, " %s%s", r->states[k].name, r->states[k].size == 9 ? "[9]" : "");
@@ -97,14 +100,17 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
                      "double *st_new, double S[9],\n                                   double *psi)\n{\n",
                 b->name, dt_arg(p));
     } else {
-        fprintf(out, ".\n * In: deformation gradient F (3x3)%s. Out: second Piola-Kirchhoff "
-                     "stress S, strain energy density psi. */\n", p->law_dt ? ", dt" : "");
+        fprintf(out, ".\n * In: deformation gradient F (3x3)%s%s. Out: second Piola-Kirchhoff "
+                     "stress S, strain energy density psi. */\n", p->law_fdot ? ", its rate Fd" : "",
+                p->law_dt ? ", dt" : "");
         fprintf(out, "SPH_FLAT void %s_material(const double F[9], %sdouble S[9], double *psi)\n{\n",
                 b->name, dt_arg(p));
     }
     fputs(p->nstate ? "    (void)F;\n    (void)st;\n" : "    (void)F;\n", out);
     if (p->law_dt)
         fputs("    (void)dt;\n", out);
+    if (p->law_fdot)
+        fputs("    (void)Fd;\n", out);
     emit_law_body(out, p, 0);
     fputs("}\n\n", out);
     if (!p->rare)
@@ -118,6 +124,8 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
                  "double *st_new,\n                                        double S[9], "
                  "double *psi, double *rare)\n{\n", b->name, dt_arg(p));
     fputs(p->law_dt ? "    (void)F;\n    (void)dt;\n    (void)st;\n" : "    (void)F;\n    (void)st;\n", out);
+    if (p->law_fdot)
+        fputs("    (void)Fd;\n", out);
     emit_law_fast_body(out, p);
     fputs("}\n\n", out);
 }

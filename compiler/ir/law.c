@@ -32,6 +32,7 @@ typedef struct {
     const MaterialDef *law;
     const double *params;  /* NULL: symbolic parameters (checking) */
     double rho0;           /* the body's reference density; NaN: symbolic (checking) */
+    int dim;               /* the body's dimension (2: plane strain) */
     Binding *env;
     int nenv, capenv;
     int has_stress, has_energy;
@@ -197,13 +198,41 @@ static int volume_ratio(Law *L)
     return sg_call(L->g, BI_sqrt, t_det(L, C));
 }
 
+static Val F_value(Law *L, int dim, int all_inputs);
+
+/* dF/dt, the material function's input Fd: the corrected gradient of the velocity as F's of
+ * the displacement (the gradient pass), F's in-plane block in 2D (the rest 0). */
+static Val Fdot_value(Law *L)
+{
+    Val v = {1, -1, {0}};
+    for (int k = 0; k < 9; k++)
+        v.t[k] = L->dim == 2 && (k / 3 == 1 || k % 3 == 1) ? sg_const(L->g, 0.0)
+                                                         : sg_input(L->g, LAW_INPUT_FDOT, k);
+    return v;
+}
+
+/* dC/dt = Fdot^T F + F^T Fdot, from F itself (the law's energy may be one of C). */
+static Val Cdot_value(Law *L)
+{
+    const Val F = F_value(L, L->dim, 0), Fd = Fdot_value(L);
+    const Val a = t_matmul(L, t_transpose(Fd), F);
+    return t_map2(L, SN_ADD, a, t_transpose(a));
+}
+
 /* What a law reads besides F (or C, E), its parameters and state: the step of its update
- * dt (an input of the material function), the volume ratio J, the reference density rho0
- * (the body's) and the current density rho = rho0 / J.  BAD for another name. */
+ * dt (an input of the material function), the rates Fdot, Cdot and Edot (from the velocity
+ * gradient, an input too), the volume ratio J, the reference density rho0 (the body's) and
+ * the current density rho = rho0 / J.  BAD for another name. */
 static Val law_input(Law *L, const char *name)
 {
     if (!strcmp(name, LAW_INPUT_DT))
         return scalar(sg_input(L->g, LAW_INPUT_DT, -1));
+    if (!strcmp(name, "Fdot"))
+        return Fdot_value(L);
+    if (!strcmp(name, "Cdot"))
+        return Cdot_value(L);
+    if (!strcmp(name, "Edot"))
+        return t_map2(L, SN_MUL, Cdot_value(L), scalar(sg_const(L->g, 0.5)));
     if (!strcmp(name, "J"))
         return scalar(volume_ratio(L));
     const int rho0 = isnan(L->rho0) ? sg_input(L->g, "rho0", -1) : sg_const(L->g, L->rho0);
@@ -1013,24 +1042,27 @@ static SrcLoc energy_loc(const MaterialDef *law, int line)
 }
 
 /* An energy is a function of the deformation and the state: one that reads the step of the
- * update dt other than through the state's end values (held, as for the derived stress) is a
- * modelling error, at its line.  Returns 0, or -1 after reporting. */
+ * update dt or a rate other than through the state's end values (held, as for the derived
+ * stress) is a modelling error, at its line.  Returns 0, or -1 after reporting. */
 static int energy_reads_rate(Law *L)
 {
     const struct { int psi, line, on; const char *what; } energies[] = {
         {L->out.psi, L->energy_line, 1, "energy"},
         {L->out.psip, L->tension_energy_line, L->out.has_tension, "tensile energy"},
     };
-    for (int k = 0; k < 2; k++) {
-        if (!energies[k].on ||
-            sg_input_reached(L->g, energies[k].psi, L->out.next, L->out.nslots, LAW_INPUT_DT) < 0)
-            continue;
-        diag_error(energy_loc(L->law, energies[k].line), "the %s of material '%s' reads dt: an energy is a function of the "
-                        "deformation and the state; a rate enters through the state's update "
-                        "(state Cv = ..., Cv = ... dt ...), whose end value the energy may read",
-                   energies[k].what, L->law->name);
-        return -1;
-    }
+    static const char *const rates[][2] = {{LAW_INPUT_DT, "dt"}, {LAW_INPUT_FDOT, "a rate (Fdot, Cdot or Edot)"}};
+    for (int k = 0; k < 2; k++)
+        for (int q = 0; q < 2 && energies[k].on; q++) {
+            if (sg_input_reached(L->g, energies[k].psi, L->out.next, L->out.nslots,
+                                 rates[q][0]) < 0)
+                continue;
+            diag_error(energy_loc(L->law, energies[k].line), "the %s of material '%s' reads %s: "
+                       "an energy is a function of the deformation and the state; a rate enters "
+                       "through the state's update (state Cv = ..., Cv = ... dt ...), whose end "
+                       "value the energy may read, or a written stress", energies[k].what,
+                       L->law->name, rates[q][1]);
+            return -1;
+        }
     return 0;
 }
 
@@ -1055,6 +1087,7 @@ int law_build(SGraph *g, const Model *m, const MaterialDef *law, const BodyModel
     L.law = law;
     L.params = b ? b->law_args : NULL;
     L.rho0 = b ? b->rho0 : NAN;
+    L.dim = dim;
     L.g->line = law->loc.line;
     L.g->file = law->loc.file;
     const int derived = !writes_stress(&law->body);

@@ -78,6 +78,8 @@ int law_check(const Model *m, const MaterialDef *law);
 #define LAW_INPUT_STATE "st"
 /* The step of the law's update: the time since its last evaluation (a scalar argument). */
 #define LAW_INPUT_DT "dt"
+/* dF/dt (Fd[k], row-major): the corrected gradient of the velocity. */
+#define LAW_INPUT_FDOT "Fd"
 /* The variables of an energy given as psi(C) or psi(E), replaced by F's before emission. */
 #define LAW_INPUT_C "C"
 #define LAW_INPUT_E "E"

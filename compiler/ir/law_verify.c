@@ -86,8 +86,8 @@ static double input_at(const char *name, int index, void *ctx)
         return p->r->init[index];
     if (!strcmp(name, LAW_INPUT_S))
         return 1.0;
-    if (!strcmp(name, LAW_INPUT_DT)) /* the instantaneous response: no time for the state */
-        return 0.0;
+    if (!strcmp(name, LAW_INPUT_DT) || !strcmp(name, LAW_INPUT_FDOT))
+        return 0.0; /* the response at rest: no time for the state, no rate */
     return NAN; /* C or E: replaced by F's, dead */
 }
 

@@ -34,6 +34,8 @@ static const char *pair_terms(const BodyPlan *p)
 
 /* (the quadratic fit's pair sums ride with the lists' pairs: templates/body_quadratic.c) */
 #define QUADRATIC "the quadratic gradient (its pair sums ride with the lists')"
+/* (so does the velocity's gradient of a law that reads Fdot, Cdot or Edot) */
+#define FDOT "its law reads a rate (the velocity's gradient rides with the lists' pairs)"
 
 const char *layout_gradient_blocks_refused(const Model *m, const BodyPlan *p)
 {
@@ -43,7 +45,7 @@ const char *layout_gradient_blocks_refused(const Model *m, const BodyPlan *p)
         return "fracture (the phase field's Laplacian rides with the lists' pairs)";
     if (p->quadratic)
         return QUADRATIC;
-    return NULL;
+    return p->law_fdot ? FDOT : NULL;
 }
 
 const char *layout_momentum_blocks_refused(const Model *m, const BodyPlan *p)
@@ -65,6 +67,8 @@ const char *layout_stencil_momentum_refused(const Model *m, const BodyPlan *p)
         return "3D";
     if (p->quadratic)
         return QUADRATIC;
+    if (p->law_fdot) /* (the run-time set-up then makes no stencil) */
+        return FDOT;
     return p->pair_terms ? pair_terms(p) : NULL;
 }
 
@@ -83,8 +87,8 @@ static void line(FILE *out, const char *pass, const char *layout, const char *wh
 void layouts_dump(const Model *m, const BodyPlan *p, FILE *out)
 {
     if (m->dim == 2) {
-        if (p->quadratic)
-            line(out, "gradient", "half lists", QUADRATIC);
+        if (p->quadratic || p->law_fdot)
+            line(out, "gradient", "half lists", p->quadratic ? QUADRATIC : FDOT);
         else
             line(out, "gradient", STENCIL, NULL);
         const char *why = layout_stencil_momentum_refused(m, p);

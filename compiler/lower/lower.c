@@ -123,10 +123,10 @@ int lower_model(const Model *m, Plan *plan)
                          "dp 1 mm, docs/verification.md); 'gradient linear' suits flow",
                          b->name, b->law->name);
         features(m, b, &p->roots, p);
-        if (built && p->fracture && p->law_dt) {
+        if (built && p->fracture && (p->law_dt || p->law_fdot)) {
             diag_error(b->fracture.loc, "fracture cannot be combined with material '%s', which "
-                       "reads dt: the paper's phase field is for elastic materials (section "
-                       "2.3.3, remark 3)", b->law->name);
+                       "reads %s: the paper's phase field is for elastic materials (section "
+                       "2.3.3, remark 3)", b->law->name, p->law_dt ? "dt" : "a rate");
             bad = 1;
         }
         if (p->rare && law_fast(&p->law, &p->roots, &p->fast, &p->fast_flag))

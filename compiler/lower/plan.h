@@ -28,6 +28,7 @@
     X(restrict_phase, "restrict", RESTRICT, b->fracture.restrict_expr != NULL)                     \
     X(state, "state", STATE, r->nslots > 0) /* its law has state (plasticity) */                   \
     X(law_dt, NULL, LAW_DT, law_reads(&p->law, r, LAW_INPUT_DT)) /* its law reads dt */      \
+    X(law_fdot, NULL, LAW_FDOT, law_reads(&p->law, r, LAW_INPUT_FDOT)) /* ... and Fdot */   \
     X(contact, "contact", CONTACT, model_has_contact(m)) /* between the scene's bodies */          \
     X(crush, "crush", CRUSH, model_has_crush(m)) /* time step bound on compression */              \
     X(measure, "measure", MEASURE, b->nmeasures > 0) /* measurement planes */                      \
@@ -36,7 +37,8 @@
     X(clamp, NULL, CLAMP, b->has_clamp) /* a clamp by mirror images (runtime/run/clamp.c) */    \
     X(symplectic, NULL, SYMPLECTIC, m->integrator == INTEGRATOR_SYMPLECTIC) /* else Verlet */      \
     X(pair_terms, NULL, PAIR_TERMS, plan_has_pair_terms(p)) /* any term of B_pair_terms */       \
-    X(pair_v, NULL, PAIR_V, p->viscosity || p->pair_terms) /* pairs read v of a neighbour */    \
+    X(pair_v, NULL, PAIR_V, /* pairs read v of a neighbour */                                 \
+      p->viscosity || p->pair_terms || p->law_fdot)                                            \
     X(dim3, NULL, DIM3, m->dim == 3) /* else 2D (plane strain) */                               \
     X(staged, NULL, STAGED, stress_staged(m, r, &p->law)) /* the CPU's stress pass by blocks */ \
     X(rare, NULL, RARE, p->staged && !p->fracture && r->nrare > 0) /* and its law's fast path */ \

@@ -106,8 +106,11 @@ void plan_dump(const Plan *plan, FILE *out)
         fputs("\n", out);
         layouts_dump(m, p, out);
         law_summary(p, b->law, out);
-        if (p->law_dt)
-            fputs("  the law reads: dt (the time since its last evaluation)\n", out);
+        if (p->law_dt || p->law_fdot)
+            fprintf(out, "  the law reads:%s%s\n",
+                    p->law_dt ? " dt (the time since its last evaluation)" : "",
+                    p->law_fdot ? (p->law_dt ? ", Fdot (the velocity's gradient)"
+                                             : " Fdot (the velocity's gradient)") : "");
         law_graph(p, 0, out);
         if (p->rare) {
             fprintf(out, "  fast path (the CPU's stress pass; no `if` without `else` taken, rare "

@@ -137,6 +137,10 @@ static void allocate(sph_body *b)
     b->A = zalloc_lines(n * SPH_TENSOR_SIZE(D), sizeof *b->A);
     b->Cv = zalloc_lines(n * SPH_TENSOR_SIZE(D), sizeof *b->Cv);
     b->Cs = zalloc(n, sizeof *b->Cs);
+    if (b->desc->fdot) {
+        b->Ad = zalloc_lines(n * SPH_TENSOR_SIZE(D), sizeof *b->Ad);
+        b->Fd = zalloc(n * 9, sizeof(double));
+    }
     if (b->desc->quadratic) {
         b->Aq = zalloc_lines(n * D * SPH_QR(D), sizeof *b->Aq);
         b->Qq = zalloc_lines(n * SPH_QN(D) * SPH_ROW(D), sizeof *b->Qq);
@@ -706,7 +710,7 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, doub
     SPH_TIMED("set-up: offset blocks", sph_offset_blocks_setup(b));
     SPH_TIMED("set-up: half lists and stripes", half_lists(b));
     SPH_TIMED("set-up: momentum blocks", sph_momentum_blocks_setup(b));
-    if (!d->quadratic) /* (its runs sum the linear moments only) */
+    if (!d->quadratic && !d->fdot) /* (its runs sum the linear moments of u only) */
         SPH_TIMED("set-up: lattice stencil", sph_stencil_setup(b));
     SPH_TIMED("set-up: arrays", allocate(b));
     SPH_TIMED("set-up: BC and plane selections", selections(b, d, t_end));
@@ -732,6 +736,7 @@ void sph_body_free(sph_body *b)
     free(b->hb_start), free(b->hb), free(b->hb_k), free(b->stripe), free(b->stripe_sum), free(b->A);
     free(b->s), free(b->sd), free(b->sdd), free(b->H), free(b->lap), free(b->sd_n);
     free(b->ltab), free(b->state), free(b->qtab), free(b->Aq), free(b->Qq), free(b->Mq);
+    free(b->Ad), free(b->Fd);
     free(b->image), free(b->image_of);
     free(b->st_k), free(b->st_o), free(b->st_run);
     free(b->rest), free(b->rest_start), free(b->rest_j), free(b->rest_k);

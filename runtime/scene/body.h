@@ -158,6 +158,9 @@ struct sph_body {
     double *red;
 
     double *state;        /* n*nstate state of the material law (NULL without state) */
+    sph_real *Ad;         /* n D x D, rows like A's: sum_j V_j (v_j - v_i) (x) grad W_ij (a law
+                           * that reads the rate of F; NULL otherwise) */
+    double *Fd;           /* n*9 its rate dF/dt = Ad L^T, as the last stress pass left it */
     double law_dt;        /* the time since the law's last evaluation (a law that reads dt:
                            * the step sets it before the stress pass, from sph_sim.dt_prev) */
 

@@ -74,6 +74,8 @@ typedef struct {
     int clamp;
     double clamp_p[3], clamp_n[3];
     const char *clamp_where;    /* its model line, for messages */
+    int fdot;                   /* 1: the law reads the rate of F (the gradient pass sums the
+                                   velocity's gradient into Ad; CPU lists) */
     int quadratic;              /* 1: the corrected gradient exact for quadratic fields, with
                                    its strain-gradient quadrature (pairs/quadratic.h); CPU */
     int offset_blocks;          /* the CPU's pair passes by offset blocks where the body is a
