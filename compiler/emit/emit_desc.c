@@ -187,6 +187,11 @@ static void bodies_desc(Emitter *E)
             fprintf(out, "        .nstate = %d,\n        .state_init = %s_state_init,\n"
                          "        .state_names = %s_state_names,\n",
                     E->plans[i].nstate, b->name, b->name);
+        if (E->plans[i].roots.temperature)
+            fprintf(out, "        .temperature = %d, /* the temperature in state value %d */\n"
+                         "        .heat_capacity = %.17g, /* its specific heat, J/(kg K) */\n",
+                    E->plans[i].roots.temperature, E->plans[i].roots.temperature - 1,
+                    E->plans[i].roots.heat_capacity);
         if (E->plans[i].roots.dissipation)
             fprintf(out, "        .dissipation = %d, /* plastic work in state value %d */\n",
                     E->plans[i].roots.dissipation, E->plans[i].roots.dissipation - 1);

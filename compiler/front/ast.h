@@ -84,7 +84,8 @@ typedef enum {
     MS_BLOCK,  /* named block, e.g. tension { ... }       */
     MS_ASSIGN, /* name = expr          (a new value of a let or state) */
     MS_DISSIPATION, /* dissipation name: state `name` is the dissipated energy density */
-    MS_REQUIRE /* require cond [, "message"]: what the parameters must satisfy (law_require.c) */
+    MS_REQUIRE, /* require cond [, "message"]: what the parameters must satisfy (law_require.c) */
+    MS_TEMPERATURE /* temperature name, c: state `name` is a temperature, c its specific heat */
 } MatStmtKind;
 
 typedef struct MatStmt MatStmt;
@@ -97,7 +98,8 @@ struct MatStmt {
     MatStmtKind kind;
     SrcLoc loc;
     char *name;        /* LET/STRESS/ENERGY/STATE/ASSIGN target, BLOCK name */
-    Expr *value;       /* LET/STRESS/ENERGY/STATE/ASSIGN value, IF/REQUIRE condition */
+    Expr *value;       /* LET/STRESS/ENERGY/STATE/ASSIGN value, IF/REQUIRE condition,
+                        * TEMPERATURE specific heat */
     MatStmtList body;  /* IF then-part, BLOCK contents */
     MatStmtList orelse;/* IF else-part */
     int depth;         /* levels of blocks from here down: 1 for a statement without */

@@ -477,9 +477,34 @@ static int not_in_if(Law *L, const MatStmt *s, const char *what)
     return -1;
 }
 
+/* Whether node reads an input of the law (F, the state, ...): a value that is not a
+ * constant once the parameters are known. */
+static int reads_input(const SGraph *g, int node)
+{
+    char *live = calloc((size_t)g->n + 1, 1);
+    sg_mark_live(g, &node, 1, live);
+    int reads = 0;
+    for (int id = 0; id <= node && !reads; id++)
+        reads = live[id] && g->nodes[id].op == SN_INPUT;
+    free(live);
+    return reads;
+}
+
+/* A value that must be known for each body before it runs (a state's initial value, a
+ * specific heat): a constant, or symbolic in the law's parameters while the law is checked
+ * alone (*v NaN then).  Returns 0, or -1 where it reads an input of the law. */
+static int body_constant(Law *L, int node, double *v)
+{
+    if (sg_is_const(L->g, node, v))
+        return 0;
+    *v = NAN;
+    return L->params || reads_input(L->g, node) ? -1 : 0;
+}
+
 /* state name = initial value: a per-particle variable read at the start of the law (graph
  * inputs) whose value at the end of the law is stored back.  The initial value must be a
- * constant (a number or a constant tensor such as I). */
+ * constant (a number or a constant tensor such as I) or an expression of the law's
+ * parameters (a reference temperature). */
 static int state_stmt(Law *L, const MatStmt *s)
 {
     if (L->in_if || L->in_tension)
@@ -501,9 +526,9 @@ static int state_stmt(Law *L, const MatStmt *s)
     Val in = v;
     for (int k = 0; k < size; k++) {
         int node = v.tensor ? v.t[k] : v.s;
-        if (!sg_is_const(L->g, node, &r->init[r->nslots + k])) {
-            diag_error(s->value->loc, "the initial value of state '%s' must be a constant",
-                       s->name);
+        if (body_constant(L, node, &r->init[r->nslots + k])) {
+            diag_error(s->value->loc, "the initial value of state '%s' must be a constant or "
+                       "an expression of the law's parameters", s->name);
             return -1;
         }
         int input = sg_input(L->g, LAW_INPUT_STATE, r->nslots + k);
@@ -535,6 +560,40 @@ static int dissipation_stmt(Law *L, const MatStmt *s)
                        "names one, e.g. state wp = 0)",
                s->name, L->law->name);
     return -1;
+}
+
+/* temperature name, c: the scalar state variable `name` is the particle's temperature [K],
+ * of specific heat c [J/(kg K)] (a constant or an expression of the parameters): the
+ * program reports the body's heat, sum m c (T - T at the start), and writes T to the VTU
+ * files. */
+static int temperature_stmt(Law *L, const MatStmt *s)
+{
+    LawRoots *r = &L->out;
+    if (L->in_if || L->in_tension)
+        return not_in_if(L, s, "a temperature declaration");
+    if (r->temperature) {
+        diag_error(s->loc, "material '%s' declares its temperature twice", L->law->name);
+        return -1;
+    }
+    int slot = -1;
+    for (int v = 0; v < r->nstates; v++)
+        if (!strcmp(r->states[v].name, s->name) && r->states[v].size == 1)
+            slot = r->states[v].offset;
+    if (slot < 0) {
+        diag_error(s->loc, "'%s' is not a scalar state variable of material '%s' (temperature "
+                           "names one, e.g. state T = T0)", s->name, L->law->name);
+        return -1;
+    }
+    Val c = need_scalar(s->value, eval(L, s->value), "a specific heat");
+    if (!ok(c))
+        return -1;
+    if (body_constant(L, c.s, &r->heat_capacity)) {
+        diag_error(s->value->loc, "the specific heat of material '%s' must be a constant or an "
+                   "expression of its parameters", L->law->name);
+        return -1;
+    }
+    r->temperature = 1 + slot;
+    return 0;
 }
 
 /* name = expr: a new value of a let or a state variable, of the same type. */
@@ -728,6 +787,8 @@ static int statement(Law *L, const MatStmt *s)
         return assign_stmt(L, s);
     case MS_DISSIPATION:
         return dissipation_stmt(L, s);
+    case MS_TEMPERATURE:
+        return temperature_stmt(L, s);
     case MS_REQUIRE: /* a condition on the parameters, no part of the graph (check/law_require.c) */
         return 0;
     }

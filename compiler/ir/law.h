@@ -30,6 +30,8 @@ typedef struct {
     double init[LAW_MAX_SLOTS];  /* their initial values */
     int next[LAW_MAX_SLOTS];     /* their values at the end of the law (graph nodes) */
     int dissipation;             /* 1 + the slot of the dissipated energy density; 0: none */
+    int temperature;             /* 1 + the slot of the temperature [K]; 0: none */
+    double heat_capacity;        /* its specific heat [J/(kg K)] (NaN: symbolic parameters) */
     int rare[LAW_MAX_RARE];      /* the conditions of the law's `if` blocks without `else`
                                   * (not nested, not in the tension block): a return map's
                                   * `if f > 0 { ... }`, which most particles do not take */

@@ -1,6 +1,7 @@
 /* lower.c — from the checked model to per-body kernel plans: dead-feature elimination
  * (only what the body uses is switched on) and the material law folded for the body's
  * constants and dimension. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -112,6 +113,12 @@ int lower_model(const Model *m, Plan *plan)
             law_verify(m, b);
         if (built)
             law_verify_moduli(m, b);
+        const double c = p->roots.heat_capacity;
+        if (built && p->roots.temperature && !(c > 0 && isfinite(c))) {
+            diag_error(b->loc, "body '%s': material '%s' gives a specific heat of %g J/(kg K): "
+                       "it must be a positive number", b->name, b->law->name, c);
+            built = 0;
+        }
         bad |= !built;
         p->nstate = p->roots.nslots;
         /* the quadratic gradient's strain-gradient term is elastic (templates/body_quadratic.c):

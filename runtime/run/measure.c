@@ -61,6 +61,18 @@ double sph_dissipated_energy(const sph_body *b)
     return w * b->vol;
 }
 
+double sph_thermal_energy(const sph_body *b)
+{
+    const int slot = b->desc->temperature - 1, ns = b->desc->nstate;
+    if (slot < 0 || !b->state)
+        return 0.0;
+    const double T0 = b->desc->state_init[slot];
+    double dT = 0;
+    for (int i = 0; i < b->nown; i++)
+        dT += b->state[(size_t)i * ns + slot] - T0;
+    return b->mass * b->desc->heat_capacity * dT;
+}
+
 void sph_measure(const sph_body *b, int k, double out[6])
 {
     memset(out, 0, 6 * sizeof(double));

@@ -15,6 +15,9 @@ void sph_body_energies(const sph_body *b, double *strain, double *kinetic);
 double sph_fracture_energy(const sph_body *b);
 /* Energy a body has dissipated in its material law (plastic work): sum V w; 0 without. */
 double sph_dissipated_energy(const sph_body *b);
+/* The heat a body's law has put into its particles (a law with a temperature T of specific
+ * heat c): sum m c (T - T at the start); 0 without. */
+double sph_thermal_energy(const sph_body *b);
 
 /* A growable time series of one measured quantity set. */
 typedef struct {

@@ -126,7 +126,8 @@ static void catch_stop_signals(void)
  * new columns go after them.  The kind says which of the two totals a column joins (the
  * kinetic energy, or the rest); TOTAL is their sum. */
 typedef enum { BLOCK, EACH, SCENE } energy_layout;
-typedef enum { HELD, KINETIC, DISSIPATED, TOTAL } energy_kind;
+typedef enum { HELD, KINETIC, DISSIPATED, TOTAL, WITHIN } energy_kind; /* WITHIN: a part of
+                                                                          * another column's */
 
 typedef struct {
     const char *name;
@@ -141,6 +142,7 @@ typedef struct {
 static int every(const sph_model *m, int i) { return (void)m, (void)i, 1; }
 static int with_fracture(const sph_model *m, int i) { return m->bodies[i].fracture != NULL; }
 static int with_dissipation(const sph_model *m, int i) { return m->bodies[i].dissipation > 0; }
+static int with_temperature(const sph_model *m, int i) { return m->bodies[i].temperature > 0; }
 static int with_contact(const sph_model *m, int i) { return (void)i, m->contact != NULL; }
 
 /* The contacts' stored (which 0) or dissipated (1) energy. */
@@ -161,6 +163,10 @@ static double fracture(const sph_sim *s, int i, const double *e)
 static double plastic(const sph_sim *s, int i, const double *e)
 {
     return (void)e, sph_dissipated_energy(&s->bodies[i]);
+}
+static double thermal(const sph_sim *s, int i, const double *e)
+{
+    return (void)e, sph_thermal_energy(&s->bodies[i]);
 }
 
 /* A body's step sum k, x on this process, as a row of energies.csv adds it up over the
@@ -206,6 +212,8 @@ static const energy_column ENERGY_COLUMNS[] = {
     {"kinetic", BLOCK, KINETIC, every, kinetic},
     {"fracture", EACH, HELD, with_fracture, fracture}, /* crack surface energy */
     {"plastic", EACH, DISSIPATED, with_dissipation, plastic}, /* the material law's */
+    /* the heat of a law with a temperature: a part of what it dissipated, not added again */
+    {"thermal", EACH, WITHIN, with_temperature, thermal},
     /* the step sums' (scene/step_sums.h): viscous, artificial viscosity's */
 #define STEP_SUM_ROW(member, SLOT, reduce, initial, saved, column, kind, when) \
     {column, EACH, kind, has_##member, sum_##member},
@@ -254,7 +262,8 @@ static void energy_totals(const energy_slot *slot, const double *v, int n, int n
     total[0] = total[1] = 0;
     for (int i = 0; i < nbodies; i++)
         for (int k = 0; k < n; k++)
-            if (slot[k].body == i && slot[k].col->kind != DISSIPATED)
+            if (slot[k].body == i && slot[k].col->kind != DISSIPATED &&
+                slot[k].col->kind != WITHIN)
                 total[slot[k].col->kind == KINETIC] += v[k];
     for (int k = 0; k < n; k++)
         if (slot[k].body >= 0 && slot[k].col->kind == DISSIPATED)

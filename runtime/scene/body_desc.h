@@ -65,6 +65,9 @@ typedef struct {
                                        (written to the VTU files), NULL for tensor entries */
     int dissipation;            /* 1 + the state value holding the dissipated energy density
                                    (plastic work); 0: none */
+    int temperature;            /* 1 + the state value holding the temperature [K]; 0: none */
+    double heat_capacity;       /* its specific heat [J/(kg K)]: the body's heat is
+                                   sum m c (T - T at the start) */
     int viscous;                /* 1: artificial viscosity, whose dissipated energy the run
                                    reports */
     int crush;                  /* 1: the time step follows the current spacing where the body
