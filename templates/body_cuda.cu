@@ -45,8 +45,19 @@ SPH_FN int @B@_pair(const sph_body *b, int i, int s, int *k, sph_real w[@DIM@], 
 }
 
 /* Pass 1-2, per particle: A_i = sum_j V_j (u_j - u_i) (x) grad W_ij over the particle's
- * full list, then F, the law, P L and cof(F) (@B@_particle_stress, body_particle.c). */
-static void @B@_stress_pass(sph_body *b)
+ * full list, then F, the law, P L and cof(F) (@B@_particle_stress, body_particle.c).
+//@if LAW_FDOT
+ * Over the same pairs the velocity's gradient Ad_i, for the rate of F the law reads.
+//@endif
+//@if LAW_DT
+ * law_dt: the time since the law's last evaluation (a value, or the device clock's).
+//@endif
+ */
+static void @B@_stress_pass(sph_body *b
+//@if LAW_DT
+                            , sph_time law_dt
+//@endif
+                            )
 {
     enum { D = @DIM@ };
 //@if MPI
@@ -63,11 +74,19 @@ static void @B@_stress_pass(sph_body *b)
     sph_cuda_halo(b, halo_in, sizeof halo_in / sizeof *halo_in);
 //@endif
     const double *u = sph_cuda_components(b->u, b->us, b->n, D); /* u_x of all, u_y, ... */
+//@if LAW_FDOT
+    const double *v = sph_cuda_components(b->v, b->vs, b->n, D);
+//@endif
     SPH_FOR(i, b->nown, {
         const size_t n = (size_t)b->n;
         double A[D * D] = {0}, ui[D];
         for (int r = 0; r < D; r++)
             ui[r] = u[SPH_VEC(i, r, D, n)];
+//@if LAW_FDOT
+        double Ad[D * D] = {0}, vi[D];
+        for (int r = 0; r < D; r++)
+            vi[r] = v[SPH_VEC(i, r, D, n)];
+//@endif
 //@if FRACTURE
         double lap = 0; /* the Laplacian of the phase field (eq. 62) over the same pairs */
 //@endif
@@ -79,6 +98,11 @@ static void @B@_stress_pass(sph_body *b)
             for (int r = 0; r < D; r++)
                 d[r] = u[SPH_VEC(j, r, D, n)] - ui[r];
             @B@_gradient_term_d(A, d, w);
+//@if LAW_FDOT
+            for (int r = 0; r < D; r++) /* v_j - v_i, the same term */
+                d[r] = v[SPH_VEC(j, r, D, n)] - vi[r];
+            @B@_gradient_term_d(Ad, d, w);
+//@endif
 //@if FRACTURE
             lap += l * (b->s[i] - b->s[j]);
 //@endif
@@ -86,7 +110,14 @@ static void @B@_stress_pass(sph_body *b)
 //@if FRACTURE
         b->lap[i] = lap;
 //@endif
-        @B@_particle_stress(b, i, A);
+        @B@_particle_stress(b, i, A
+//@if LAW_FDOT
+                            , Ad
+//@endif
+//@if LAW_DT
+                            , (double)law_dt
+//@endif
+                            );
     });
 }
 
@@ -168,9 +199,17 @@ static void @B@_momentum_pass(sph_body *b)
     });
 }
 
-static void @B@_forces(sph_body *b)
+static void @B@_forces(sph_body *b
+//@if LAW_DT
+                       , sph_time law_dt
+//@endif
+                       )
 {
-    @B@_stress_pass(b);
+    @B@_stress_pass(b
+//@if LAW_DT
+                    , law_dt
+//@endif
+                    );
     @B@_momentum_pass(b);
 }
 

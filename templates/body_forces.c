@@ -517,7 +517,23 @@ SPH_IVDEP /* particle i reads and writes entry i of arrays that never overlap */
                     A[r * D + c] = Ai[r * R + c];
             for (int k = 0; k < D * R; k++)
                 Ai[k] = 0; /* ready for the next step's gradient pass */
-            @B@_particle_stress(b, i, A);
+//@if LAW_FDOT
+            sph_real *Adi = b->Ad + (size_t)i * D * R; /* the velocity's, the same way */
+            double Ad[D * D];
+            for (int r = 0; r < D; r++)
+                for (int c = 0; c < D; c++)
+                    Ad[r * D + c] = Adi[r * R + c];
+            for (int k = 0; k < D * R; k++)
+                Adi[k] = 0;
+//@endif
+            @B@_particle_stress(b, i, A
+//@if LAW_FDOT
+                                , Ad
+//@endif
+//@if LAW_DT
+                                , b->law_dt
+//@endif
+                                );
 //@if VISCOSITY
             @B@_spare_Cs(b, i);
 //@endif

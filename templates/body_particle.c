@@ -169,8 +169,22 @@ SPH_FLAT void @B@_stress_of(const double *A, const double *L,
 //@if ONE_PARTICLE
 /* One particle's stress (@B@_stress_of) from A_i and the body's arrays, the results into
  * them: the CUDA target's thread of a particle, and the CPU's stress pass where it runs over
- * the body's arrays themselves (body_forces.c). */
-SPH_FLAT void @B@_particle_stress(sph_body *b, int i, const double *A)
+ * the body's arrays themselves (body_forces.c).
+//@if LAW_FDOT
+ * Ad: the particle's sum of the velocity's gradient (D x D), for the rate of F.
+//@endif
+//@if LAW_DT
+ * dt: the time since the law's last evaluation.
+//@endif
+ */
+SPH_FLAT void @B@_particle_stress(sph_body *b, int i, const double *A
+//@if LAW_FDOT
+                                  , const double *Ad
+//@endif
+//@if LAW_DT
+                                  , double dt
+//@endif
+                                  )
 {
     enum { D = @DIM@ };
     double F[D * D], Q[D * D];
@@ -181,14 +195,7 @@ SPH_FLAT void @B@_particle_stress(sph_body *b, int i, const double *A)
     double *st = b->state + (size_t)i * @NSTATE@, st_new[@NSTATE@];
 //@endif
 //@if LAW_FDOT
-    enum { R = SPH_ROW(D) };
-    double Ad[D * D], Fdp[D * D];
-    sph_real *Adi = b->Ad + (size_t)i * D * R;
-    for (int r = 0; r < D; r++)
-        for (int c = 0; c < D; c++)
-            Ad[r * D + c] = Adi[r * R + c];
-    for (int k = 0; k < D * R; k++)
-        Adi[k] = 0; /* ready for the next step's gradient pass */
+    double Fdp[D * D];
 //@endif
     @B@_stress_of(A, b->L + (size_t)i * D * D,
 //@if FRACTURE
@@ -198,7 +205,7 @@ SPH_FLAT void @B@_particle_stress(sph_body *b, int i, const double *A)
                   Ad, Fdp,
 //@endif
 //@if LAW_DT
-                  b->law_dt,
+                  dt,
 //@endif
 //@if STATE
                   st, st_new,

@@ -363,14 +363,6 @@ int build_program(const Plan *plan, const Options *o, const Paths *paths)
         if (m->bodies[i].has_clamp && off_cpu(o, m->bodies[i].clamp_loc, "a body's 'clamp'",
                                               "a velocity condition instead"))
             return -1;
-    for (int i = 0; i < m->nbodies && o->target == TARGET_CUDA; i++)
-        if (plan->bodies[i].law_dt || plan->bodies[i].law_fdot) {
-            diag_error(m->bodies[i].law->loc, "material '%s' reads %s (body '%s'), which runs on "
-                       "the CPU target; --target cuda needs a law without it",
-                       m->bodies[i].law->name, plan->bodies[i].law_dt ? "dt" : "a rate",
-                       m->bodies[i].name);
-            return -1;
-        }
     if (o->mpi && mpi_ready(m, o, paths))
         return -1;
     char dir[4096];

@@ -32,11 +32,12 @@ static void scene_step_cuda(Emitter *E)
     fputs("    (void)t;\n}\n\n", out);
     fprintf(out, "/* One time step of every body on the device: %s, from t, of dt (values, or\n"
                  " * the device clock's: sph_cuda.h). */\n"
-                 "static void model_passes(sph_time t, sph_time dt, sph_time t_half, sph_time t_next)\n{\n",
+                 "static void model_passes(sph_time t, sph_time dt, sph_time t_half, sph_time t_next,\n"
+                 "                         sph_time law_dt)\n{\n",
             m->integrator == INTEGRATOR_SYMPLECTIC ? "symplectic predictor-corrector (Alg. 2)"
                                                     : "Verlet (Alg. 1)");
     emit_step_bodies(E, "DEV[%d]", "sph_cuda_contact_forces(&CONTACT_DEV, DEV, dt)");
-    fputs("    (void)t, (void)t_half, (void)t_next;\n}\n\n", out);
+    fputs("    (void)t, (void)t_half, (void)t_next, (void)law_dt;\n}\n\n", out);
     fputs("/* The step's sums into the host bodies: the time step, energies and output read them. */\n"
           "static void model_sums_to_host(sph_sim *s)\n{\n", out);
     for (int i = 0; i < m->nbodies; i++)
@@ -44,15 +45,20 @@ static void scene_step_cuda(Emitter *E)
     if (contact)
         fputs("    sph_cuda_contact_to_host(&CONTACT_DEV, s);\n", out);
     fputs("    (void)s;\n}\n\n", out);
-    fputs("/* One time step of dt, which the host chose (sph_sim_step); the host waits at its end\n"
-          " * for the sums the next time step needs (eq. 64-66). */\n"
-          "static void model_step(sph_sim *s, double dt)\n{\n"
-          "    model_passes(s->t, dt, s->t + 0.5 * dt, s->t + dt);\n"
-          "    SPH_CUDA_CHECK(cudaGetLastError());\n    model_sums_to_host(s);\n}\n\n", out);
+    /* the time since a law's last evaluation: the stress pass is at the step's start
+     * (Verlet) or its middle (symplectic) */
+    const int sym = m->integrator == INTEGRATOR_SYMPLECTIC;
+    fprintf(out, "/* One time step of dt, which the host chose (sph_sim_step); the host waits at its end\n"
+                 " * for the sums the next time step needs (eq. 64-66). */\n"
+                 "static void model_step(sph_sim *s, double dt)\n{\n"
+                 "    model_passes(s->t, dt, s->t + 0.5 * dt, s->t + dt, %s);\n"
+                 "    SPH_CUDA_CHECK(cudaGetLastError());\n    model_sums_to_host(s);\n}\n\n",
+            sym ? "0.5 * (s->dt_prev + dt)" : "s->dt_prev");
     fprintf(out, "/* One time step of every body, of the time step the device's clock chooses. */\n"
                  "static void model_clock_step()\n{\n"
                  "    model_passes(sph_time::clock(SPH_CLOCK_T), sph_time::clock(SPH_CLOCK_DT),\n"
-                 "                 sph_time::clock(SPH_CLOCK_T_HALF), sph_time::clock(SPH_CLOCK_T_NEXT));\n"
+                 "                 sph_time::clock(SPH_CLOCK_T_HALF), sph_time::clock(SPH_CLOCK_T_NEXT),\n"
+                 "                 sph_time::clock(%s));\n"
                  "}\n\n"
                  "/* Up to a->steps steps until a->t_stop (sph_sim_advance): the device chooses each\n"
                  " * time step itself (its clock, sph_cuda.h), so the host queues them without waiting\n"
@@ -60,6 +66,7 @@ static void scene_step_cuda(Emitter *E)
                  "static void model_advance(sph_sim *s, sph_advance *a)\n{\n"
                  "    sph_cuda_advance(s, a, DEV, %s, model_clock_step);\n"
                  "    model_sums_to_host(s);\n}\n\n",
+            sym ? "SPH_CLOCK_DT_MEAN" : "SPH_CLOCK_DT_PREV",
             contact ? "sph_cuda_contact_sums(&CONTACT_DEV), CONTACT_DEV.w2ref" : "NULL, 0.0");
     fputs("/* The device state into the host bodies, for the runtime to read. */\n"
           "static void model_sync_host(sph_sim *s)\n{\n", out);

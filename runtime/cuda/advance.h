@@ -47,6 +47,7 @@ __device__ static inline void sph_clock_choose_on(sph_cuda_clock *c)
         c->collapsed = 1, c->dt_bad = dt, c->floor_bad = floor_now, c->skip = 1;
         return;
     }
+    c->dt_prev = c->dt; /* (the last step's: sph_sim_step's dt_prev) */
     c->dt = fmin(dt, c->t_stop - c->t);
 }
 
@@ -93,7 +94,7 @@ static void sph_cuda_clock_start(const sph_sim *s, const sph_advance *a, sph_bod
     }
     const sph_model *m = s->m;
     sph_cuda_clock c = {};
-    c.t = s->t, c.dt = s->dt, c.step = s->step, c.dt_factor = s->dt_factor;
+    c.t = s->t, c.dt = s->dt, c.dt_prev = s->dt_prev, c.step = s->step, c.dt_factor = s->dt_factor;
     c.t_stop = a->t_stop, c.eps = a->eps, c.floor_dt = a->floor_dt;
     c.cfl = m->cfl, c.dt_fixed = m->dt_fixed, c.lambda_on = m->dt_lambda_on;
     c.nbodies = s->nbodies, c.bodies = views;
@@ -110,7 +111,7 @@ static void sph_cuda_clock_finish(sph_sim *s, sph_advance *a)
     sph_cuda_clock c;
     SPH_CUDA_CHECK(cudaMemcpyFromSymbol(&c, sph_clock, sizeof c));
     sph_cuda_profile_collect(); /* (the host has waited) */
-    s->t = c.t, s->dt = c.dt, s->step = c.step, s->dt_factor = c.dt_factor;
+    s->t = c.t, s->dt = c.dt, s->dt_prev = c.dt_prev, s->step = c.step, s->dt_factor = c.dt_factor;
     a->collapsed = c.collapsed, a->dt_bad = c.dt_bad, a->floor_bad = c.floor_bad;
 }
 

@@ -13,10 +13,12 @@
  * advance.h, with run/time_step.h's helpers), after it adds it to t (sph_cuda_clock_tick), so
  * the host queues the batch's steps without waiting between them.  Once the batch reaches its stop time, or its
  * time step collapses, `skip` makes every pass of the steps left return at once. */
-enum { SPH_CLOCK_T, SPH_CLOCK_DT, SPH_CLOCK_T_HALF, SPH_CLOCK_T_NEXT };
+enum { SPH_CLOCK_T, SPH_CLOCK_DT, SPH_CLOCK_T_HALF, SPH_CLOCK_T_NEXT, SPH_CLOCK_DT_PREV,
+       SPH_CLOCK_DT_MEAN };
 
 struct sph_cuda_clock {
     double t, dt;              /* the step: from t, of dt */
+    double dt_prev;            /* the step before (sph_sim.dt_prev) */
     long step;
     int skip;                  /* 1: the passes return at once (until the batch ends) */
     double t_stop, eps;        /* the batch (sph_advance): no step from t >= t_stop - eps */
@@ -52,6 +54,9 @@ struct sph_time {
         case SPH_CLOCK_DT: return sph_clock.dt;
         case SPH_CLOCK_T_HALF: return sph_clock.t + 0.5 * sph_clock.dt;
         case SPH_CLOCK_T_NEXT: return sph_clock.t + sph_clock.dt;
+        /* the time since a law's last evaluation: Verlet's, the symplectic step's */
+        case SPH_CLOCK_DT_PREV: return sph_clock.dt_prev;
+        case SPH_CLOCK_DT_MEAN: return 0.5 * (sph_clock.dt_prev + sph_clock.dt);
         default: return value;
         }
     }

@@ -58,6 +58,8 @@ static void sph_cuda_to_host(sph_body *h, const sph_body *d)
     if (h->state) /* plasticity: the VTU files and the plastic work read it */
         SPH_CUDA_CHECK(cudaMemcpy(h->state, d->state, n * (size_t)h->desc->nstate * sizeof(double),
                                   cudaMemcpyDeviceToHost));
+    if (h->Fd) /* the rate of F, for the output's stress of a law that reads it */
+        SPH_CUDA_CHECK(cudaMemcpy(h->Fd, d->Fd, n * 9 * sizeof(double), cudaMemcpyDeviceToHost));
     /* (the sums come back with every step, sph_cuda_reductions; before the first, the
      * host's initial ones are the device's) */
 }

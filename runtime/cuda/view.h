@@ -44,6 +44,8 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->psi = (double *)sph_dev_copy(h->psi, n * sizeof(double));
     b->fix = (uint8_t *)sph_dev_copy(h->fix, n);
     b->state = (double *)sph_dev_copy(h->state, n * (size_t)h->desc->nstate * sizeof(double));
+    b->Fd = (double *)sph_dev_copy(h->Fd, n * 9 * sizeof(double)); /* a law that reads a rate */
+    b->Ad = NULL; /* (the device's threads keep their particle's sum: body_cuda.cu) */
     b->s = (double *)sph_dev_copy(h->s, n * sizeof(double)); /* fracture (NULL without) */
     b->sd = (double *)sph_dev_copy(h->sd, n * sizeof(double));
     b->sdd = (double *)sph_dev_copy(h->sdd, n * sizeof(double));
