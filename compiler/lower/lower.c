@@ -130,6 +130,12 @@ int lower_model(const Model *m, Plan *plan)
                          "dp 1 mm, docs/verification.md); 'gradient linear' suits flow",
                          b->name, b->law->name);
         features(m, b, &p->roots, p);
+        if (built && p->law_fdot && m->gradient == GRADIENT_QUADRATIC) {
+            diag_error(m->gradient_loc, "'gradient quadratic' with a law that reads a rate (body "
+                       "'%s', material '%s'): the rate of F comes from the linear corrected "
+                       "gradient; 'gradient linear' serves it", b->name, b->law->name);
+            bad = 1;
+        }
         if (built && p->fracture && (p->law_dt || p->law_fdot)) {
             diag_error(b->fracture.loc, "fracture cannot be combined with material '%s', which "
                        "reads %s: the paper's phase field is for elastic materials (section "
