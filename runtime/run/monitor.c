@@ -22,21 +22,42 @@
 
 typedef struct {
     int particle;
-    const char *what;
+    char what[96];
     double value;
 } finding;
 
-/* Whether particle i's displacement, velocity or acceleration is not finite (f says which). */
+/* Whether a scalar state variable of particle i's law (a temperature, a damage, a plastic
+ * strain: those the VTU files name) is not finite: named first, as the likely cause of what
+ * follows from it. */
+static int state_not_finite(const sph_body *b, int i, finding *f)
+{
+    const int ns = b->desc->nstate;
+    for (int k = 0; k < ns && b->state && b->desc->state_names; k++) {
+        const double x = b->state[(size_t)i * ns + k];
+        if (b->desc->state_names[k] && !isfinite(x)) {
+            f->particle = i, f->value = x;
+            snprintf(f->what, sizeof f->what, "the law's %s is not finite",
+                     b->desc->state_names[k]);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* Whether particle i's law state, displacement, velocity or acceleration is not finite (f
+ * says which). */
 static int not_finite(const sph_body *b, int i, finding *f)
 {
+    if (state_not_finite(b, i, f))
+        return 1;
     for (int k = 0; k < b->dim; k++) {
         const size_t e = (size_t)i * b->dim + k;
         const double u = b->u[e], v = b->v[e], a = b->a[e];
         if (!isfinite(u) || !isfinite(v) || !isfinite(a)) {
-            *f = (finding){i, !isfinite(u) ? "displacement is not finite"
-                              : !isfinite(v) ? "velocity is not finite"
-                                             : "acceleration is not finite",
-                           !isfinite(u) ? u : !isfinite(v) ? v : a};
+            f->particle = i, f->value = !isfinite(u) ? u : !isfinite(v) ? v : a;
+            snprintf(f->what, sizeof f->what, "%s", !isfinite(u) ? "displacement is not finite"
+                                                    : !isfinite(v) ? "velocity is not finite"
+                                                                   : "acceleration is not finite");
             return 1;
         }
     }
@@ -55,11 +76,13 @@ static int scan_body(const sph_body *b, finding *f)
             v2 += b->v[(size_t)i * D + k] * b->v[(size_t)i * D + k];
         const double J = sph_det3(b->F + (size_t)i * 9);
         if (!(J > 0)) {
-            *f = (finding){i, "det F <= 0 (particle inverted)", J};
+            f->particle = i, f->value = J;
+            snprintf(f->what, sizeof f->what, "det F <= 0 (particle inverted)");
             return 1;
         }
         if (v2 > vlim2) {
-            *f = (finding){i, "speed above 10 c0 (velocity runaway)", sqrt(v2)};
+            f->particle = i, f->value = sqrt(v2);
+            snprintf(f->what, sizeof f->what, "speed above 10 c0 (velocity runaway)");
             return 1;
         }
     }
