@@ -69,7 +69,7 @@ void emit_consts_fns(Emitter *E)
 }
 
 /* The material function's arguments after F: Fdot and dt, where its law reads them. */
-static const char *dt_arg(const BodyPlan *p)
+static const char *extra_inputs(const BodyPlan *p)
 {
     static const char *const args[2][2] = {{"", "double dt, "},
                                            {"const double Fd[9], ", "const double Fd[9], double dt, "}};
@@ -98,13 +98,13 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
                      "the state at the end of the step st_new. */\n");
         fprintf(out, "SPH_FLAT void %s_material(const double F[9], %sconst double *st, "
                      "double *st_new, double S[9],\n                                   double *psi)\n{\n",
-                b->name, dt_arg(p));
+                b->name, extra_inputs(p));
     } else {
         fprintf(out, ".\n * In: deformation gradient F (3x3)%s%s. Out: second Piola-Kirchhoff "
                      "stress S, strain energy density psi. */\n", p->law_fdot ? ", its rate Fd" : "",
                 p->law_dt ? ", dt" : "");
         fprintf(out, "SPH_FLAT void %s_material(const double F[9], %sdouble S[9], double *psi)\n{\n",
-                b->name, dt_arg(p));
+                b->name, extra_inputs(p));
     }
     fputs(p->nstate ? "    (void)F;\n    (void)st;\n" : "    (void)F;\n", out);
     if (p->law_dt)
@@ -122,7 +122,7 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
             b->name);
     fprintf(out, "SPH_FLAT void %s_material_fast(const double F[9], %sconst double *st, "
                  "double *st_new,\n                                        double S[9], "
-                 "double *psi, double *rare)\n{\n", b->name, dt_arg(p));
+                 "double *psi, double *rare)\n{\n", b->name, extra_inputs(p));
     fputs(p->law_dt ? "    (void)F;\n    (void)dt;\n    (void)st;\n" : "    (void)F;\n    (void)st;\n", out);
     if (p->law_fdot)
         fputs("    (void)Fd;\n", out);

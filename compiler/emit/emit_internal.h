@@ -46,6 +46,9 @@ typedef struct {
     /* Whether a boundary condition's time window is evaluated inside its loop (where the
      * device reads t and dt) rather than once before it. */
     int windows_in_loops;
+    /* Whether a law's dt reaches a body's forces as their argument `law_dt` (a time the
+     * device's clock may give) rather than in b->law_dt, which the step sets. */
+    int law_dt_argument;
     /* The pieces of each body's code. */
     const BodyPiece *body;
     /* The scene's step and whatever glue the runtime calls (model_step, ...). */

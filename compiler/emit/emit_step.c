@@ -22,13 +22,13 @@ static void step_forces(Emitter *E, int i)
     /* the time since its law's last evaluation: the stress pass is at the step's start
      * (Verlet) or its middle (symplectic), and the state starts at t = 0; the CUDA target's
      * step has it as law_dt (emit_cuda.c: a value, or the device clock's) */
-    const int cuda = E->target == emit_target(TARGET_CUDA);
-    if (p->law_dt && !cuda)
+    const int arg = E->target->law_dt_argument;
+    if (p->law_dt && !arg)
         fprintf(E->out, "        b->law_dt = %s;\n",
                 p->symplectic ? "0.5 * (s->dt_prev + dt)" : "s->dt_prev");
     /* (its stress and momentum passes each through SPH_PASS on the CPU) */
     fprintf(E->out, "        %s_forces(b%s);\n", E->m->bodies[i].name,
-            p->law_dt && cuda ? ", law_dt" : "");
+            p->law_dt && arg ? ", law_dt" : "");
 }
 
 /* ... and from its force boundary conditions to the end. */

@@ -95,6 +95,7 @@ static const EmitTarget CPU = {
     .loop_close = loop_close_cpu,
     .pass = pass_cpu,
     .windows_in_loops = 0,
+    .law_dt_argument = 0,
     .body = BODY_CPU,
     .scene = emit_scene_cpu,
     .desc_prologue = "",
@@ -157,6 +158,7 @@ static const EmitTarget CUDA = {
     .loop_close = loop_close_cuda,
     .pass = pass_cuda,
     .windows_in_loops = 1,
+    .law_dt_argument = 1,
     .body = BODY_CUDA,
     .scene = emit_scene_cuda,
     /* C++ warns where C does not */

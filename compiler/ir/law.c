@@ -1111,7 +1111,10 @@ static int energy_reads_rate(Law *L)
         {L->out.psi, L->energy_line, 1, "energy"},
         {L->out.psip, L->tension_energy_line, L->out.has_tension, "tensile energy"},
     };
-    static const char *const rates[][2] = {{LAW_INPUT_DT, "dt"}, {LAW_INPUT_FDOT, "a rate (Fdot, Cdot or Edot)"}};
+    static const char *const rates[][2] = {
+        {LAW_INPUT_DT, "dt"},
+        {LAW_INPUT_FDOT, "a rate (Fdot, Cdot or Edot)"},
+    };
     for (int k = 0; k < 2; k++)
         for (int q = 0; q < 2 && energies[k].on; q++) {
             if (sg_input_reached(L->g, energies[k].psi, L->out.next, L->out.nslots,

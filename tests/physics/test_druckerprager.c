@@ -18,43 +18,13 @@
 #undef main
 
 #include "check.h"
+#include "tensor_check.h"
 
 static const double K = 50e6, COH = 10e3, PHI = 30 * 0.017453292519943295;
 enum { NS = 11, EP = 9, WP = 10 };
 
 typedef void (*Law)(const double F[9], const double *st, double *st_new, double S[9],
                     double *psi);
-
-static void matmul(const double A[9], const double B[9], double AB[9])
-{
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            AB[r * 3 + c] = A[r * 3] * B[c] + A[r * 3 + 1] * B[3 + c] + A[r * 3 + 2] * B[6 + c];
-}
-
-static double det3(const double A[9])
-{
-    return A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
-           A[2] * (A[3] * A[7] - A[4] * A[6]);
-}
-
-/* The mean stress p and sqrt(J2) of the Kirchhoff stress F S F^T. */
-static void invariants(const double F[9], const double S[9], double *p, double *sj)
-{
-    double FS[9], Ft[9], tau[9];
-    matmul(F, S, FS);
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            Ft[c * 3 + r] = F[r * 3 + c];
-    matmul(FS, Ft, tau);
-    *p = (tau[0] + tau[4] + tau[8]) / 3;
-    double dd = 0;
-    for (int k = 0; k < 9; k++) {
-        const double d = tau[k] - (k % 4 == 0 ? *p : 0);
-        dd += d * d;
-    }
-    *sj = sqrt(0.5 * dd);
-}
 
 static double eta(void) { return 6 * sin(PHI) / (sqrt(3.0) * (3 - sin(PHI))); }
 static double xi(void) { return 6 * cos(PHI) / (sqrt(3.0) * (3 - sin(PHI))); }
@@ -88,12 +58,12 @@ static Triax triaxial(Law law, double p0)
         if (dep <= 0)
             continue;
         double p, sj;
-        invariants(F, S, &p, &sj);
+        t3_kirchhoff_invariants(F, S, &p, &sj);
         if (!yielded)
             t.py = p, t.sjy = sj, yielded = 1;
         t.cone = fmax(t.cone, fabs(sj + eta() * p - xi() * COH) / (xi() * COH - eta() * p));
     }
-    t.detcp = det3(st);
+    t.detcp = t3_det(st);
     return t;
 }
 
@@ -131,7 +101,7 @@ int main(void)
         soil_material(F, st, sn, S, &psi);
         memcpy(st, sn, sizeof st);
         double p, sj;
-        invariants(F, S, &p, &sj);
+        t3_kirchhoff_invariants(F, S, &p, &sj);
         if (sn[EP] > 0)
             worst_p = fmax(worst_p, fabs(p - pa) / pa), worst_s = fmax(worst_s, sj / pa);
     }
@@ -152,13 +122,13 @@ int main(void)
         const double dep = sn[EP] - st[EP];
         if (dep > 0) {
             const double dg = dep / sqrt(1.0 / 3 + 2 * etab * etab / 9);
-            const double dv = 0.5 * log(det3(sn) / det3(st));
+            const double dv = 0.5 * log(t3_det(sn) / t3_det(st));
             worst_v = fmax(worst_v, fabs(dv - etab * dg) / (etab * dg));
         }
         memcpy(st, sn, sizeof st);
     }
-    printf("associated flow: det Cp %.8g after 3 %% of axial compression at -100 kPa\n", det3(st));
+    printf("associated flow: det Cp %.8g after 3 %% of axial compression at -100 kPa\n", t3_det(st));
     check_close("psi = phi: max |d ln sqrt(det Cp) - etab dg| / (etab dg)", worst_v, 0, 1e-9);
-    check_close("psi = phi: the soil dilates (det Cp > 1.001)", det3(st) > 1.001, 1, 0);
+    check_close("psi = phi: the soil dilates (det Cp > 1.001)", t3_det(st) > 1.001, 1, 0);
     return check_result();
 }

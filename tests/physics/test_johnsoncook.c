@@ -18,6 +18,7 @@
 #undef main
 
 #include "check.h"
+#include "tensor_check.h"
 
 static const double A = 90e6, B = 292e6, N_ = 0.31, CR = 0.025, EDOT0 = 1, M = 1.09;
 static const double TROOM = 298, TMELT = 1356, RHO0 = 8960, CP = 383, BETA = 0.9;
@@ -26,31 +27,6 @@ enum { NS = 13, EP = 9, WP = 10, T = 11, DMG = 12 };
 
 typedef void (*Law)(const double F[9], const double Fd[9], const double *st, double *st_new,
                     double S[9], double *psi);
-
-static void matmul(const double A_[9], const double B_[9], double AB[9])
-{
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            AB[r * 3 + c] =
-                A_[r * 3] * B_[c] + A_[r * 3 + 1] * B_[3 + c] + A_[r * 3 + 2] * B_[6 + c];
-}
-
-static double sigma_eq(const double F[9], const double S[9])
-{
-    double FS[9], Ft[9], tau[9];
-    matmul(F, S, FS);
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            Ft[c * 3 + r] = F[r * 3 + c];
-    matmul(FS, Ft, tau);
-    const double p = (tau[0] + tau[4] + tau[8]) / 3;
-    double dd = 0;
-    for (int k = 0; k < 9; k++) {
-        const double d = tau[k] - (k % 4 == 0 ? p : 0);
-        dd += d * d;
-    }
-    return sqrt(1.5 * dd);
-}
 
 /* Simple shear F = I + g e_x e_y at rate gd: D = sym(Fdot F^-1), Fdot F^-1 = gd e_x e_y. */
 static double shear_rate(double gd)
@@ -86,7 +62,7 @@ static Run shear(Law law, double T0, double gd)
         const double dep = sn[EP] - st[EP];
         if (dep > 0) {
             const double want = flow_stress(sn[EP], rate, st[T]);
-            out.stress_err = fmax(out.stress_err, fabs(sigma_eq(F, S) - want) / want);
+            out.stress_err = fmax(out.stress_err, fabs(t3_mises(F, S) - want) / want);
             const double Ts = homologous(st[T]);
             const double epf = (D1 + D2) * (1 + D4 * log(fmax(rate / EDOT0, 1))) * (1 + D5 * Ts);
             const double Dwant = fmin(st[DMG] + dep / epf, 1);
@@ -95,7 +71,7 @@ static Run shear(Law law, double T0, double gd)
         }
         out.T_err = fmax(out.T_err, fabs(sn[T] - (T0 + BETA * sn[WP] / (RHO0 * CP))));
         if (st[EP] < 0.1 && sn[EP] >= 0.1) /* the flow stress as ep passes 0.1 */
-            out.sigma_at_01 = sigma_eq(F, S);
+            out.sigma_at_01 = t3_mises(F, S);
         memcpy(st, sn, sizeof st);
     }
     out.T_end = st[T], out.D_end = st[DMG];

@@ -21,6 +21,7 @@
 #include <omp.h>
 
 #include "check.h"
+#include "tensor_check.h"
 
 #ifdef TWO_D
 static const double G[9] = {30, 0, 20, 0, 0, 0, 5, 0, -25};
@@ -31,30 +32,12 @@ static const double W[9] = {0, -400, 0, 400, 0, 0, 0, 0, 0};
 #endif
 enum { NS = 11 }; /* Fr[9], er, dr */
 
-static void matmul(const double A[9], const double B[9], double AB[9])
-{
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            AB[r * 3 + c] = A[r * 3] * B[c] + A[r * 3 + 1] * B[3 + c] + A[r * 3 + 2] * B[6 + c];
-}
-
-static void inv3(const double A[9], double Ai[9])
-{
-    const double d = A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
-                     A[2] * (A[3] * A[7] - A[4] * A[6]);
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            const int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
-            Ai[3 * i + j] = (A[3 * r0 + c0] * A[3 * r1 + c1] - A[3 * r0 + c1] * A[3 * r1 + c0]) / d;
-        }
-}
-
 /* sqrt(2/3 D:D), D = sym(L), L = Fdot F^-1. */
 static double equivalent_rate(const double Fdot[9], const double F[9])
 {
     double Fi[9], L[9], dd = 0;
-    inv3(F, Fi);
-    matmul(Fdot, Fi, L);
+    t3_inv(F, Fi);
+    t3_mul(Fdot, Fi, L);
     for (int r = 0; r < 3; r++)
         for (int c = 0; c < 3; c++) {
             const double d = 0.5 * (L[r * 3 + c] + L[c * 3 + r]);
@@ -80,7 +63,7 @@ int main(void)
                 if (k == 0)
                     memcpy(want, G, sizeof want);
                 else
-                    matmul(W, F, want);
+                    t3_mul(W, F, want);
                 for (int c = 0; c < 9; c++)
                     fdot_err[k] = fmax(fdot_err[k], fabs(st[c] - want[c]) / (k ? 400 : 30));
                 if (k == 0) {

@@ -22,37 +22,13 @@
 #undef main
 
 #include "check.h"
+#include "tensor_check.h"
 
 static const double MU = 80e9, SY = 300e6, H = 2e9, ETA = 2.42e6;
 enum { NS = 11 }; /* Cp (9), ep, wp */
 
 typedef void (*Law)(const double F[9], double dt, const double *st, double *st_new,
                     double S[9], double *psi);
-
-static void matmul(const double A[9], const double B[9], double AB[9])
-{
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            AB[r * 3 + c] = A[r * 3] * B[c] + A[r * 3 + 1] * B[3 + c] + A[r * 3 + 2] * B[6 + c];
-}
-
-/* The von Mises stress of the Kirchhoff stress F S F^T. */
-static double sigma_eq(const double F[9], const double S[9])
-{
-    double FS[9], Ft[9], tau[9];
-    matmul(F, S, FS);
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            Ft[c * 3 + r] = F[r * 3 + c];
-    matmul(FS, Ft, tau);
-    const double p = (tau[0] + tau[4] + tau[8]) / 3;
-    double dd = 0;
-    for (int k = 0; k < 9; k++) {
-        const double d = tau[k] - (k % 4 == 0 ? p : 0);
-        dd += d * d;
-    }
-    return sqrt(1.5 * dd);
-}
 
 static void at_rest(double *st)
 {
@@ -105,7 +81,7 @@ static void held_shear(void)
         vp_material(F, dt, st, sn, S, &psi);
         least_work = fmin(least_work, sn[10] - st[10]);
         memcpy(st, sn, sizeof st);
-        const double f = sigma_eq(F, S) - (SY + H * st[9]);
+        const double f = t3_mises(F, S) - (SY + H * st[9]);
         if (n == 0) {
             f0 = f;
             continue;
@@ -133,7 +109,7 @@ static void steady_shear(double gdot)
         vp0_material(F, n == 0 ? 0 : dt, st, sn, S, &psi);
         rate = (sn[9] - st[9]) / dt / sqrt(2.0 / 3); /* (ep grows by sqrt(2/3) dg) */
         memcpy(st, sn, sizeof st);
-        seq = sigma_eq(F, S);
+        seq = t3_mises(F, S);
         flow = fabs(seq - SY - ETA * rate) / (ETA * rate); /* the flow rule at the step */
     }
     const double steady = SY + ETA * gdot / sqrt(3.0);

@@ -18,6 +18,7 @@
 #undef main
 
 #include "check.h"
+#include "tensor_check.h"
 
 static const double K = 5e6, MU = 1e6;
 
@@ -34,41 +35,10 @@ typedef struct {
 static const Case VE = {"viscoelastic", ve_material, 1, {0.6}, {1e-3}};
 static const Case VE3 = {"viscoelastic3", ve3_material, 3, {0.3, 0.2, 0.1}, {1e-4, 1e-3, 1e-2}};
 
-/* ---- 3x3 helpers (row-major) */
-static void matmul(const double A[9], const double B[9], double AB[9])
-{
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            AB[r * 3 + c] = A[r * 3] * B[c] + A[r * 3 + 1] * B[3 + c] + A[r * 3 + 2] * B[6 + c];
-}
-
-static void transpose(const double A[9], double At[9])
-{
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            At[c * 3 + r] = A[r * 3 + c];
-}
-
-static double det3(const double A[9])
-{
-    return A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
-           A[2] * (A[3] * A[7] - A[4] * A[6]);
-}
-
-static void inv3(const double A[9], double Ai[9])
-{
-    const double d = det3(A);
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            const int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
-            Ai[3 * i + j] = (A[3 * r0 + c0] * A[3 * r1 + c1] - A[3 * r0 + c1] * A[3 * r1 + c0]) / d;
-        }
-}
-
 static double trace_of_product(const double A[9], const double B[9])
 {
     double AB[9];
-    matmul(A, B, AB);
+    t3_mul(A, B, AB);
     return AB[0] + AB[4] + AB[8];
 }
 
@@ -95,8 +65,8 @@ static void at_rest(const Case *c, double *st)
 static void closed_form(const Case *c, const double C[9], const double Cv[][9], double S[9])
 {
     double Ci[9];
-    inv3(C, Ci);
-    const double J2 = det3(C), Jm23 = pow(J2, -1.0 / 3);
+    t3_inv(C, Ci);
+    const double J2 = t3_det(C), Jm23 = pow(J2, -1.0 / 3);
     double ginf = 1;
     for (int i = 0; i < c->branches; i++)
         ginf -= c->g[i];
@@ -105,8 +75,8 @@ static void closed_form(const Case *c, const double C[9], const double Cv[][9], 
         S[k] = 0.5 * K * (J2 - 1) * Ci[k] + ginf * MU * Jm23 * ((k % 4 == 0) - trC / 3 * Ci[k]);
     for (int i = 0; i < c->branches; i++) {
         double Cvi[9];
-        inv3(Cv[i], Cvi);
-        const double w = c->g[i] * MU * cbrt(det3(Cv[i])) * Jm23, tr = trace_of_product(C, Cvi);
+        t3_inv(Cv[i], Cvi);
+        const double w = c->g[i] * MU * cbrt(t3_det(Cv[i])) * Jm23, tr = trace_of_product(C, Cvi);
         for (int k = 0; k < 9; k++)
             S[k] += w * (Cvi[k] - tr / 3 * Ci[k]);
     }
@@ -123,9 +93,9 @@ static void held_stretch(const Case *c)
 {
     const double F[9] = {1.3, 0, 0, 0, 0.9, 0, 0, 0, 0.95};
     double Ft[9], C[9];
-    transpose(F, Ft);
-    matmul(Ft, F, C);
-    const double Jm23 = pow(det3(C), -1.0 / 3);
+    t3_transpose(F, Ft);
+    t3_mul(Ft, F, C);
+    const double Jm23 = pow(t3_det(C), -1.0 / 3);
     double st[28], st_new[28], S[9], psi, worst = 0, t = 0, relaxed = 0, S0 = 0;
     at_rest(c, st);
     for (int n = 0; t < 10 * c->tau[c->branches - 1]; n++) {
@@ -167,13 +137,13 @@ static void held_shear(const Case *c)
         c->law(F, dt, st, st_new, S, &psi);
         memcpy(st, st_new, sizeof st);
         double FS[9], Ft[9], sig[9];
-        matmul(F, S, FS);
-        transpose(F, Ft);
-        matmul(FS, Ft, sig);
+        t3_mul(F, S, FS);
+        t3_transpose(F, Ft);
+        t3_mul(FS, Ft, sig);
         double G = 1;
         for (int i = 0; i < c->branches; i++)
             G -= c->g[i] * (1 - exp(-t / c->tau[i]));
-        worst = fmax(worst, fabs(sig[1] / det3(F) / gamma / (MU * G) - 1));
+        worst = fmax(worst, fabs(sig[1] / t3_det(F) / gamma / (MU * G) - 1));
     }
     char what[160];
     snprintf(what, sizeof what, "%s: held shear, |sigma_xy / (gamma G(t)) - 1|", c->name);
