@@ -17,11 +17,14 @@ static void @B@_stress_output(sph_body *b)
 //@if LAW_DT
         const double dt = 0; /* no time passes: the law's response at its state */
 //@endif
+//@if LAW_WAVE
+        double cw; /* (not needed here) */
+//@endif
 //@if STATE
         double st_new[@NSTATE@]; /* the state as the last step left it: not advanced here */
-        @B@_material(F, @LAW_ARGS@b->state + (size_t)i * @NSTATE@, st_new, S, &e);
+        @B@_material(F, @LAW_ARGS@b->state + (size_t)i * @NSTATE@, st_new, S, &e@LAW_OUTS@);
 //@else
-        @B@_material(F, @LAW_ARGS@S, &e);
+        @B@_material(F, @LAW_ARGS@S, &e@LAW_OUTS@);
 //@endif
 //@endif
         sph_mat3_mul(F, S, FS);

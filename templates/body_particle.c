@@ -94,6 +94,9 @@ SPH_FLAT void @B@_stress_of(const double *A, const double *L,
         }
 //@endif
     double S[9], e;
+//@if LAW_WAVE
+    double cw; /* the law's wave speed */
+//@endif
 //@if FRACTURE
     /* eq. 63: a broken particle carries no deformation (a select, not a branch, like
      * everything here: a branch would keep the compiler from vectorising the CPU's loop) */
@@ -111,14 +114,14 @@ SPH_FLAT void @B@_stress_of(const double *A, const double *L,
 //@if RARE
     /* fast: the law without its rare `if` blocks, *rare whether one was due */
     if (fast)
-        @B@_material_fast(F, @LAW_ARGS@st, st_new, S, &e, rare);
+        @B@_material_fast(F, @LAW_ARGS@st, st_new, S, &e@LAW_OUTS@, rare);
     else
-        @B@_material(F, @LAW_ARGS@st, st_new, S, &e);
+        @B@_material(F, @LAW_ARGS@st, st_new, S, &e@LAW_OUTS@);
 //@else
-    @B@_material(F, @LAW_ARGS@st, st_new, S, &e);
+    @B@_material(F, @LAW_ARGS@st, st_new, S, &e@LAW_OUTS@);
 //@endif
 //@else
-    @B@_material(F, @LAW_ARGS@S, &e);
+    @B@_material(F, @LAW_ARGS@S, &e@LAW_OUTS@);
 //@endif
 //@endif
     *psi = e;
@@ -129,6 +132,12 @@ SPH_FLAT void @B@_stress_of(const double *A, const double *L,
     /* the smallest principal stretch squared, for the time step where the body is
      * compressed (timestep auto: eq. 65 on the current spacing; runtime/run/sim.c) */
     *lam2 = sph_stretch2_min(F, D);
+//@if LAW_WAVE
+    /* where the law's wave speed exceeds the body's c0 (an equation of state under
+     * compression), the bound follows it as it follows the spacing: the Courant number on
+     * the spacing lambda h at the speed cw is that on lambda (c0 / cw) h at c0 */
+    *lam2 *= cw > @C0@ ? (@C0@ / cw) * (@C0@ / cw) : 1.0;
+//@endif
 //@endif
     /* P = F S (eq. 2), in-plane block, then Q = P L */
     double P[D * D];

@@ -39,6 +39,8 @@ static void body_env(const Emitter *E, const BodyModel *b, const BodyPlan *p, Tp
     tpl_set(env, "NSTATE", "%d", p->nstate);
     /* what the law reads besides F among its material function's arguments: Fd, dt */
     tpl_set(env, "LAW_ARGS", "%s%s", p->law_fdot ? "Fd, " : "", p->law_dt ? "dt, " : "");
+    /* and what it gives besides S and psi: its wave speed, into cw */
+    tpl_set(env, "LAW_OUTS", "%s", p->law_wave ? ", &cw" : "");
     int k = 0;
 #define PLAN_KEY(member, key, value, when)                                                    \
     if (p->numbers >> k++ & 1)                                                                 \

@@ -68,6 +68,12 @@ void emit_consts_fns(Emitter *E)
         fputs("\n", E->out);
 }
 
+/* The material function's argument after psi: the wave speed, where its law gives one. */
+static const char *wave_output(const BodyPlan *p)
+{
+    return p->law_wave ? ", double *cw" : "";
+}
+
 /* The material function's arguments after F: Fdot and dt, where its law reads them. */
 static const char *extra_inputs(const BodyPlan *p)
 {
@@ -97,14 +103,14 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
         fprintf(out, ").\n * Out: second Piola-Kirchhoff stress S, strain energy density psi, "
                      "the state at the end of the step st_new. */\n");
         fprintf(out, "SPH_FLAT void %s_material(const double F[9], %sconst double *st, "
-                     "double *st_new, double S[9],\n                                   double *psi)\n{\n",
-                b->name, extra_inputs(p));
+                     "double *st_new, double S[9],\n                                   double *psi%s)\n{\n",
+                b->name, extra_inputs(p), wave_output(p));
     } else {
         fprintf(out, ".\n * In: deformation gradient F (3x3)%s%s. Out: second Piola-Kirchhoff "
                      "stress S, strain energy density psi. */\n", p->law_fdot ? ", its rate Fd" : "",
                 p->law_dt ? ", dt" : "");
-        fprintf(out, "SPH_FLAT void %s_material(const double F[9], %sdouble S[9], double *psi)\n{\n",
-                b->name, extra_inputs(p));
+        fprintf(out, "SPH_FLAT void %s_material(const double F[9], %sdouble S[9], double *psi%s)\n{\n",
+                b->name, extra_inputs(p), wave_output(p));
     }
     fputs(p->nstate ? "    (void)F;\n    (void)st;\n" : "    (void)F;\n", out);
     if (p->law_dt)
@@ -122,7 +128,7 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
             b->name);
     fprintf(out, "SPH_FLAT void %s_material_fast(const double F[9], %sconst double *st, "
                  "double *st_new,\n                                        double S[9], "
-                 "double *psi, double *rare)\n{\n", b->name, extra_inputs(p));
+                 "double *psi%s, double *rare)\n{\n", b->name, extra_inputs(p), wave_output(p));
     fputs(p->law_dt ? "    (void)F;\n    (void)dt;\n    (void)st;\n" : "    (void)F;\n    (void)st;\n", out);
     if (p->law_fdot)
         fputs("    (void)Fd;\n", out);

@@ -85,7 +85,8 @@ typedef enum {
     MS_ASSIGN, /* name = expr          (a new value of a let or state) */
     MS_DISSIPATION, /* dissipation name: state `name` is the dissipated energy density */
     MS_REQUIRE, /* require cond [, "message"]: what the parameters must satisfy (law_require.c) */
-    MS_TEMPERATURE /* temperature name, c: state `name` is a temperature, c its specific heat */
+    MS_TEMPERATURE, /* temperature name, c: state `name` is a temperature, c its specific heat */
+    MS_WAVESPEED /* wavespeed c: the particle's longitudinal wave speed now (the time step) */
 } MatStmtKind;
 
 typedef struct MatStmt MatStmt;
@@ -99,7 +100,7 @@ struct MatStmt {
     SrcLoc loc;
     char *name;        /* LET/STRESS/ENERGY/STATE/ASSIGN target, BLOCK name */
     Expr *value;       /* LET/STRESS/ENERGY/STATE/ASSIGN value, IF/REQUIRE condition,
-                        * TEMPERATURE specific heat */
+                        * TEMPERATURE specific heat, WAVESPEED its speed */
     MatStmtList body;  /* IF then-part, BLOCK contents */
     MatStmtList orelse;/* IF else-part */
     int depth;         /* levels of blocks from here down: 1 for a statement without */

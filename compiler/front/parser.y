@@ -313,7 +313,7 @@ static void report_unclosed(ParseState *ps, const YYLTYPE *at, int at_eof, const
 %token <char *> STRING "string"
 %token IMPORT "import" SCENE "scene" LET "let" FN "fn" MATERIAL "material" BODY "body"
 %token SHAPE "shape" STRESS "stress" ENERGY "energy" STATE "state" IF "if" ELSE "else"
-%token DISSIPATION "dissipation" REQUIRE "require" TEMPERATURE "temperature"
+%token DISSIPATION "dissipation" REQUIRE "require" TEMPERATURE "temperature" WAVESPEED "wavespeed"
 %token VELOCITY "velocity" FORCE "force"
 %token FROM "from" TO "to" NEAR "near" MEASURE "measure" PLANE "plane"
 %token EXPECT "expect" REFERENCE "reference" WITHIN "within"
@@ -458,6 +458,7 @@ matstmt
     | REQUIRE expr ',' STRING           { $$ = ast_matstmt(MS_REQUIRE, LOC(@1), NULL, $2);
                                           $$.message = $4; }
     | TEMPERATURE IDENT ',' expr        { $$ = ast_matstmt(MS_TEMPERATURE, LOC(@2), $2, $4); }
+    | WAVESPEED expr                    { $$ = ast_matstmt(MS_WAVESPEED, LOC(@1), NULL, $2); }
     ;
 
 else_opt

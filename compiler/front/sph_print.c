@@ -312,6 +312,11 @@ static void print_stmt(const MatStmt *s, int depth, FILE *out)
     case MS_DISSIPATION:
         fprintf(out, "dissipation %s\n", s->name);
         return;
+    case MS_WAVESPEED:
+        fputs("wavespeed ", out);
+        sph_print_expr(s->value, out);
+        fputc('\n', out);
+        return;
     case MS_TEMPERATURE:
         fprintf(out, "temperature %s, ", s->name);
         sph_print_expr(s->value, out);

@@ -596,6 +596,25 @@ static int temperature_stmt(Law *L, const MatStmt *s)
     return 0;
 }
 
+/* wavespeed c: the particle's longitudinal wave speed in its current state [m/s], where the
+ * law stiffens beyond the body's elastic constants (an equation of state under compression):
+ * the time step bound takes it (templates/body_particle.c). */
+static int wavespeed_stmt(Law *L, const MatStmt *s)
+{
+    LawRoots *r = &L->out;
+    if (L->in_if || L->in_tension)
+        return not_in_if(L, s, "a wave speed");
+    if (r->has_wavespeed) {
+        diag_error(s->loc, "material '%s' gives its wave speed twice", L->law->name);
+        return -1;
+    }
+    Val c = need_scalar(s->value, eval(L, s->value), "a wave speed");
+    if (!ok(c))
+        return -1;
+    r->has_wavespeed = 1, r->wavespeed = c.s;
+    return 0;
+}
+
 /* name = expr: a new value of a let or a state variable, of the same type. */
 static int assign_stmt(Law *L, const MatStmt *s)
 {
@@ -789,6 +808,8 @@ static int statement(Law *L, const MatStmt *s)
         return dissipation_stmt(L, s);
     case MS_TEMPERATURE:
         return temperature_stmt(L, s);
+    case MS_WAVESPEED:
+        return wavespeed_stmt(L, s);
     case MS_REQUIRE: /* a condition on the parameters, no part of the graph (check/law_require.c) */
         return 0;
     }
@@ -869,7 +890,7 @@ static int plane_strain_entry(const SNode *s, void *ctx)
 /* The results of a law: S, psi, the state's end values and, with a tension block, S+ and
  * psi+ (and once degraded, the degraded S and psi): their slots in *r, into slots[];
  * returns how many. */
-enum { LAW_MAX_RESULTS = 4 * 9 + 4 + LAW_MAX_SLOTS + LAW_MAX_RARE };
+enum { LAW_MAX_RESULTS = 4 * 9 + 5 + LAW_MAX_SLOTS + LAW_MAX_RARE };
 static int result_slots(LawRoots *r, int degraded, int *slots[LAW_MAX_RESULTS])
 {
     int n = 0;
@@ -888,6 +909,8 @@ static int result_slots(LawRoots *r, int degraded, int *slots[LAW_MAX_RESULTS])
         slots[n++] = &r->psid;
     for (int k = 0; k < r->nrare; k++) /* (rebuilt with the results) */
         slots[n++] = &r->rare[k];
+    if (r->has_wavespeed)
+        slots[n++] = &r->wavespeed;
     return n;
 }
 

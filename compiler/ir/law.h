@@ -31,6 +31,8 @@ typedef struct {
     int next[LAW_MAX_SLOTS];     /* their values at the end of the law (graph nodes) */
     int dissipation;             /* 1 + the slot of the dissipated energy density; 0: none */
     int temperature;             /* 1 + the slot of the temperature [K]; 0: none */
+    int has_wavespeed;           /* the law gives the particle's wave speed now: */
+    int wavespeed;               /* its node [m/s] (`wavespeed`) */
     double heat_capacity;        /* its specific heat [J/(kg K)] (NaN: symbolic parameters) */
     int rare[LAW_MAX_RARE];      /* the conditions of the law's `if` blocks without `else`
                                   * (not nested, not in the tension block): a return map's

@@ -136,6 +136,15 @@ int lower_model(const Model *m, Plan *plan)
                        "gradient; 'gradient linear' serves it", b->name, b->law->name);
             bad = 1;
         }
+        if (built && p->law_wave && p->fracture) {
+            diag_error(b->fracture.loc, "fracture cannot be combined with material '%s', which "
+                       "gives its wave speed (an equation of state)", b->law->name);
+            bad = 1;
+        }
+        if (built && p->law_wave && !p->crush)
+            diag_warning(b->loc, "'timestep undeformed' keeps the paper's time step "
+                         "on the undeformed spacing: the wave speed material '%s' gives (body "
+                         "'%s') does not bound it", b->law->name, b->name);
         if (built && p->fracture && (p->law_dt || p->law_fdot)) {
             diag_error(b->fracture.loc, "fracture cannot be combined with material '%s', which "
                        "reads %s: the paper's phase field is for elastic materials (section "
@@ -175,6 +184,10 @@ static int roots_outputs(const LawRoots *r, int nstate, int degraded,
         out[0] = (LawOutput){"S", "S", r->S, 9};
         out[1] = (LawOutput){"*psi", "psi", &r->psi, -1};
         out[2] = (LawOutput){"st_new", "st_new", r->next, nstate};
+        if (r->has_wavespeed) {
+            out[3] = (LawOutput){"*cw", "c", &r->wavespeed, -1};
+            return 4;
+        }
     }
     return 3;
 }

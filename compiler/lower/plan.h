@@ -29,6 +29,7 @@
     X(state, "state", STATE, r->nslots > 0) /* its law has state (plasticity) */                   \
     X(law_dt, NULL, LAW_DT, law_reads(&p->law, r, LAW_INPUT_DT)) /* its law reads dt */      \
     X(law_fdot, NULL, LAW_FDOT, law_reads(&p->law, r, LAW_INPUT_FDOT)) /* ... and Fdot */   \
+    X(law_wave, NULL, LAW_WAVE, r->has_wavespeed) /* it gives its wave speed */             \
     X(contact, "contact", CONTACT, model_has_contact(m)) /* between the scene's bodies */          \
     X(crush, "crush", CRUSH, model_has_crush(m)) /* time step bound on compression */              \
     X(measure, "measure", MEASURE, b->nmeasures > 0) /* measurement planes */                      \
@@ -129,13 +130,14 @@ typedef struct {
     int n;
 } LawOutput;
 
-enum { LAW_MAX_OUTPUTS = 3 };
-/* The most graph nodes the outputs of a material function hold (S, psi, the state, a flag). */
-enum { PLAN_MAX_ROOTS = 9 + 1 + LAW_MAX_SLOTS + 1 };
+enum { LAW_MAX_OUTPUTS = 4 };
+/* The most graph nodes the outputs of a material function hold (S, psi, the state, the wave
+ * speed, a flag). */
+enum { PLAN_MAX_ROOTS = 9 + 1 + LAW_MAX_SLOTS + 1 + 1 };
 
-/* The outputs of body p's material function in the order of its arguments: S, psi and the
- * state at the end of the step; degraded (fracture, eq. 7 and 18): S, psi and psi+.  Returns
- * their number. */
+/* The outputs of body p's material function in the order of its arguments: S, psi, the
+ * state at the end of the step and the wave speed (a law that gives it); degraded (fracture,
+ * eq. 7 and 18): S, psi and psi+.  Returns their number. */
 int plan_law_outputs(const BodyPlan *p, int degraded, LawOutput out[LAW_MAX_OUTPUTS]);
 /* The outputs of its fast path (a body with `rare`): S, psi, the state and `*rare`, the flag
  * that a rare `if` was due. */
