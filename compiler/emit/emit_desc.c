@@ -211,6 +211,8 @@ static void bodies_desc(Emitter *E)
             fputs("        .quadratic = 1, /* the gradient exact for quadratic fields */\n", out);
         if (E->plans[i].law_fdot)
             fputs("        .fdot = 1, /* the law reads the rate of F */\n", out);
+        if (E->plans[i].law_wave)
+            fputs("        .wavespeed = 1, /* the law gives its wave speed */\n", out);
         const int blocks = (E->plans[i].offset_blocks ? 1 : 0) | (E->plans[i].momentum_blocks ? 2 : 0);
         if (blocks && !strcmp(E->target->name, "cpu"))
             fprintf(out, "        .offset_blocks = %d, /* the pair passes' offset blocks */\n",

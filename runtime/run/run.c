@@ -791,10 +791,14 @@ static void dt_collapse_report(run_state *r, double dt, double floor_dt)
                  s->step, s->t, dt, floor_dt, contact);
         return;
     }
-    char crushed[96] = "";
+    char crushed[160] = "";
+    int stiffens = 0; /* a law that gives its wave speed counts it in the stretch */
+    for (int i = 0; i < s->nbodies; i++)
+        stiffens |= s->bodies[i].desc->wavespeed;
     if (s->dt_factor < 1) /* the bound followed a compression: factor lambda / lambda_on */
-        snprintf(crushed, sizeof crushed, "; compressed to a principal stretch of %.3g",
-                 s->dt_factor * r->m->dt_lambda_on);
+        snprintf(crushed, sizeof crushed, "; compressed to a principal stretch of %.3g%s",
+                 s->dt_factor * r->m->dt_lambda_on,
+                 stiffens ? " (times c0 over the wave speed a law gives, where it is larger)" : "");
     char what[256];
     if (r->m->dt_fixed > 0) /* a bound of 0: |v|^2 or |a|^2 beyond the largest double */
         snprintf(what, sizeof what, "runaway under the fixed time step %g s", r->m->dt_fixed);

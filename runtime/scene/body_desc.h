@@ -77,6 +77,8 @@ typedef struct {
     int clamp;
     double clamp_p[3], clamp_n[3];
     const char *clamp_where;    /* its model line, for messages */
+    int wavespeed;              /* 1: the law gives its wave speed, which the compression bound
+                                   takes with the stretch (lam2 below) */
     int fdot;                   /* 1: the law reads the rate of F (the gradient pass sums the
                                    velocity's gradient into Ad; CPU lists) */
     int quadratic;              /* 1: the corrected gradient exact for quadratic fields, with
