@@ -235,12 +235,10 @@ static Val law_input(Law *L, const char *name)
         return t_map2(L, SN_MUL, Cdot_value(L), scalar(sg_const(L->g, 0.5)));
     if (!strcmp(name, "J"))
         return scalar(volume_ratio(L));
+    if (strcmp(name, "rho0") && strcmp(name, "rho"))
+        return BAD;
     const int rho0 = isnan(L->rho0) ? sg_input(L->g, "rho0", -1) : sg_const(L->g, L->rho0);
-    if (!strcmp(name, "rho0"))
-        return scalar(rho0);
-    if (!strcmp(name, "rho"))
-        return scalar(sg_binary(L->g, SN_DIV, rho0, volume_ratio(L)));
-    return BAD;
+    return scalar(!strcmp(name, "rho0") ? rho0 : sg_binary(L->g, SN_DIV, rho0, volume_ratio(L)));
 }
 
 static Val lookup(Law *L, const Expr *e)
@@ -540,6 +538,19 @@ static int state_stmt(Law *L, const MatStmt *s)
     return 0;
 }
 
+/* The slot of the scalar state variable that statement s (`dissipation name`, `temperature
+ * name, c`) names, or -1 after an error at it: what it is for, and an example. */
+static int scalar_state(Law *L, const MatStmt *s, const char *what, const char *example)
+{
+    const LawRoots *r = &L->out;
+    for (int v = 0; v < r->nstates; v++)
+        if (!strcmp(r->states[v].name, s->name) && r->states[v].size == 1)
+            return r->states[v].offset;
+    diag_error(s->loc, "'%s' is not a scalar state variable of material '%s' (%s names one, "
+                       "e.g. %s)", s->name, L->law->name, what, example);
+    return -1;
+}
+
 /* dissipation name: the scalar state variable `name` accumulates the energy density the law
  * has dissipated (plastic work); the program reports its volume integral per body. */
 static int dissipation_stmt(Law *L, const MatStmt *s)
@@ -547,19 +558,15 @@ static int dissipation_stmt(Law *L, const MatStmt *s)
     LawRoots *r = &L->out;
     if (L->in_if || L->in_tension)
         return not_in_if(L, s, "a dissipation declaration");
-    for (int v = 0; v < r->nstates; v++)
-        if (!strcmp(r->states[v].name, s->name) && r->states[v].size == 1) {
-            if (r->dissipation) {
-                diag_error(s->loc, "material '%s' declares its dissipation twice", L->law->name);
-                return -1;
-            }
-            r->dissipation = 1 + r->states[v].offset;
-            return 0;
-        }
-    diag_error(s->loc, "'%s' is not a scalar state variable of material '%s' (dissipation "
-                       "names one, e.g. state wp = 0)",
-               s->name, L->law->name);
-    return -1;
+    if (r->dissipation) {
+        diag_error(s->loc, "material '%s' declares its dissipation twice", L->law->name);
+        return -1;
+    }
+    const int slot = scalar_state(L, s, "dissipation", "state wp = 0");
+    if (slot < 0)
+        return -1;
+    r->dissipation = 1 + slot;
+    return 0;
 }
 
 /* temperature name, c: the scalar state variable `name` is the particle's temperature [K],
@@ -575,15 +582,9 @@ static int temperature_stmt(Law *L, const MatStmt *s)
         diag_error(s->loc, "material '%s' declares its temperature twice", L->law->name);
         return -1;
     }
-    int slot = -1;
-    for (int v = 0; v < r->nstates; v++)
-        if (!strcmp(r->states[v].name, s->name) && r->states[v].size == 1)
-            slot = r->states[v].offset;
-    if (slot < 0) {
-        diag_error(s->loc, "'%s' is not a scalar state variable of material '%s' (temperature "
-                           "names one, e.g. state T = T0)", s->name, L->law->name);
+    const int slot = scalar_state(L, s, "temperature", "state T = T0");
+    if (slot < 0)
         return -1;
-    }
     Val c = need_scalar(s->value, eval(L, s->value), "a specific heat");
     if (!ok(c))
         return -1;
