@@ -19,6 +19,10 @@ static void @B@_gradient_halo_pairs(sph_body *b)
     const @B@_vec *restrict wtab = (const @B@_vec *)b->wtab;
     const double *restrict u = b->u;
     sph_real *restrict A = b->A;
+//@if LAW_FDOT
+    const double *restrict v = b->v;
+    sph_real *restrict Ad = b->Ad;
+//@endif
 //@if FRACTURE
     const double *restrict sf = b->s;
     const sph_real *restrict ltab = b->ltab;
@@ -33,10 +37,10 @@ static void @B@_gradient_halo_pairs(sph_body *b)
         for (int r = 0; r < D; r++)
             ui[r] = u[(size_t)i * D + r];
 //@if LAW_FDOT
-        @B@_tensor Adi = {0};
+        @B@_tensor Adi = {0}; /* the velocity's gradient the same way */
         double vi[D];
         for (int r = 0; r < D; r++)
-            vi[r] = b->v[(size_t)i * D + r];
+            vi[r] = v[(size_t)i * D + r];
 //@endif
 //@if FRACTURE
         double lapi = 0;
@@ -49,13 +53,13 @@ static void @B@_gradient_halo_pairs(sph_body *b)
             @B@_pair_tensor(u + (size_t)j * D, ui, wtab[xk[p]], &t);
             @B@_tensor_add(&Ai, &t);
 //@if LAW_FDOT
-            @B@_pair_tensor(b->v + (size_t)j * D, vi, wtab[xk[p]], &t);
+            @B@_pair_tensor(v + (size_t)j * D, vi, wtab[xk[p]], &t);
             @B@_tensor_add(&Adi, &t);
 //@endif
         }
         @B@_tensor_add_to(A + (size_t)i * D * R, &Ai);
 //@if LAW_FDOT
-        @B@_tensor_add_to(b->Ad + (size_t)i * D * R, &Adi);
+        @B@_tensor_add_to(Ad + (size_t)i * D * R, &Adi);
 //@endif
 //@if FRACTURE
         lap[i] += lapi;
@@ -86,10 +90,12 @@ static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
         ui[r] = u[(size_t)i * D + r];
 //@if LAW_FDOT
     /* the velocity's gradient, for a law that reads the rate of F: the same pair sum of v */
+    const double *restrict v = b->v;
+    sph_real *restrict Ad = b->Ad; /* zero on entry, like A */
     @B@_tensor Adi = {0};
     double vi[D];
     for (int r = 0; r < D; r++)
-        vi[r] = b->v[(size_t)i * D + r];
+        vi[r] = v[(size_t)i * D + r];
 //@endif
 //@if QUADRATIC
     @B@_qvec aqi[D] = {{0}};
@@ -108,9 +114,9 @@ static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
         @B@_tensor_add(&Ai, &t);
         @B@_tensor_add_to(A + (size_t)j * D * R, &t);
 //@if LAW_FDOT
-        @B@_pair_tensor(b->v + (size_t)j * D, vi, wtab[hk[p]], &t);
+        @B@_pair_tensor(v + (size_t)j * D, vi, wtab[hk[p]], &t);
         @B@_tensor_add(&Adi, &t);
-        @B@_tensor_add_to(b->Ad + (size_t)j * D * R, &t);
+        @B@_tensor_add_to(Ad + (size_t)j * D * R, &t);
 //@endif
 //@if QUADRATIC
         { /* the quadratic fit's sums (body_quadratic.c): q_ij is even, u_j - u_i odd */
@@ -126,7 +132,7 @@ static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
     }
     @B@_tensor_add_to(A + (size_t)i * D * R, &Ai);
 //@if LAW_FDOT
-    @B@_tensor_add_to(b->Ad + (size_t)i * D * R, &Adi);
+    @B@_tensor_add_to(Ad + (size_t)i * D * R, &Adi);
 //@endif
 //@if QUADRATIC
     for (int r = 0; r < D; r++)

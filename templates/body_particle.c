@@ -22,6 +22,20 @@ SPH_FN void @B@_phase_move(double *s, double *sd, double h)
 
 //@endif
 
+/* G += A L^T: a pair sum of the gradient pass (D x D, row by row) corrected by the particle's
+ * L (eq. 53, 63), into the in-plane entries of the 3x3 G. */
+SPH_FN void @B@_add_corrected(const double *A, const double *L, double G[9])
+{
+    enum { D = @DIM@ };
+    for (int r = 0; r < D; r++)
+        for (int c = 0; c < D; c++) {
+            double a = 0;
+            for (int k = 0; k < D; k++)
+                a += A[r * D + k] * L[c * D + k];
+            G[sph_axis(D, r) * 3 + sph_axis(D, c)] += a;
+        }
+}
+
 /* ---- body @B@: one particle's stress ---------------------------------------------------
  * From A_i = sum_j V_j (u_j - u_i) (x) grad W_ij and the particle's correction L_i: F = I +
  * A L^T (eq. 53 with the corrected gradient), the material law (S, psi), P = F S (eq. 2), and
@@ -74,24 +88,14 @@ SPH_FLAT void @B@_stress_of(const double *A, const double *L,
 {
     enum { D = @DIM@ };
     double F[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-    for (int r = 0; r < D; r++)
-        for (int c = 0; c < D; c++) {
-            double a = 0;
-            for (int k = 0; k < D; k++)
-                a += A[r * D + k] * L[c * D + k];
-            F[sph_axis(D, r) * 3 + sph_axis(D, c)] += a;
-        }
+    @B@_add_corrected(A, L, F);
 //@if LAW_FDOT
     /* dF/dt = Ad L^T, the velocity's corrected gradient as F's of the displacement */
     double Fd[9] = {0};
+    @B@_add_corrected(Ad, L, Fd);
     for (int r = 0; r < D; r++)
-        for (int c = 0; c < D; c++) {
-            double a = 0;
-            for (int k = 0; k < D; k++)
-                a += Ad[r * D + k] * L[c * D + k];
-            Fd[sph_axis(D, r) * 3 + sph_axis(D, c)] = a;
-            Fdp[r * D + c] = a;
-        }
+        for (int c = 0; c < D; c++)
+            Fdp[r * D + c] = Fd[sph_axis(D, r) * 3 + sph_axis(D, c)];
 //@endif
     double S[9], e;
 //@if LAW_WAVE
