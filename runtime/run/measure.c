@@ -50,27 +50,29 @@ void sph_body_energies(const sph_body *b, double *strain, double *kinetic)
     *kinetic = 0.5 * b->mass * ek;
 }
 
+/* The sum over own particles of state value `slot` of the body's law less base (each term
+ * apart: a temperature's rise, not the difference of two large sums); 0 without state. */
+static double state_sum(const sph_body *b, int slot, double base)
+{
+    const int ns = b->desc->nstate;
+    double sum = 0;
+    for (int i = 0; slot >= 0 && b->state && i < b->nown; i++)
+        sum += b->state[(size_t)i * ns + slot] - base;
+    return sum;
+}
+
 double sph_dissipated_energy(const sph_body *b)
 {
-    const int slot = b->desc->dissipation - 1, ns = b->desc->nstate;
-    if (slot < 0 || !b->state)
-        return 0.0;
-    double w = 0;
-    for (int i = 0; i < b->nown; i++)
-        w += b->state[(size_t)i * ns + slot];
-    return w * b->vol;
+    return state_sum(b, b->desc->dissipation - 1, 0.0) * b->vol;
 }
 
 double sph_thermal_energy(const sph_body *b)
 {
-    const int slot = b->desc->temperature - 1, ns = b->desc->nstate;
+    const int slot = b->desc->temperature - 1;
     if (slot < 0 || !b->state)
         return 0.0;
-    const double T0 = b->desc->state_init[slot];
-    double dT = 0;
-    for (int i = 0; i < b->nown; i++)
-        dT += b->state[(size_t)i * ns + slot] - T0;
-    return b->mass * b->desc->heat_capacity * dT;
+    const double T0 = b->desc->state_init[slot]; /* (the same at every particle) */
+    return b->mass * b->desc->heat_capacity * state_sum(b, slot, T0);
 }
 
 void sph_measure(const sph_body *b, int k, double out[6])
