@@ -91,6 +91,36 @@ static int first_use(const Model *m, int i)
     return 1;
 }
 
+/* What body b's law cannot be combined with, once its features p are known: an error (or a
+ * warning, for what only goes unused) at the setting that makes it so.  Returns whether an
+ * error was reported. */
+static int law_combinations(const Model *m, const BodyModel *b, const BodyPlan *p)
+{
+    int bad = 0;
+    if (p->law_fdot && m->gradient == GRADIENT_QUADRATIC) {
+        diag_error(m->gradient_loc, "'gradient quadratic' with a law that reads a rate (body "
+                   "'%s', material '%s'): the rate of F comes from the linear corrected "
+                   "gradient; 'gradient linear' serves it", b->name, b->law->name);
+        bad = 1;
+    }
+    if (p->law_wave && p->fracture) {
+        diag_error(b->fracture.loc, "fracture cannot be combined with material '%s', which "
+                   "gives its wave speed (an equation of state)", b->law->name);
+        bad = 1;
+    }
+    if (p->law_wave && !p->crush)
+        diag_warning(b->loc, "'timestep undeformed' keeps the paper's time step "
+                     "on the undeformed spacing: the wave speed material '%s' gives (body "
+                     "'%s') does not bound it", b->law->name, b->name);
+    if (p->fracture && (p->law_dt || p->law_fdot)) {
+        diag_error(b->fracture.loc, "fracture cannot be combined with material '%s', which "
+                   "reads %s: the paper's phase field is for elastic materials (section "
+                   "2.3.3, remark 3)", b->law->name, p->law_dt ? "dt" : "a rate");
+        bad = 1;
+    }
+    return bad;
+}
+
 int lower_model(const Model *m, Plan *plan)
 {
     int bad = 0;
@@ -130,27 +160,8 @@ int lower_model(const Model *m, Plan *plan)
                          "dp 1 mm, docs/verification.md); 'gradient linear' suits flow",
                          b->name, b->law->name);
         features(m, b, &p->roots, p);
-        if (built && p->law_fdot && m->gradient == GRADIENT_QUADRATIC) {
-            diag_error(m->gradient_loc, "'gradient quadratic' with a law that reads a rate (body "
-                       "'%s', material '%s'): the rate of F comes from the linear corrected "
-                       "gradient; 'gradient linear' serves it", b->name, b->law->name);
+        if (built && law_combinations(m, b, p))
             bad = 1;
-        }
-        if (built && p->law_wave && p->fracture) {
-            diag_error(b->fracture.loc, "fracture cannot be combined with material '%s', which "
-                       "gives its wave speed (an equation of state)", b->law->name);
-            bad = 1;
-        }
-        if (built && p->law_wave && !p->crush)
-            diag_warning(b->loc, "'timestep undeformed' keeps the paper's time step "
-                         "on the undeformed spacing: the wave speed material '%s' gives (body "
-                         "'%s') does not bound it", b->law->name, b->name);
-        if (built && p->fracture && (p->law_dt || p->law_fdot)) {
-            diag_error(b->fracture.loc, "fracture cannot be combined with material '%s', which "
-                       "reads %s: the paper's phase field is for elastic materials (section "
-                       "2.3.3, remark 3)", b->law->name, p->law_dt ? "dt" : "a rate");
-            bad = 1;
-        }
         if (p->rare && law_fast(&p->law, &p->roots, &p->fast, &p->fast_flag))
             p->rare = 0;
         numbers(m, b, p);
