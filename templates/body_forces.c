@@ -42,11 +42,19 @@ static void @B@_gradient_halo_pairs(sph_body *b)
         for (int r = 0; r < D; r++)
             vi[r] = v[(size_t)i * D + r];
 //@endif
+//@if QUADRATIC
+        @B@_qvec aqi[D] = {{0}}, qt[D]; /* the quadratic fit's sums, i's share */
+//@endif
 //@if FRACTURE
         double lapi = 0;
 //@endif
         for (int p = xs[i]; p < xs[i + 1]; p++) {
             const int j = xb[p];
+//@if QUADRATIC
+            @B@_quad_pair(b, xk[p], u + (size_t)j * D, ui, qt);
+            for (int r = 0; r < D; r++)
+                aqi[r] += qt[r];
+//@endif
 //@if FRACTURE
             lapi += ltab[xk[p]] * (sf[i] - sf[j]);
 //@endif
@@ -60,6 +68,9 @@ static void @B@_gradient_halo_pairs(sph_body *b)
         @B@_tensor_add_to(A + (size_t)i * D * R, &Ai);
 //@if LAW_FDOT
         @B@_tensor_add_to(Ad + (size_t)i * D * R, &Adi);
+//@endif
+//@if QUADRATIC
+        @B@_quad_add_to(b, i, aqi);
 //@endif
 //@if FRACTURE
         lap[i] += lapi;
@@ -119,14 +130,11 @@ static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
         @B@_tensor_add_to(Ad + (size_t)j * D * R, &t);
 //@endif
 //@if QUADRATIC
-        { /* the quadratic fit's sums (body_quadratic.c): q_ij is even, u_j - u_i odd */
-            const @B@_qvec q = *(const @B@_qvec *)(b->qtab + (size_t)hk[p] * @B@_QR);
-            @B@_qvec *aqj = (@B@_qvec *)(b->Aq + (size_t)j * D * @B@_QR);
-            for (int r = 0; r < D; r++) {
-                const @B@_qvec t = (sph_real)(u[(size_t)j * D + r] - ui[r]) * q;
-                aqi[r] += t;
-                aqj[r] -= t;
-            }
+        { /* the quadratic fit's sums (body_quadratic.c) */
+            @B@_qvec qt[D], *aqj = (@B@_qvec *)(b->Aq + (size_t)j * D * @B@_QR);
+            @B@_quad_pair(b, hk[p], u + (size_t)j * D, ui, qt);
+            for (int r = 0; r < D; r++)
+                aqi[r] += qt[r], aqj[r] -= qt[r];
         }
 //@endif
     }
@@ -135,8 +143,7 @@ static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
     @B@_tensor_add_to(Ad + (size_t)i * D * R, &Adi);
 //@endif
 //@if QUADRATIC
-    for (int r = 0; r < D; r++)
-        ((@B@_qvec *)(b->Aq + (size_t)i * D * @B@_QR))[r] += aqi[r];
+    @B@_quad_add_to(b, i, aqi);
 //@endif
 //@if FRACTURE
     lap[i] += lapi;
@@ -867,6 +874,9 @@ static void @B@_momentum_pass(sph_body *b)
 //@endif
 //@if PAIR_TERMS
         SPH_FIELD(b->F, 9),
+//@endif
+//@if QUADRATIC
+        SPH_FIELD(b->Qq, @B@_QN * SPH_ROW(D)), /* the quadratic gradient's pair term */
 //@endif
     };
     const int nhalo_in = sizeof halo_in / sizeof *halo_in;

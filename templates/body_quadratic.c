@@ -32,6 +32,24 @@ static inline int @B@_quad_monomial(int a, int b)
     return @DIM@ == 2 ? 2 : a + b == 1 ? 3 : a + b == 3 ? 4 : 5;
 }
 
+/* A pair's share of the fit's sums, Aq_i += (u_j - u_i) (x) q_ij row by row, into t; j's is
+ * the same with the opposite sign (q_ij is even in the offset, u_j - u_i odd). */
+static inline void @B@_quad_pair(const sph_body *b, int k, const double *uj, const double *ui,
+                                 @B@_qvec t[@DIM@])
+{
+    const @B@_qvec q = *(const @B@_qvec *)(b->qtab + (size_t)k * @B@_QR);
+    for (int r = 0; r < @DIM@; r++)
+        t[r] = (sph_real)(uj[r] - ui[r]) * q;
+}
+
+/* Particle i's summed pairs aq added to its Aq. */
+static inline void @B@_quad_add_to(sph_body *b, int i, const @B@_qvec aq[@DIM@])
+{
+    @B@_qvec *Aqi = (@B@_qvec *)(b->Aq + (size_t)i * @DIM@ * @B@_QR);
+    for (int r = 0; r < @DIM@; r++)
+        Aqi[r] += aq[r];
+}
+
 /* After the gradient pass: each particle's fit c = [A, Aq] M^{-1}, its gradient back into A
  * (read by the stress pass as F = I + A, L being I) and its second-derivative
  * coefficients into Aq (read by @B@_quad_stress). */

@@ -341,15 +341,17 @@ static const struct {
     [TARGET_CUDA] = {compile_cuda, "nvcc"},
 };
 
-/* What runs on the CPU target on one process only (the quadratic gradient's pair sums and a
- * clamp's images are the CPU lists'): an error at its line for --target cuda or --mpi, 1;
- * 0 otherwise. */
-static int off_cpu(const Options *o, SrcLoc loc, const char *what, const char *instead)
+/* What runs on the CPU target only (the quadratic gradient's pair sums are the CPU passes'),
+ * and, with one_process, on one process only (a clamp's images are found among a process's
+ * own particles): an error at its line where the options ask for more, 1; 0 otherwise. */
+static int off_cpu(const Options *o, SrcLoc loc, const char *what, int one_process,
+                   const char *instead)
 {
-    if (o->target != TARGET_CUDA && !o->mpi)
+    const int mpi = o->mpi && one_process;
+    if (o->target != TARGET_CUDA && !mpi)
         return 0;
-    diag_error(loc, "%s runs on the CPU target on one process; %s needs %s", what,
-               o->mpi ? "--mpi" : "--target cuda", instead);
+    diag_error(loc, "%s runs on the CPU target%s; %s needs %s", what,
+               one_process ? " on one process" : "", mpi ? "--mpi" : "--target cuda", instead);
     return 1;
 }
 
@@ -357,10 +359,10 @@ int build_program(const Plan *plan, const Options *o, const Paths *paths)
 {
     const Model *m = plan->model;
     if (m->gradient == GRADIENT_QUADRATIC && off_cpu(o, m->gradient_loc, "'gradient quadratic'",
-                                                     "'gradient linear'"))
+                                                     0, "'gradient linear'"))
         return -1;
     for (int i = 0; i < m->nbodies; i++)
-        if (m->bodies[i].has_clamp && off_cpu(o, m->bodies[i].clamp_loc, "a body's 'clamp'",
+        if (m->bodies[i].has_clamp && off_cpu(o, m->bodies[i].clamp_loc, "a body's 'clamp'", 1,
                                               "a velocity condition instead"))
             return -1;
     if (o->mpi && mpi_ready(m, o, paths))

@@ -289,6 +289,14 @@ static void table_entry(sph_body *b, int k, int i, long p, sph_kernel_kind kerne
     }
 }
 
+/* The number of particles a selection holds on all processes. */
+static double selected(const sph_body *b, int count)
+{
+    double n = count;
+    b->par->sum(&n, 1);
+    return n;
+}
+
 /* The quadratic gradient's moments (pairs/quadratic.h): M_i^{-1} per particle, which takes the
  * linear correction's place, L = I (the stress pass's F = I + A L then reads the fit's
  * gradient from A: templates/body_quadratic.c).  Particles with too few neighbours for a
@@ -301,9 +309,10 @@ static void quadratic_moments(sph_body *b, sph_kernel_kind kernel)
     for (int i = 0; i < b->nown; i++)
         for (int k = 0; k < D * D; k++)
             b->L[(size_t)i * D * D + k] = k % (D + 1) == 0 ? 1.0 : 0.0;
-    if (nlinear)
-        sph_note("body '%s': %d of %d particles have too few neighbours for the quadratic "
-                 "gradient and keep the linear one", b->desc->name, nlinear, b->nown);
+    const double count[2] = {selected(b, nlinear), selected(b, b->nown)}; /* (all processes) */
+    if (count[0] > 0 && b->par->rank == 0)
+        sph_note("body '%s': %.0f of %.0f particles have too few neighbours for the quadratic "
+                 "gradient and keep the linear one", b->desc->name, count[0], count[1]);
 }
 
 /* Per-pair tables (see sphrt.h): one entry per distinct lattice offset, or one per pair
@@ -461,14 +470,6 @@ static int selects_any(const sph_body *b, int (*value)(const struct sph_pt *, do
         }
     b->par->max(&any, 1);
     return any > 0;
-}
-
-/* The number of particles a selection holds on all processes. */
-static double selected(const sph_body *b, int count)
-{
-    double n = count;
-    b->par->sum(&n, 1);
-    return n;
 }
 
 /* A boundary condition whose time window opens at or after the run's end never acts (a step
