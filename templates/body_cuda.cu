@@ -49,6 +49,10 @@ SPH_FN int @B@_pair(const sph_body *b, int i, int s, int *k, sph_real w[@DIM@], 
 //@if LAW_FDOT
  * Over the same pairs the velocity's gradient Ad_i, for the rate of F the law reads.
 //@endif
+//@if QUADRATIC
+ * With the quadratic gradient (body_quadratic.c) the same pairs' Aq_i as well, the fit's
+ * gradient in A (L being I) and its second derivatives' strain-gradient term after the law.
+//@endif
 //@if LAW_DT
  * law_dt: the time since the law's last evaluation (a value, or the device clock's).
 //@endif
@@ -77,6 +81,9 @@ static void @B@_stress_pass(sph_body *b
 //@if LAW_FDOT
     const double *v = sph_cuda_components(b->v, b->vs, b->n, D);
 //@endif
+//@if QUADRATIC
+    const double quad_k = pow(b->vol, 2.0 / @DIM@) / 12.0; /* l^2 / 12, the cell's second moment */
+//@endif
     SPH_FOR(i, b->nown, {
         const size_t n = (size_t)b->n;
         double A[D * D] = {0}, ui[D];
@@ -90,6 +97,9 @@ static void @B@_stress_pass(sph_body *b
 //@if FRACTURE
         double lap = 0; /* the Laplacian of the phase field (eq. 62) over the same pairs */
 //@endif
+//@if QUADRATIC
+        double aq[D][@B@_QN] = {{0}}; /* sum_j (u_j - u_i) (x) q_ij */
+//@endif
         for (int s = 0, slots = b->fb_count[i]; s < slots; s++) {
             sph_real w[D], g, l;
             int k;
@@ -98,6 +108,14 @@ static void @B@_stress_pass(sph_body *b
             for (int r = 0; r < D; r++)
                 d[r] = u[SPH_VEC(j, r, D, n)] - ui[r];
             @B@_gradient_term_d(A, d, w);
+//@if QUADRATIC
+            { /* the pair's monomials, the same both ways (even in the offset) */
+                const sph_real *q = b->qtab + (size_t)(k < 0 ? ~k : k) * @B@_QR;
+                for (int r = 0; r < D; r++)
+                    for (int m = 0; m < @B@_QN; m++)
+                        aq[r][m] += d[r] * (double)q[m];
+            }
+//@endif
 //@if LAW_FDOT
             for (int r = 0; r < D; r++) /* v_j - v_i, the same term */
                 d[r] = v[SPH_VEC(j, r, D, n)] - vi[r];
@@ -110,6 +128,21 @@ static void @B@_stress_pass(sph_body *b
 //@if FRACTURE
         b->lap[i] = lap;
 //@endif
+//@if QUADRATIC
+        const double *Mi = b->Mq + (size_t)i * @B@_QM * @B@_QM;
+        for (int r = 0; r < D; r++) { /* the fit, row by row: A its gradient, aq the rest */
+            double a[@B@_QM], c[@B@_QM];
+            for (int k = 0; k < D; k++)
+                a[k] = A[r * D + k];
+            for (int k = 0; k < @B@_QN; k++)
+                a[D + k] = aq[r][k];
+            @B@_quad_solve(a, Mi, c);
+            for (int k = 0; k < D; k++)
+                A[r * D + k] = c[k];
+            for (int k = 0; k < @B@_QN; k++)
+                aq[r][k] = c[D + k];
+        }
+//@endif
         @B@_particle_stress(b, i, A
 //@if LAW_FDOT
                             , Ad
@@ -118,6 +151,9 @@ static void @B@_stress_pass(sph_body *b
                             , (double)law_dt
 //@endif
                             );
+//@if QUADRATIC
+        @B@_quad_stress_of(b, i, quad_k, aq);
+//@endif
     });
 }
 
@@ -136,6 +172,9 @@ static void @B@_momentum_pass(sph_body *b)
 //@endif
 //@if PAIR_TERMS
         {b->F, sizeof *b->F, 9, 9, 1},
+//@endif
+//@if QUADRATIC
+        {b->Qq, sizeof *b->Qq, @B@_QN * SPH_ROW(D), @B@_QN * SPH_ROW(D), 1},
 //@endif
     };
     sph_cuda_halo(b, halo_in, sizeof halo_in / sizeof *halo_in);
@@ -186,6 +225,11 @@ static void @B@_momentum_pass(sph_body *b)
 //@endif
 //@if PAIR_TERMS
             @B@_pair_terms(b, i, j, k < 0 ? ~k : k, f); /* also with SPH_CUDA_RECOMPUTE */
+//@endif
+//@if QUADRATIC
+            @B@_quad_pair_force(b->Qq + (size_t)i * @B@_QN * SPH_ROW(D),
+                                b->Qq + (size_t)j * @B@_QN * SPH_ROW(D),
+                                b->qtab + (size_t)(k < 0 ? ~k : k) * @B@_QR, inv_rho, f);
 //@endif
             for (int r = 0; r < D; r++)
                 fi[r] += f[r];

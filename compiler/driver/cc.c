@@ -341,29 +341,23 @@ static const struct {
     [TARGET_CUDA] = {compile_cuda, "nvcc"},
 };
 
-/* What runs on the CPU target only (the quadratic gradient's pair sums are the CPU passes'),
- * and, with one_process, on one process only (a clamp's images are found among a process's
- * own particles): an error at its line where the options ask for more, 1; 0 otherwise. */
-static int off_cpu(const Options *o, SrcLoc loc, const char *what, int one_process,
-                   const char *instead)
+/* A clamp by images runs on the CPU target on one process (its images are found among a
+ * process's own particles, run/clamp.c): an error at its line for --target cuda or --mpi, 1;
+ * 0 otherwise. */
+static int clamp_off_cpu(const Options *o, SrcLoc loc)
 {
-    const int mpi = o->mpi && one_process;
-    if (o->target != TARGET_CUDA && !mpi)
+    if (o->target != TARGET_CUDA && !o->mpi)
         return 0;
-    diag_error(loc, "%s runs on the CPU target%s; %s needs %s", what,
-               one_process ? " on one process" : "", mpi ? "--mpi" : "--target cuda", instead);
+    diag_error(loc, "a body's 'clamp' runs on the CPU target on one process; %s needs a velocity "
+                    "condition instead", o->mpi ? "--mpi" : "--target cuda");
     return 1;
 }
 
 int build_program(const Plan *plan, const Options *o, const Paths *paths)
 {
     const Model *m = plan->model;
-    if (m->gradient == GRADIENT_QUADRATIC && off_cpu(o, m->gradient_loc, "'gradient quadratic'",
-                                                     0, "'gradient linear'"))
-        return -1;
     for (int i = 0; i < m->nbodies; i++)
-        if (m->bodies[i].has_clamp && off_cpu(o, m->bodies[i].clamp_loc, "a body's 'clamp'", 1,
-                                              "a velocity condition instead"))
+        if (m->bodies[i].has_clamp && clamp_off_cpu(o, m->bodies[i].clamp_loc))
             return -1;
     if (o->mpi && mpi_ready(m, o, paths))
         return -1;

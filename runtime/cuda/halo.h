@@ -90,7 +90,7 @@ static inline sph_cuda_halo_lists *sph_cuda_halo_prepare(sph_body *b, int width)
     return x;
 }
 
-enum { SPH_CUDA_HALO_FIELDS = 4 };
+enum { SPH_CUDA_HALO_FIELDS = 5 }; /* (the momentum pass's Q, cof F, Cs, F and Qq) */
 struct sph_cuda_fields {
     sph_cuda_field f[SPH_CUDA_HALO_FIELDS];
     int nf;

@@ -13,6 +13,7 @@
 #include "memory.h"
 #include "sums.h"
 #include "core/profile.h"
+#include "pairs/quadratic.h"
 #include "scene/body.h"
 #include "scene/body_desc.h"
 #include "scene/pass_types.h"
@@ -56,6 +57,13 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->wtab = sph_dev_table(h->wtab, nt, SPH_ROW(d));
     b->gtab = sph_dev_table(h->gtab, nt, 1);
     b->htab = sph_dev_table(h->htab, nt, 1);
+    /* the quadratic gradient (NULL without): the pairs' monomials, each own particle's inverse
+     * moment matrix and the stress's share the momentum pass reads; each thread keeps its
+     * particle's fit sums (body_cuda.cu), so no Aq */
+    b->qtab = sph_dev_table(h->qtab, nt, SPH_QR(d));
+    b->Mq = (double *)sph_dev_copy(h->Mq, (size_t)h->nown * SPH_QM(d) * SPH_QM(d) * sizeof(double));
+    b->Qq = h->Qq ? (sph_real *)sph_dev_alloc(n * SPH_QN(d) * SPH_ROW(d) * sizeof(sph_real)) : NULL;
+    b->Aq = NULL;
     sph_full f;
     SPH_TIMED("set-up: the device's full pair lists", sph_full_lists(h, &f));
     const size_t words = ((size_t)f.slots + 31) / 32;
