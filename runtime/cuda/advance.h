@@ -48,7 +48,7 @@ __device__ static inline void sph_clock_choose_on(sph_cuda_clock *c)
         return;
     }
     c->dt_prev = c->dt; /* (the last step's: sph_sim_step's dt_prev) */
-    c->dt = fmin(dt, c->t_stop - c->t);
+    c->dt = sph_landing_dt(dt, c->t_stop - c->t);
 }
 
 __device__ static inline void sph_clock_tick_on(sph_cuda_clock *c)

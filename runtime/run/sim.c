@@ -186,7 +186,7 @@ int sph_sim_advance(sph_sim *s, sph_advance *a)
             a->collapsed = 1, a->dt_bad = dt, a->floor_bad = floor_now;
             break;
         }
-        sph_sim_step(s, fmin(dt, a->t_stop - s->t)); /* land on output times */
+        sph_sim_step(s, sph_landing_dt(dt, a->t_stop - s->t)); /* land on output times */
     }
     return (int)(s->step - step0);
 }

@@ -1,8 +1,12 @@
-# A run that must end stable: -DPROGRAM= -DOUT= [-DWARNING=OFF]
+# A run that must end stable: -DPROGRAM= -DOUT= [-DWARNING=OFF] [-DARGS=a,b] [-DENERGY=TOL]
 # Checked: exit code 0, "verdict": "stable" in summary.json, and every value in every CSV
-# file finite (no nan or inf written); with WARNING=OFF, no fixed-dt warning either.
+# file finite (no nan or inf written); with WARNING=OFF, no fixed-dt warning either; with
+# ENERGY, energies.csv's total at the end within TOL of its first value, relatively (a body
+# without sources or sinks of energy).
 file(REMOVE_RECURSE ${OUT})
-execute_process(COMMAND ${PROGRAM} --quiet --out ${OUT} RESULT_VARIABLE rc ERROR_VARIABLE err)
+string(REPLACE "," ";" args "${ARGS}")
+execute_process(COMMAND ${PROGRAM} --quiet --out ${OUT} ${args} RESULT_VARIABLE rc
+                ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "exit code ${rc} (expected 0); stderr:\n${err}")
 endif()
@@ -21,5 +25,23 @@ foreach(csv ${csvs})
     message(FATAL_ERROR "${csv} holds a non-finite value")
   endif()
 endforeach()
+if(DEFINED ENERGY)
+  file(STRINGS ${OUT}/energies.csv rows)
+  list(GET rows 0 head)
+  list(GET rows 1 first)
+  list(GET rows -1 last)
+  string(REPLACE "," ";" head "${head}")
+  list(FIND head total at)
+  string(REPLACE "," ";" first "${first}")
+  string(REPLACE "," ";" last "${last}")
+  list(GET first ${at} e0)
+  list(GET last ${at} e1)
+  execute_process(COMMAND awk "BEGIN { d = (${e1} - ${e0}) / ${e0}; if (d < 0) d = -d; if (d <= ${ENERGY}) print \"ok\"; else print \"bad\" }"
+                  OUTPUT_VARIABLE verdict OUTPUT_STRIP_TRAILING_WHITESPACE)
+  if(NOT verdict STREQUAL "ok")
+    message(FATAL_ERROR "total energy ${e0} at the start, ${e1} at the end: more than ${ENERGY} apart")
+  endif()
+  message(STATUS "total energy ${e0} at the start, ${e1} at the end")
+endif()
 string(REGEX MATCH "\"steps\": ([0-9]+)" _ "${summary}")
 message(STATUS "stable after ${CMAKE_MATCH_1} steps; CSV files finite")
