@@ -61,6 +61,7 @@
 #include "run/sim.h"          /* the simulation without the program */
 #include "run/measure.h"      /* energies, measurements */
 #include "run/clamp.h"        /* a clamp by mirror images */
+#include "run/clamp_image.h"  /* what it does to one image, on either target */
 #include "run/table.h"        /* reference solutions' tables */
 #include "run/time_step.h"    /* the time step, eq. 64-66 */
 

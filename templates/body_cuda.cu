@@ -44,6 +44,30 @@ SPH_FN int @B@_pair(const sph_body *b, int i, int s, int *k, sph_real w[@DIM@], 
     return j;
 }
 
+//@if CLAMP
+/* A clamp by mirror images (run/clamp_image.h, as the CPU's passes), a thread an image: at
+ * the start of the step's passes each image takes minus its particle's u and v, after the
+ * stress pass it carries no stress or energy, after the momentum pass its force acts on its
+ * particle (without the gravity it got). */
+static void @B@_clamp_images(sph_body *b)
+{
+    SPH_FOR(k, b->nimages, { sph_clamp_image_move(b, k); });
+}
+
+static void @B@_clamp_quiet(sph_body *b)
+{
+    SPH_FOR(k, b->nimages, { sph_clamp_image_quiet(b, k); });
+}
+
+static void @B@_clamp_reactions(sph_body *b)
+{
+    SPH_FOR(k, b->nimages, {
+        const double g[3] = {@G0@, @G1@, @G2@};
+        sph_clamp_image_reaction(b, k, g);
+    });
+}
+
+//@endif
 /* Pass 1-2, per particle: A_i = sum_j V_j (u_j - u_i) (x) grad W_ij over the particle's
  * full list, then F, the law, P L and cof(F) (@B@_particle_stress, body_particle.c).
 //@if LAW_FDOT
@@ -76,6 +100,9 @@ static void @B@_stress_pass(sph_body *b
 //@endif
     };
     sph_cuda_halo(b, halo_in, sizeof halo_in / sizeof *halo_in);
+//@endif
+//@if CLAMP
+    @B@_clamp_images(b); /* the clamp's images move with their particles */
 //@endif
     const double *u = sph_cuda_components(b->u, b->us, b->n, D); /* u_x of all, u_y, ... */
 //@if LAW_FDOT
@@ -155,6 +182,9 @@ static void @B@_stress_pass(sph_body *b
         @B@_quad_stress_of(b, i, quad_k, aq);
 //@endif
     });
+//@if CLAMP
+    @B@_clamp_quiet(b);
+//@endif
 }
 
 /* Pass 3, per particle: rho0 dv_i/dt = sum_j V_j (P_i L_i + P_j L_j) grad W_ij (eq. 55) plus
@@ -241,6 +271,9 @@ static void @B@_momentum_pass(sph_body *b)
         return -0.5 * b->mass * (double)pv; /* each pair twice */
 //@endif
     });
+//@if CLAMP
+    @B@_clamp_reactions(b);
+//@endif
 }
 
 static void @B@_forces(sph_body *b

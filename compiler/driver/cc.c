@@ -341,15 +341,14 @@ static const struct {
     [TARGET_CUDA] = {compile_cuda, "nvcc"},
 };
 
-/* A clamp by images runs on the CPU target on one process (its images are found among a
- * process's own particles, run/clamp.c): an error at its line for --target cuda or --mpi, 1;
- * 0 otherwise. */
-static int clamp_off_cpu(const Options *o, SrcLoc loc)
+/* A clamp by images runs on one process (its images are found among a process's own
+ * particles, run/clamp.c): an error at its line for --mpi, 1; 0 otherwise. */
+static int clamp_many_processes(const Options *o, SrcLoc loc)
 {
-    if (o->target != TARGET_CUDA && !o->mpi)
+    if (!o->mpi)
         return 0;
-    diag_error(loc, "a body's 'clamp' runs on the CPU target on one process; %s needs a velocity "
-                    "condition instead", o->mpi ? "--mpi" : "--target cuda");
+    diag_error(loc, "a body's 'clamp' runs on one process; --mpi needs a velocity condition "
+                    "instead");
     return 1;
 }
 
@@ -357,7 +356,7 @@ int build_program(const Plan *plan, const Options *o, const Paths *paths)
 {
     const Model *m = plan->model;
     for (int i = 0; i < m->nbodies; i++)
-        if (m->bodies[i].has_clamp && clamp_off_cpu(o, m->bodies[i].clamp_loc))
+        if (m->bodies[i].has_clamp && clamp_many_processes(o, m->bodies[i].clamp_loc))
             return -1;
     if (o->mpi && mpi_ready(m, o, paths))
         return -1;

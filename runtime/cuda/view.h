@@ -64,6 +64,9 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->Mq = (double *)sph_dev_copy(h->Mq, (size_t)h->nown * SPH_QM(d) * SPH_QM(d) * sizeof(double));
     b->Qq = h->Qq ? (sph_real *)sph_dev_alloc(n * SPH_QN(d) * SPH_ROW(d) * sizeof(sph_real)) : NULL;
     b->Aq = NULL;
+    /* a clamp's images and the particles they mirror (NULL without: run/clamp.c) */
+    b->image = (int *)sph_dev_copy(h->image, (size_t)h->nimages * sizeof(int));
+    b->image_of = (int *)sph_dev_copy(h->image_of, (size_t)h->nimages * sizeof(int));
     sph_full f;
     SPH_TIMED("set-up: the device's full pair lists", sph_full_lists(h, &f));
     const size_t words = ((size_t)f.slots + 31) / 32;

@@ -17,6 +17,7 @@
 #include <stdlib.h>
 
 #include "clamp.h"
+#include "clamp_image.h"
 #include "core/alloc.h"
 #include "core/exit_codes.h"
 #include "core/message.h"
@@ -124,41 +125,20 @@ int sph_clamp_setup(sph_body *b)
 
 void sph_clamp_images(sph_body *b)
 {
-    const int D = b->dim;
-    for (int k = 0; k < b->nimages; k++) {
-        const size_t g = (size_t)b->image[k] * D, q = (size_t)b->image_of[k] * D;
-        for (int c = 0; c < D; c++) {
-            b->u[g + c] = -b->u[q + c];
-            b->v[g + c] = -b->v[q + c];
-        }
-    }
+    for (int k = 0; k < b->nimages; k++)
+        sph_clamp_image_move(b, k);
 }
 
 void sph_clamp_quiet(sph_body *b)
 {
-    const int D = b->dim;
-    for (int k = 0; k < b->nimages; k++) {
-        const int g = b->image[k];
-        for (int r = 0; r < D; r++)
-            for (int c = 0; c < D; c++)
-                b->Q[SPH_TENSOR(g, r, c, D, b->n)] = 0;
-        if (b->Qq)
-            for (int m = 0; m < SPH_QN(D) * SPH_ROW(D); m++)
-                b->Qq[(size_t)g * SPH_QN(D) * SPH_ROW(D) + m] = 0;
-        b->psi[g] = 0;
-    }
+    for (int k = 0; k < b->nimages; k++)
+        sph_clamp_image_quiet(b, k);
 }
 
 void sph_clamp_reactions(sph_body *b, const double *g)
 {
-    const int D = b->dim;
-    for (int k = 0; k < b->nimages; k++) {
-        const size_t im = (size_t)b->image[k] * D, q = (size_t)b->image_of[k] * D;
-        for (int c = 0; c < D; c++) {
-            b->a[q + c] -= b->a[im + c] - (g ? g[c] : 0.0);
-            b->a[im + c] = 0;
-        }
-    }
+    for (int k = 0; k < b->nimages; k++)
+        sph_clamp_image_reaction(b, k, g);
 }
 
 double sph_clamp_image_v2(const sph_body *b)
