@@ -132,12 +132,21 @@ static void put_column(FILE *f, const char *name, const sph_csv_table *t, int k)
     fputc('"', f);
 }
 
-/* A line plot of table t (file: its name in the output folder, NULL: a table of the run's
- * memory, the <svg> without data-csv): column 0, the time, along x,
- * columns cols[0..ncols) each a line, named in a legend on the right. */
-static void line_plot(FILE *f, const char *file, const sph_csv_table *t, const int *cols,
-                      int ncols, const char *yname, int width, int height)
+/* What a plot is: its id (NULL: none), the file it draws (its name in the output folder;
+ * NULL: a table of the run's memory, the <svg> without data-csv), the name of its y axis,
+ * its size in pixels. */
+typedef struct {
+    const char *id, *file, *yname;
+    int width, height;
+} plot_spec;
+
+/* A line plot of table t as p says: column 0, the time, along x, columns cols[0..ncols) each
+ * a line, named in a legend on the right. */
+static void line_plot(FILE *f, const plot_spec *p, const sph_csv_table *t, const int *cols,
+                      int ncols)
 {
+    const char *file = p->file, *yname = p->yname;
+    const int width = p->width, height = p->height;
     int legend = 0; /* (the longest name) */
     for (int c = 0; c < ncols; c++)
         legend = (int)fmax(legend, (double)strlen(t->names[cols[c]]));
@@ -155,6 +164,8 @@ static void line_plot(FILE *f, const char *file, const sph_csv_table *t, const i
     const axis ax = nice_axis(xlo, xhi), ay = nice_axis(ylo, yhi);
     fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
                "viewBox=\"0 0 %d %d\"", width, height, width, height);
+    if (p->id)
+        fprintf(f, " id=\"%s\"", p->id);
     if (file) {
         fputs(" data-csv=\"", f);
         put_text(f, file);
@@ -214,8 +225,8 @@ static void put_verdict(FILE *f, const sph_report *r)
 {
     fprintf(f, "<p id=\"verdict\" class=\"verdict %s\">", r->status);
     if (!strcmp(r->status, "running"))
-        fprintf(f, "Running: t = %g s of %g s, step %ld (this page is written again at the "
-                   "end).", r->time, r->end_time, r->steps);
+        fprintf(f, "Running: t = %g s of %g s, step %ld (this page is written again as the "
+                   "run goes on, and at its end).", r->time, r->end_time, r->steps);
     else if (!strcmp(r->status, "finished"))
         fprintf(f, "Finished: t = %g s, %ld steps.", r->time, r->steps);
     else if (!strcmp(r->status, "unstable"))
@@ -270,7 +281,8 @@ static void put_energies(FILE *f, const sph_csv_table *t)
     int *cols = malloc(((size_t)t->ncols + 1) * sizeof *cols), n = 0;
     for (int k = 1; cols && k < t->ncols; k++)
         cols[n++] = k;
-    line_plot(f, "energies.csv", t, cols, n, "energy", 760, 380);
+    const plot_spec p = {"energies", "energies.csv", "energy", 760, 380};
+    line_plot(f, &p, t, cols, n);
     free(cols);
 }
 
@@ -279,7 +291,8 @@ static void put_time_steps(FILE *f, const sph_csv_table *t)
     const int col = 1;
     fputs("<h2>Time step</h2>\n<p class=\"note\">The mean time step of each output interval "
           "(its time over its steps), since this process started the run.</p>\n", f);
-    line_plot(f, NULL, t, &col, 1, "time step (s)", 560, 260);
+    const plot_spec p = {"time-step", NULL, "time step (s)", 560, 260};
+    line_plot(f, &p, t, &col, 1);
 }
 
 static void put_plane(FILE *f, const char *name, const sph_csv_table *t, int dim)
@@ -296,8 +309,8 @@ static void put_plane(FILE *f, const char *name, const sph_csv_table *t, int dim
             if (n < 3 && c[0] == (what ? 'f' : 'u') && !(dim == 2 && c[1] == 'y'))
                 cols[n++] = k;
         }
-        line_plot(f, file, t, cols, n, what ? "force" : "displacement (m)",
-                  420, 240);
+        const plot_spec p = {NULL, file, what ? "force" : "displacement (m)", 420, 240};
+        line_plot(f, &p, t, cols, n);
     }
     fputs("</div>\n", f);
 }

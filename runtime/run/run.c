@@ -674,6 +674,7 @@ static int write_summary(run_state *r, const char *status, double wall, int *fai
 {
     const sph_par *par = r->sim.par;
     const int running = !strcmp(status, "running");
+    const double w0 = sph_wall_time();
     body_stats *st = calloc((size_t)r->sim.nbodies + 1, sizeof *st);
     for (int i = 0; st && !running && i < r->sim.nbodies; i++)
         body_stats_of(&r->sim.bodies[i], &st[i]);
@@ -687,7 +688,29 @@ static int write_summary(run_state *r, const char *status, double wall, int *fai
     if (failed)
         *failed = ok[1];
     free(st), free(procs);
+    r->summary_wall = sph_wall_time();
+    r->summary_cost = r->summary_wall - w0;
     return ok[0];
+}
+
+/* While running, summary.json and its page are written again at an output once --summary
+ * seconds of wall time have passed since they last were, and no sooner than SUMMARY_SHARE
+ * times as long as writing them took (a long run's page reads its CSV files back), or with
+ * --summary 0 at every output: a page opened during the run shows it up to a recent output.
+ * Process 0 decides for all (the writing is collective).  Not at the last output, which the
+ * end's summary follows. */
+enum { SUMMARY_SHARE = 50 };
+static int summary_due(run_state *r)
+{
+    const sph_par *par = r->sim.par;
+    const double every = r->opt.summary;
+    int due = 0;
+    if (par->rank == 0 && r->sim.t < r->t_end - 1e-9 * r->t_out)
+        due = every == 0 || sph_wall_time() - r->summary_wall >=
+                                fmax(every, SUMMARY_SHARE * r->summary_cost);
+    if (par->size > 1)
+        par->bcast(&due, sizeof due, 0);
+    return due;
 }
 
 /* ------------------------------------------------------------------ resuming */
@@ -866,6 +889,8 @@ static int time_loop(run_state *r)
                 return -1;
             r->next_out += r->t_out;
             if (sph_run_checkpoint_due(r) && sph_run_write_checkpoint(r))
+                return -1;
+            if (summary_due(r) && write_summary(r, "running", 0, NULL))
                 return -1;
             r->output_seconds += sph_wall_time() - w0;
         } else {

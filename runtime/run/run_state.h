@@ -54,6 +54,8 @@ typedef struct {
     sph_csv_table time_steps;
     double dt_t0;
     long dt_step0;        /* -1: no output yet */
+    double summary_wall;  /* process 0: when summary.json was last written while running, */
+    double summary_cost;  /* and how long writing it (and the page) took */
     char unstable[512];
     char errors[512];     /* the declared expectations' errors, for the final line */
 } run_state;

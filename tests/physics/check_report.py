@@ -33,16 +33,19 @@ def drawn_rows(n, stride):
     return rows
 
 
-def check_plots(root, out):
-    """The errors of the page's plots against the CSV files of folder out."""
+def check_plots(root, out, prefix=False):
+    """The errors of the page's plots against the CSV files of folder out (prefix: a page
+    written during the run, against the files' first rows, as many as it says)."""
     errors, plotted = [], {}
     for svg in root.iter(SVG + "svg"):
         name = svg.get("data-csv")
-        if name is None:  # (the time step: checked in main)
+        if name is None:  # (the time step and its bounds: checked in check_page)
             continue
         with open(os.path.join(out, name), newline="") as f:
             table = list(csv.reader(f))
         header, rows = table[0], [[float(v) for v in r] for r in table[1:]]
+        if prefix and int(svg.get("data-rows")) <= len(rows):
+            rows = rows[:int(svg.get("data-rows"))]
         if int(svg.get("data-rows")) != len(rows):
             errors.append(f"{name}: the page says {svg.get('data-rows')} rows, the file has "
                           f"{len(rows)}")
@@ -72,18 +75,18 @@ def check_plots(root, out):
     return errors, plotted
 
 
-def main():
-    program, out, args = sys.argv[1], sys.argv[2], sys.argv[3:]
-    run = subprocess.run([program, "--quiet", "--overwrite", "--out", out] + args,
-                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if run.returncode != 0:
-        sys.exit(f"{program} exited {run.returncode}:\n{run.stdout}")
-    page = os.path.join(out, "summary.html")
-    with open(page, encoding="utf-8") as f:
-        text = f.read()
+def energy_times(out, rows=None):
+    """The times of energies.csv's rows (its first rows only, when given)."""
+    with open(os.path.join(out, "energies.csv")) as f:
+        times = [float(r.split(",")[0]) for r in f.read().split()[1:]]
+    return times if rows is None else times[:rows]
+
+
+def check_page(text, out, summary, prefix=False):
+    """The errors of page text against summary.json's summary and the files of out (prefix:
+    a page written during the run, against the first rows of the files); and what it
+    plotted."""
     root = ET.fromstring(text)
-    with open(os.path.join(out, "summary.json")) as f:
-        summary = json.load(f)
     errors = []
 
     verdict = next(e for e in root.iter(XHTML + "p") if e.get("id") == "verdict")
@@ -107,7 +110,7 @@ def main():
             errors.append(f"{x['model']}: relative error {cells[4]} % on the page, "
                           f"{100 * error} % in summary.json")
 
-    plot_errors, plotted = check_plots(root, out)
+    plot_errors, plotted = check_plots(root, out, prefix)
     errors += plot_errors
     with open(os.path.join(out, "energies.csv")) as f:
         columns = set(f.readline().strip().split(",")[1:])
@@ -120,9 +123,10 @@ def main():
 
     # The mean time step of each output interval: at the output times after the first, each
     # no longer than its interval.
-    steps = [s for s in root.iter(SVG + "svg") if s.get("data-csv") is None]
-    times = [float(r.split(",")[0]) for r in open(os.path.join(out, "energies.csv"))
-             .read().split()[1:]]
+    steps = [s for s in root.iter(SVG + "svg") if s.get("id") == "time-step"]
+    energies = [s for s in root.iter(SVG + "svg") if s.get("data-csv") == "energies.csv"]
+    times = energy_times(out, int(energies[0].get("data-rows")) if prefix and energies
+                         else None)
     if len(steps) != 1:
         errors.append(f"{len(steps)} time step plots (expected 1)")
     else:
@@ -145,9 +149,23 @@ def main():
     ys = line.get("data-y").split()
     ys[-1] = repr(float(ys[-1]) * 1.001 + 1e-300)
     line.set("data-y", " ".join(ys))
-    if not check_plots(root, out)[0]:
+    if not check_plots(root, out, prefix)[0]:
         errors.append("a page with a plotted number changed passes the check")
+    return errors, plotted
 
+
+def main():
+    program, out, args = sys.argv[1], sys.argv[2], sys.argv[3:]
+    run = subprocess.run([program, "--quiet", "--overwrite", "--out", out] + args,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if run.returncode != 0:
+        sys.exit(f"{program} exited {run.returncode}:\n{run.stdout}")
+    with open(os.path.join(out, "summary.html"), encoding="utf-8") as f:
+        text = f.read()
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    errors, plotted = check_page(text, out, summary)
+    expects = summary.get("expectations", [])
     if errors:
         sys.exit("summary.html:\n  " + "\n  ".join(errors))
     print(f"summary.html: {summary['status']}, {len(expects)} expectations, "
