@@ -295,6 +295,52 @@ static void put_time_steps(FILE *f, const sph_csv_table *t)
     line_plot(f, &p, t, &col, 1);
 }
 
+/* The steps each bound set over the run, and each body's, with their shares of the steps
+ * counted: a row each (those that set none left out), named in data-bound or data-body. */
+static void put_bound_table(FILE *f, const sph_report *r)
+{
+    long counted = 0;
+    for (int k = 0; k < r->nbounds; k++)
+        counted += r->counts[k];
+    if (counted <= 0)
+        return;
+    fputs("<table id=\"time-step-bounds\">\n<tr><th>set by</th><th>steps</th>"
+          "<th>share %</th></tr>\n", f);
+    for (int k = 0; k < r->nbounds + r->nbodies; k++) {
+        if (r->counts[k] <= 0)
+            continue;
+        fprintf(f, "<tr %s=\"", k < r->nbounds ? "data-bound" : "data-body");
+        put_text(f, r->count_names[k]);
+        fprintf(f, "\"><td class=\"text\">%s", k < r->nbounds ? "" : "body ");
+        put_text(f, r->count_names[k]);
+        fprintf(f, "</td><td>%ld</td><td>%.4g</td></tr>\n", r->counts[k],
+                100.0 * (double)r->counts[k] / (double)counted);
+    }
+    fputs("</table>\n", f);
+}
+
+/* What bounded the time step: the table, and each interval's share of steps by bound (the
+ * bounds that set a step at all). */
+static void put_bounds(FILE *f, const sph_report *r)
+{
+    const sph_csv_table *t = r->dt_bounds;
+    fputs("<h3>What bounded it</h3>\n<p class=\"note\">The steps each bound set (speed: "
+          "eq. 65, the sound speed and the particles' speed; acceleration: eq. 66; "
+          "compression: eq. 65 under the factor of a compressed body; contact: the stiffest "
+          "contact; fixed: the scene's step), and each body's bounds.</p>\n", f);
+    put_bound_table(f, r);
+    int cols[16], n = 0;
+    for (int k = 1; k < t->ncols && n < 16; k++) {
+        int any = 0;
+        for (long row = 0; row < t->nrows && !any; row++)
+            any = t->v[(size_t)row * (size_t)t->ncols + (size_t)k] > 0;
+        if (any)
+            cols[n++] = k;
+    }
+    const plot_spec p = {"time-step-shares", NULL, "share of steps", 560, 260};
+    line_plot(f, &p, t, cols, n);
+}
+
 static void put_plane(FILE *f, const char *name, const sph_csv_table *t, int dim)
 {
     char file[300];
@@ -334,6 +380,8 @@ int sph_report_write(const char *path, const sph_report *r)
         put_energies(f, r->energies);
     if (r->time_steps)
         put_time_steps(f, r->time_steps);
+    if (r->dt_bounds)
+        put_bounds(f, r);
     if (r->nplanes)
         fputs("<h2>Measurement planes</h2>\n", f);
     for (int q = 0; q < r->nplanes; q++)

@@ -28,6 +28,13 @@ typedef struct {
     int nexpects;
     const sph_csv_table *energies; /* NULL: none */
     const sph_csv_table *time_steps; /* time, mean time step of each output interval; NULL */
+    /* what bounded the time step: each output interval's share of steps by bound (time and
+     * a column per bound, named; NULL: none counted), and the steps each bound and each
+     * body's bounds set over the run (ncounts names and steps, then nbodies of each) */
+    const sph_csv_table *dt_bounds;
+    const char *const *count_names;
+    const long *counts;
+    int nbounds, nbodies;
     const sph_csv_table *planes;   /* nplanes measurement planes, */
     const char *const *plane_names; /* their names */
     int nplanes;

@@ -433,7 +433,26 @@ static int write_particles(run_state *r)
     return s->par->agree(bad);
 }
 
-/* The mean time step over the output interval that ends now (none at the first output). */
+/* The share of the steps of the output interval that ends now each bound set (none where
+ * the device chose them: not counted). */
+static void note_bounds(run_state *r)
+{
+    const sph_sim *s = &r->sim;
+    double row[1 + SPH_DT_NBOUNDS], counted = 0;
+    for (int k = 0; k < SPH_DT_NBOUNDS; k++)
+        counted += (double)(s->dt_bound_steps[k] - r->dt_bounds0[k]);
+    row[0] = s->t;
+    for (int k = 0; k < SPH_DT_NBOUNDS; k++) {
+        row[1 + k] = counted > 0 ? (double)(s->dt_bound_steps[k] - r->dt_bounds0[k]) / counted
+                                 : 0.0;
+        r->dt_bounds0[k] = s->dt_bound_steps[k];
+    }
+    if (counted > 0)
+        sph_csv_table_add(&r->dt_bounds, row, SPH_REPORT_POINTS);
+}
+
+/* The mean time step over the output interval that ends now (none at the first output), and
+ * what bounded it. */
 static void note_time_step(run_state *r)
 {
     const sph_sim *s = &r->sim;
@@ -441,6 +460,7 @@ static void note_time_step(run_state *r)
         const double row[2] = {s->t, (s->t - r->dt_t0) / (double)(s->step - r->dt_step0)};
         sph_csv_table_add(&r->time_steps, row, SPH_REPORT_POINTS); /* (thinned when long) */
     }
+    note_bounds(r);
     r->dt_t0 = s->t, r->dt_step0 = s->step;
 }
 
@@ -582,6 +602,31 @@ static void processes_summary(sph_json *j, const run_state *r, const double *x)
     sph_json_end_object(j);
 }
 
+/* What set the time steps the host chose since this process started the run: the steps
+ * each bound set, and each body's bounds (summary.json "time_step_bounds"). */
+static void bounds_summary(sph_json *j, const sph_sim *s)
+{
+    static const char *const names[SPH_DT_NBOUNDS] = SPH_DT_BOUND_NAMES;
+    long counted = 0;
+    for (int k = 0; k < SPH_DT_NBOUNDS; k++)
+        counted += s->dt_bound_steps[k];
+    sph_json_key_object(j, "time_step_bounds");
+    sph_json_int(j, "counted", counted);
+    sph_json_key_object(j, "bounds");
+    for (int k = 0; k < SPH_DT_NBOUNDS; k++)
+        sph_json_int(j, names[k], s->dt_bound_steps[k]);
+    sph_json_end_object(j);
+    sph_json_key_object(j, "bodies");
+    for (int i = 0; i < s->nbodies && s->dt_body_steps; i++)
+        sph_json_int(j, s->bodies[i].desc->name, s->dt_body_steps[i]);
+    sph_json_end_object(j);
+    if (s->dt_body >= 0 && counted > 0)
+        sph_json_str(j, "last_body", s->bodies[s->dt_body].desc->name);
+    if (counted > 0)
+        sph_json_str(j, "last", names[s->dt_bound]);
+    sph_json_end_object(j);
+}
+
 static int summary_file(run_state *r, const char *status, double wall, int *failed,
                         const body_stats *st, const double *procs)
 {
@@ -608,6 +653,7 @@ static int summary_file(run_state *r, const char *status, double wall, int *fail
         sph_json_int(&j, "step", r->step_resumed);
         sph_json_end_object(&j);
     }
+    bounds_summary(&j, s);
     if (!strcmp(status, "running")) {
         sph_json_num(&j, "end_time", r->t_end);
         const int bad = sph_json_close(&j);
@@ -1071,6 +1117,9 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
     memset(&r, 0, sizeof r);
     static char *const time_step_names[] = {"time", "mean_dt"};
     r.time_steps = (sph_csv_table){.ncols = 2, .names = (char **)time_step_names};
+    static char *const bound_names[1 + SPH_DT_NBOUNDS] = {"time", "speed", "acceleration",
+                                                          "compression", "contact", "fixed"};
+    r.dt_bounds = (sph_csv_table){.ncols = 1 + SPH_DT_NBOUNDS, .names = (char **)bound_names};
     r.dt_step0 = -1;
     r.m = m;
     r.sim.par = par;
@@ -1150,6 +1199,7 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
     }
     sph_sim_free(&r.sim);
     free(r.time_steps.v);
+    free(r.dt_bounds.v);
     if (r.opt.profile) {
         const sph_profile_times t = {r.setup_seconds, r.step_seconds, r.check_seconds,
                                      r.output_seconds};

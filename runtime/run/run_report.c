@@ -27,12 +27,25 @@ int sph_run_report(const run_state *r, const char *status, const char *message, 
                 names[np++] = m->bodies[i].measures[k].name;
             free(path);
         }
+    static const char *const bound_names[SPH_DT_NBOUNDS] = SPH_DT_BOUND_NAMES;
+    const int nb = r->sim.nbodies;
+    const char **count_names = calloc(SPH_DT_NBOUNDS + (size_t)nb, sizeof *count_names);
+    long *counts = calloc(SPH_DT_NBOUNDS + (size_t)nb, sizeof *counts);
+    for (int k = 0; count_names && counts && k < SPH_DT_NBOUNDS + nb; k++) {
+        count_names[k] = k < SPH_DT_NBOUNDS ? bound_names[k]
+                                            : r->sim.bodies[k - SPH_DT_NBOUNDS].desc->name;
+        counts[k] = k < SPH_DT_NBOUNDS ? r->sim.dt_bound_steps[k]
+                    : r->sim.dt_body_steps ? r->sim.dt_body_steps[k - SPH_DT_NBOUNDS] : 0;
+    }
+    const int have_bounds = r->dt_bounds.nrows > 0 && count_names && counts;
     const sph_report page = {
         .model = m->name, .status = status, .message = message,
         .time = r->sim.t, .end_time = r->t_end, .wall_time = wall, .steps = r->sim.step,
         .expects = expects, .nexpects = nexpects,
         .energies = have_energies ? &energies : NULL,
         .time_steps = r->time_steps.nrows ? &r->time_steps : NULL,
+        .dt_bounds = have_bounds ? &r->dt_bounds : NULL,
+        .count_names = count_names, .counts = counts, .nbounds = SPH_DT_NBOUNDS, .nbodies = nb,
         .planes = planes, .plane_names = names, .nplanes = np, .dim = m->dim,
     };
     path = joinf("%s/summary.html%s", r->opt.out_dir, "");
@@ -44,5 +57,7 @@ int sph_run_report(const run_state *r, const char *status, const char *message, 
         sph_csv_table_free(&planes[q]);
     free(planes);
     free(names);
+    free(count_names);
+    free(counts);
     return bad;
 }

@@ -54,6 +54,10 @@ typedef struct {
     sph_csv_table time_steps;
     double dt_t0;
     long dt_step0;        /* -1: no output yet */
+    /* the share of each interval's steps each bound set (sim.dt_bound_steps over the
+     * interval; rows of time and SPH_DT_NBOUNDS shares), and the counts at its start */
+    sph_csv_table dt_bounds;
+    long dt_bounds0[SPH_DT_NBOUNDS];
     double summary_wall;  /* process 0: when summary.json was last written while running, */
     double summary_cost;  /* and how long writing it (and the page) took */
     char unstable[512];

@@ -75,6 +75,41 @@ def check_plots(root, out, prefix=False):
     return errors, plotted
 
 
+def line_values(line):
+    return ([float(v) for v in line.get("data-x").split()],
+            [float(v) for v in line.get("data-y").split()])
+
+
+def check_bounds(root, summary):
+    """The errors of what bounded the time step: the table's steps are summary.json's
+    time_step_bounds (where given), each interval's shares, plotted at the time step's
+    output times, add up to 1."""
+    errors = []
+    bounds = summary.get("time_step_bounds")
+    table = [e for e in root.iter(XHTML + "table") if e.get("id") == "time-step-bounds"]
+    if bounds and bounds["counted"] > 0:
+        want = {("data-bound", k): v for k, v in bounds["bounds"].items() if v}
+        want.update({("data-body", k): v for k, v in bounds["bodies"].items() if v})
+        got = {}
+        for row in (table[0].iter(XHTML + "tr") if table else []):
+            for key in ("data-bound", "data-body"):
+                if row.get(key) is not None:
+                    got[(key, row.get(key))] = int("".join(list(row)[1].itertext()))
+        if got != want:
+            errors.append(f"the time step's bounds on the page {got}, in summary.json {want}")
+    shares = [s for s in root.iter(SVG + "svg") if s.get("id") == "time-step-shares"]
+    steps = [s for s in root.iter(SVG + "svg") if s.get("id") == "time-step"]
+    if not shares or not steps:
+        return errors + ([] if not table else ["a table of bounds without their plot"])
+    step_x = line_values(next(steps[0].iter(SVG + "polyline")))[0]
+    lines = [line_values(line) for line in shares[0].iter(SVG + "polyline")]
+    if not lines or any(xs != step_x for xs, _ in lines):
+        errors.append("the shares of the bounds are not plotted at the time step's times")
+    elif any(abs(sum(col) - 1) > 1e-12 for col in zip(*(ys for _, ys in lines))):
+        errors.append("the shares of the bounds of an interval do not add up to 1")
+    return errors
+
+
 def energy_times(out, rows=None):
     """The times of energies.csv's rows (its first rows only, when given)."""
     with open(os.path.join(out, "energies.csv")) as f:
@@ -143,6 +178,8 @@ def check_page(text, out, summary, prefix=False):
         elif steps[0].get("data-stride") == "1" and not all(
                 0 < y <= (b - a) * (1 + 1e-9) for y, a, b in zip(ys, times, times[1:])):
             errors.append(f"a mean time step is not within its output interval: {ys[:5]}...")
+
+    errors += check_bounds(root, summary)
 
     # The comparison can fail: one plotted number changed is found.
     line = next(root.iter(SVG + "polyline"))
