@@ -252,6 +252,28 @@ static void put_cell(FILE *f, double v, double scale)
         fputs("<td></td>", f);
 }
 
+/* The stability monitor's checks: how near each came to its limit (data-seen: the number in
+ * full). */
+static void put_margins(FILE *f, const sph_report *r)
+{
+    if (!r->nmargins)
+        return;
+    fputs("<h2>Stability margins</h2>\n<p class=\"note\">The nearest the stability "
+          "monitor's checks saw the run come to their limits.</p>\n<table id=\"margins\">\n"
+          "<tr><th>check</th><th>nearest seen</th><th>limit</th></tr>\n", f);
+    for (int k = 0; k < r->nmargins; k++) {
+        const sph_report_margin *m = &r->margins[k];
+        fprintf(f, "<tr data-check=\"%s\" data-seen=\"", m->key);
+        put_number(f, m->seen);
+        fputs("\"><td class=\"text\">", f);
+        put_text(f, m->text);
+        fputs("</td>", f);
+        put_cell(f, m->seen, 1);
+        fprintf(f, "<td>%s %g</td></tr>\n", m->rule, m->limit);
+    }
+    fputs("</table>\n", f);
+}
+
 static void put_expectations(FILE *f, const sph_report *r)
 {
     if (!r->nexpects)
@@ -302,8 +324,6 @@ static void put_bound_table(FILE *f, const sph_report *r)
     long counted = 0;
     for (int k = 0; k < r->nbounds; k++)
         counted += r->counts[k];
-    if (counted <= 0)
-        return;
     fputs("<table id=\"time-step-bounds\">\n<tr><th>set by</th><th>steps</th>"
           "<th>share %</th></tr>\n", f);
     for (int k = 0; k < r->nbounds + r->nbodies; k++) {
@@ -319,16 +339,23 @@ static void put_bound_table(FILE *f, const sph_report *r)
     fputs("</table>\n", f);
 }
 
-/* What bounded the time step: the table, and each interval's share of steps by bound (the
- * bounds that set a step at all). */
+/* What bounded the time step, where the host counted steps: the table, and each interval's
+ * share of steps by bound (the bounds that set a step at all), when an interval ended. */
 static void put_bounds(FILE *f, const sph_report *r)
 {
     const sph_csv_table *t = r->dt_bounds;
+    long counted = 0;
+    for (int k = 0; k < r->nbounds; k++)
+        counted += r->counts[k];
+    if (counted <= 0)
+        return;
     fputs("<h3>What bounded it</h3>\n<p class=\"note\">The steps each bound set (speed: "
           "eq. 65, the sound speed and the particles' speed; acceleration: eq. 66; "
           "compression: eq. 65 under the factor of a compressed body; contact: the stiffest "
           "contact; fixed: the scene's step), and each body's bounds.</p>\n", f);
     put_bound_table(f, r);
+    if (!t)
+        return;
     int cols[16], n = 0;
     for (int k = 1; k < t->ncols && n < 16; k++) {
         int any = 0;
@@ -376,11 +403,12 @@ int sph_report_write(const char *path, const sph_report *r)
     fputs("</h1>\n", f);
     put_verdict(f, r);
     put_expectations(f, r);
+    put_margins(f, r);
     if (r->energies)
         put_energies(f, r->energies);
     if (r->time_steps)
         put_time_steps(f, r->time_steps);
-    if (r->dt_bounds)
+    if (r->counts && r->nbounds)
         put_bounds(f, r);
     if (r->nplanes)
         fputs("<h2>Measurement planes</h2>\n", f);

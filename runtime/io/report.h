@@ -16,6 +16,14 @@ typedef struct {
     int pass;
 } sph_report_expect;
 
+/* A check of the stability monitor: the nearest to its limit the run came, and the limit. */
+typedef struct {
+    const char *key;       /* data-check: "J", "speed", "energy_growth" */
+    const char *text;      /* what it checks */
+    double seen, limit;    /* seen NAN: not checked yet */
+    const char *rule;      /* "above" or "at most": how seen must stand to the limit */
+} sph_report_margin;
+
 /* What the page shows: how the run stands, its expectations, and its CSV files as plots
  * (column 0 the time, the others a line each; every row of a table is drawn). */
 typedef struct {
@@ -35,6 +43,8 @@ typedef struct {
     const char *const *count_names;
     const long *counts;
     int nbounds, nbodies;
+    const sph_report_margin *margins; /* the stability monitor's checks, nmargins of them */
+    int nmargins;
     const sph_csv_table *planes;   /* nplanes measurement planes, */
     const char *const *plane_names; /* their names */
     int nplanes;

@@ -627,6 +627,20 @@ static void bounds_summary(sph_json *j, const sph_sim *s)
     sph_json_end_object(j);
 }
 
+/* How near the monitor's checks came to their limits (summary.json stability.margins). */
+static void margins_summary(sph_json *j, const sph_monitor *mon)
+{
+    sph_json_key_object(j, "margins");
+    sph_json_int(j, "scans", mon->scans);
+    sph_json_num(j, "smallest_J", mon->scans ? mon->j_min : NAN);
+    sph_json_num(j, "largest_speed_over_c0", mon->scans ? mon->speed : NAN);
+    sph_json_num(j, "speed_limit", SPH_MONITOR_SPEED);
+    sph_json_int(j, "energy_checks", mon->sums);
+    sph_json_num(j, "largest_energy_growth", mon->sums ? mon->growth : NAN);
+    sph_json_num(j, "energy_growth_limit", SPH_MONITOR_GROWTH);
+    sph_json_end_object(j);
+}
+
 static int summary_file(run_state *r, const char *status, double wall, int *failed,
                         const body_stats *st, const double *procs)
 {
@@ -687,6 +701,7 @@ static int summary_file(run_state *r, const char *status, double wall, int *fail
     sph_json_int(&j, "device_checks", r->device_checks);
     sph_json_num(&j, "smallest_stretch", r->stretch_seen);
     sph_json_num(&j, "largest_energy", r->mon.e_ref);
+    margins_summary(&j, &r->mon);
     sph_json_end_object(&j);
     sph_json_key_array(&j, "bodies");
     for (int i = 0; i < s->nbodies; i++)

@@ -9,6 +9,19 @@
 #include "run_state.h"
 #include "io/report.h"
 
+/* The stability monitor's margins (monitor.h), NAN where no check looked yet. */
+static int monitor_margins(const sph_monitor *mon, sph_report_margin m[3])
+{
+    m[0] = (sph_report_margin){"J", "det F, the smallest", mon->scans ? mon->j_min : NAN, 0,
+                               "above"};
+    m[1] = (sph_report_margin){"speed", "speed over c0, the largest",
+                               mon->scans ? mon->speed : NAN, SPH_MONITOR_SPEED, "at most"};
+    m[2] = (sph_report_margin){"energy_growth", "total energy over the largest before it, "
+                               "the largest ratio", mon->sums ? mon->growth : NAN,
+                               SPH_MONITOR_GROWTH, "at most"};
+    return 3;
+}
+
 int sph_run_report(const run_state *r, const char *status, const char *message, double wall,
                    const sph_report_expect *expects, int nexpects)
 {
@@ -38,6 +51,8 @@ int sph_run_report(const run_state *r, const char *status, const char *message, 
                     : r->sim.dt_body_steps ? r->sim.dt_body_steps[k - SPH_DT_NBOUNDS] : 0;
     }
     const int have_bounds = r->dt_bounds.nrows > 0 && count_names && counts;
+    sph_report_margin margins[3];
+    const int nmargins = monitor_margins(&r->mon, margins);
     const sph_report page = {
         .model = m->name, .status = status, .message = message,
         .time = r->sim.t, .end_time = r->t_end, .wall_time = wall, .steps = r->sim.step,
@@ -45,6 +60,7 @@ int sph_run_report(const run_state *r, const char *status, const char *message, 
         .energies = have_energies ? &energies : NULL,
         .time_steps = r->time_steps.nrows ? &r->time_steps : NULL,
         .dt_bounds = have_bounds ? &r->dt_bounds : NULL,
+        .margins = margins, .nmargins = nmargins,
         .count_names = count_names, .counts = counts, .nbounds = SPH_DT_NBOUNDS, .nbodies = nb,
         .planes = planes, .plane_names = names, .nplanes = np, .dim = m->dim,
     };

@@ -1,8 +1,9 @@
 """The report page, summary.html, against the files it reports (Python's standard library only).
 
-    check_report.py PROGRAM OUT [ARGS...]
+    check_report.py [--exit N] PROGRAM OUT [ARGS...]
 
-runs PROGRAM --quiet --overwrite --out OUT ARGS (it must exit 0), then checks OUT/summary.html:
+runs PROGRAM --quiet --overwrite --out OUT ARGS (it must exit 0, or N), then checks
+OUT/summary.html:
 it is well-formed XML (XHTML); its verdict says how summary.json says the run ended; its
 table has each expectation of summary.json with its result and relative error; every plotted
 line's values (data-x, data-y: the rows data-stride picks) are those of its CSV file, row by
@@ -14,6 +15,7 @@ import csv
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
@@ -99,14 +101,40 @@ def check_bounds(root, summary):
             errors.append(f"the time step's bounds on the page {got}, in summary.json {want}")
     shares = [s for s in root.iter(SVG + "svg") if s.get("id") == "time-step-shares"]
     steps = [s for s in root.iter(SVG + "svg") if s.get("id") == "time-step"]
+    if bool(shares) != bool(steps):
+        errors.append(f"{len(shares)} plots of the bounds' shares, {len(steps)} of the time "
+                      f"step")
     if not shares or not steps:
-        return errors + ([] if not table else ["a table of bounds without their plot"])
+        return errors
     step_x = line_values(next(steps[0].iter(SVG + "polyline")))[0]
     lines = [line_values(line) for line in shares[0].iter(SVG + "polyline")]
     if not lines or any(xs != step_x for xs, _ in lines):
         errors.append("the shares of the bounds are not plotted at the time step's times")
     elif any(abs(sum(col) - 1) > 1e-12 for col in zip(*(ys for _, ys in lines))):
         errors.append("the shares of the bounds of an interval do not add up to 1")
+    return errors
+
+
+def check_margins(root, summary):
+    """The errors of the stability margins: the page's are summary.json's, number for number;
+    a finished run's largest speed over c0 is at least its bodies' at the end (its last
+    output was checked)."""
+    margins = summary.get("stability", {}).get("margins")
+    if not margins:
+        return []
+    errors = []
+    rows = {r.get("data-check"): float(r.get("data-seen")) for r in root.iter(XHTML + "tr")
+            if r.get("data-check") is not None}
+    want = {"J": margins["smallest_J"], "speed": margins["largest_speed_over_c0"],
+            "energy_growth": margins["largest_energy_growth"]}
+    want = {k: math.nan if v is None else v for k, v in want.items()}
+    if set(rows) != set(want) or any(not same(rows[k], want[k]) for k in want):
+        errors.append(f"the stability margins on the page {rows}, in summary.json {want}")
+    if summary["status"] == "finished":
+        end = max(b["max_velocity"] / b["c0"] for b in summary["bodies"])
+        if not want["speed"] >= end * (1 - 1e-12):
+            errors.append(f"the largest speed over c0 the checks saw, {want['speed']}, is "
+                          f"below the bodies' at the end, {end}")
     return errors
 
 
@@ -162,9 +190,9 @@ def check_page(text, out, summary, prefix=False):
     energies = [s for s in root.iter(SVG + "svg") if s.get("data-csv") == "energies.csv"]
     times = energy_times(out, int(energies[0].get("data-rows")) if prefix and energies
                          else None)
-    if len(steps) != 1:
-        errors.append(f"{len(steps)} time step plots (expected 1)")
-    else:
+    if len(steps) != (len(times) > 1):
+        errors.append(f"{len(steps)} time step plots (expected {int(len(times) > 1)})")
+    elif steps:
         line = next(steps[0].iter(SVG + "polyline"))
         xs = [float(v) for v in line.get("data-x").split()]
         ys = [float(v) for v in line.get("data-y").split()]
@@ -180,6 +208,7 @@ def check_page(text, out, summary, prefix=False):
             errors.append(f"a mean time step is not within its output interval: {ys[:5]}...")
 
     errors += check_bounds(root, summary)
+    errors += check_margins(root, summary)
 
     # The comparison can fail: one plotted number changed is found.
     line = next(root.iter(SVG + "polyline"))
@@ -191,17 +220,40 @@ def check_page(text, out, summary, prefix=False):
     return errors, plotted
 
 
+def check_unstable(summary):
+    """The errors of an unstable run's numbers against its message: a particle inverted has
+    the smallest det F the margins give; a time step that collapsed under compression was
+    last set by the compression bound."""
+    errors, message = [], summary["stability"].get("message", "")
+    margins, bounds = summary["stability"]["margins"], summary["time_step_bounds"]
+    inverted = re.search(r"det F <= 0 \(particle inverted\) \(value (\S+)\)", message)
+    if inverted and f"{margins['smallest_J']:g}" != inverted.group(1):
+        errors.append(f"smallest_J {margins['smallest_J']} is not the message's det F "
+                      f"{inverted.group(1)}")
+    if "collapsed" in message and "compressed to a principal stretch" in message and (
+            bounds["last"] != "compression"):
+        errors.append(f"the time step collapsed under compression, its last bound is "
+                      f"{bounds['last']}")
+    return errors
+
+
 def main():
+    code = 0
+    if sys.argv[1] == "--exit":
+        code = int(sys.argv[2])
+        del sys.argv[1:3]
     program, out, args = sys.argv[1], sys.argv[2], sys.argv[3:]
     run = subprocess.run([program, "--quiet", "--overwrite", "--out", out] + args,
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if run.returncode != 0:
+    if run.returncode != code:
         sys.exit(f"{program} exited {run.returncode}:\n{run.stdout}")
     with open(os.path.join(out, "summary.html"), encoding="utf-8") as f:
         text = f.read()
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)
     errors, plotted = check_page(text, out, summary)
+    if summary["status"] == "unstable":
+        errors += check_unstable(summary)
     expects = summary.get("expectations", [])
     if errors:
         sys.exit("summary.html:\n  " + "\n  ".join(errors))
