@@ -120,91 +120,163 @@ static void put_axes(FILE *f, const frame *fr, const axis *ax, const axis *ay,
     fputs("</text>\n", f);
 }
 
-/* The attribute name="..." of column k of t's rows, each number as put_number writes it. */
-static void put_column(FILE *f, const char *name, const sph_csv_table *t, int k)
+/* A line's values at the rows of table t: column k of t's, or ys (one per row). */
+typedef struct {
+    const sph_csv_table *t;
+    int k;
+    const double *ys; /* NULL: column k */
+} line_values;
+
+static double value_at(const line_values *l, long r)
+{
+    return l->ys ? l->ys[r] : l->t->v[(size_t)r * (size_t)l->t->ncols + (size_t)l->k];
+}
+
+/* The attribute name="..." of l's values, each number as put_number writes it. */
+static void put_values(FILE *f, const char *name, const line_values *l)
 {
     fprintf(f, "\n %s=\"", name);
-    for (long r = 0; r < t->nrows; r++) {
+    for (long r = 0; r < l->t->nrows; r++) {
         if (r)
             fputc(' ', f);
-        put_number(f, t->v[(size_t)r * (size_t)t->ncols + (size_t)k]);
+        put_number(f, value_at(l, r));
     }
     fputc('"', f);
 }
 
 /* What a plot is: its id (NULL: none), the file it draws (its name in the output folder;
  * NULL: a table of the run's memory, the <svg> without data-csv), the name of its y axis,
- * its size in pixels. */
+ * its size in pixels; the expectations drawn over it (those of curves whose plane is plane
+ * and whose column is one of the plot's). */
 typedef struct {
     const char *id, *file, *yname;
     int width, height;
+    const sph_report_curve *curves;
+    int ncurves, plane;
 } plot_spec;
 
+/* Whether curve c is drawn over the plot of p with columns cols[0..ncols). */
+static int curve_in(const plot_spec *p, const sph_report_curve *c, const int *cols, int ncols)
+{
+    for (int k = 0; k < ncols && c->plane == p->plane; k++)
+        if (cols[k] == c->column)
+            return 1;
+    return 0;
+}
+
+/* The range of l's finite values into lo, hi. */
+static void widen(const line_values *l, double *lo, double *hi)
+{
+    for (long r = 0; r < l->t->nrows; r++) {
+        const double v = value_at(l, r);
+        if (isfinite(v))
+            *lo = fmin(*lo, v), *hi = fmax(*hi, v);
+    }
+}
+
+/* The rest of a polyline whose opening tag and own attributes are written: l's data-x,
+ * data-y and points (a pair that is not finite is left out). */
+static void put_line(FILE *f, const frame *fr, const axis *ax, const axis *ay,
+                     const line_values *l)
+{
+    const line_values x = {l->t, 0, NULL};
+    put_values(f, "data-x", &x);
+    put_values(f, "data-y", l);
+    fputs("\n points=\"", f);
+    int first = 1;
+    for (long r = 0; r < l->t->nrows; r++) {
+        const double tx = value_at(&x, r), v = value_at(l, r);
+        if (isfinite(tx) && isfinite(v)) {
+            fprintf(f, "%s%.1f,%.1f", first ? "" : " ", px(fr, ax, tx), py(fr, ay, v));
+            first = 0;
+        }
+    }
+    fputs("\"/>\n", f);
+}
+
+/* A column's line and its legend entry (the c-th). */
+static void put_column_line(FILE *f, const frame *fr, const axis *ax, const axis *ay,
+                            const sph_csv_table *t, int k, int c)
+{
+    const int total = !strcmp(t->names[k], "total");
+    const char *color = total ? "#000" : COLORS[c % NCOLORS];
+    fputs("<polyline fill=\"none\" data-column=\"", f);
+    put_text(f, t->names[k]);
+    fprintf(f, "\" stroke=\"%s\" stroke-width=\"%s\"", color, total ? "2" : "1.3");
+    put_line(f, fr, ax, ay, &(line_values){t, k, NULL});
+    const int ly = fr->top + 8 + 16 * c, lx = fr->width - fr->right + 10;
+    fprintf(f, "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"%s\" "
+               "stroke-width=\"2\"/><text x=\"%d\" y=\"%d\">", lx, ly, lx + 20, ly, color,
+            lx + 26, ly + 4);
+    put_text(f, t->names[k]);
+    fputs("</text>\n", f);
+}
+
+/* An expectation's curve, dashed, in its column's colour (the c-th column of the plot):
+ * data-expect its kind, data-column its column, data-model its line; a period's sinusoid
+ * also its numbers. */
+static void put_curve(FILE *f, const frame *fr, const axis *ax, const axis *ay,
+                      const sph_csv_table *t, const sph_report_curve *cv, int c)
+{
+    fprintf(f, "<polyline fill=\"none\" data-expect=\"%s\" data-column=\"", cv->kind);
+    put_text(f, t->names[cv->column]);
+    fputs("\" data-model=\"", f);
+    put_text(f, cv->text);
+    fputc('"', f);
+    if (!strcmp(cv->kind, "period")) {
+        const double v[4] = {cv->period, cv->mid, cv->amplitude, cv->t0};
+        static const char *const names[4] = {"period", "mid", "amplitude", "t0"};
+        for (int k = 0; k < 4; k++) {
+            fprintf(f, " data-%s=\"", names[k]);
+            put_number(f, v[k]);
+            fputc('"', f);
+        }
+    }
+    fprintf(f, " stroke=\"%s\" stroke-width=\"1\" stroke-dasharray=\"5,3\"",
+            COLORS[c % NCOLORS]);
+    put_line(f, fr, ax, ay, &(line_values){t, 0, cv->y});
+}
+
 /* A line plot of table t as p says: column 0, the time, along x, columns cols[0..ncols) each
- * a line, named in a legend on the right. */
+ * a line, named in a legend on the right, and the expectations drawn over them dashed. */
 static void line_plot(FILE *f, const plot_spec *p, const sph_csv_table *t, const int *cols,
                       int ncols)
 {
-    const char *file = p->file, *yname = p->yname;
-    const int width = p->width, height = p->height;
     int legend = 0; /* (the longest name) */
     for (int c = 0; c < ncols; c++)
         legend = (int)fmax(legend, (double)strlen(t->names[cols[c]]));
-    const frame fr = {width, height, 84, 48 + 7 * legend, 12, 36};
-    const long n = t->nrows, stride = t->stride > 1 ? t->stride : 1;
+    const frame fr = {p->width, p->height, 84, 48 + 7 * legend, 12, 36};
+    const long stride = t->stride > 1 ? t->stride : 1;
     double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
-    for (long r = 0; r < n; r++) {
-        const double *row = t->v + (size_t)r * (size_t)t->ncols;
-        if (isfinite(row[0]))
-            xlo = fmin(xlo, row[0]), xhi = fmax(xhi, row[0]);
-        for (int c = 0; c < ncols; c++)
-            if (isfinite(row[cols[c]]))
-                ylo = fmin(ylo, row[cols[c]]), yhi = fmax(yhi, row[cols[c]]);
-    }
+    widen(&(line_values){t, 0, NULL}, &xlo, &xhi);
+    for (int c = 0; c < ncols; c++)
+        widen(&(line_values){t, cols[c], NULL}, &ylo, &yhi);
+    for (int k = 0; k < p->ncurves; k++)
+        if (curve_in(p, &p->curves[k], cols, ncols))
+            widen(&(line_values){t, 0, p->curves[k].y}, &ylo, &yhi);
     const axis ax = nice_axis(xlo, xhi), ay = nice_axis(ylo, yhi);
     fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
-               "viewBox=\"0 0 %d %d\"", width, height, width, height);
+               "viewBox=\"0 0 %d %d\"", p->width, p->height, p->width, p->height);
     if (p->id)
         fprintf(f, " id=\"%s\"", p->id);
-    if (file) {
+    if (p->file) {
         fputs(" data-csv=\"", f);
-        put_text(f, file);
+        put_text(f, p->file);
         fputc('"', f);
     }
     fprintf(f, " data-stride=\"%ld\" data-rows=\"%ld\">\n", stride, t->total);
-    put_axes(f, &fr, &ax, &ay, "time (s)", yname);
+    put_axes(f, &fr, &ax, &ay, "time (s)", p->yname);
     for (int c = 0; c < ncols; c++) {
-        const int k = cols[c];
-        const int total = !strcmp(t->names[k], "total");
-        const char *color = total ? "#000" : COLORS[c % NCOLORS];
-        fputs("<polyline fill=\"none\" data-column=\"", f);
-        put_text(f, t->names[k]);
-        fprintf(f, "\" stroke=\"%s\" stroke-width=\"%s\"", color, total ? "2" : "1.3");
-        put_column(f, "data-x", t, 0);
-        put_column(f, "data-y", t, k);
-        fputs("\n points=\"", f);
-        int first = 1; /* (a non-finite value is left out) */
-        for (long r = 0; r < n; r++) {
-            const double *row = t->v + (size_t)r * (size_t)t->ncols;
-            if (isfinite(row[0]) && isfinite(row[k])) {
-                fprintf(f, "%s%.1f,%.1f", first ? "" : " ", px(&fr, &ax, row[0]),
-                        py(&fr, &ay, row[k]));
-                first = 0;
-            }
-        }
-        fputs("\"/>\n", f);
-        const int ly = fr.top + 8 + 16 * c, lx = width - fr.right + 10;
-        fprintf(f, "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"%s\" "
-                   "stroke-width=\"2\"/><text x=\"%d\" y=\"%d\">", lx, ly, lx + 20, ly, color,
-                lx + 26, ly + 4);
-        put_text(f, t->names[k]);
-        fputs("</text>\n", f);
+        put_column_line(f, &fr, &ax, &ay, t, cols[c], c);
+        for (int k = 0; k < p->ncurves; k++)
+            if (curve_in(p, &p->curves[k], &cols[c], 1))
+                put_curve(f, &fr, &ax, &ay, t, &p->curves[k], c);
     }
     fputs("</svg>\n", f);
     if (stride > 1)
         fprintf(f, "<p class=\"note\">%ld rows: one in %ld drawn, and the last.</p>\n",
                 t->total, stride);
-    else if (n == 0)
+    else if (t->nrows == 0)
         fputs("<p class=\"note\">No rows yet.</p>\n", f);
 }
 
@@ -303,7 +375,7 @@ static void put_energies(FILE *f, const sph_csv_table *t)
     int *cols = malloc(((size_t)t->ncols + 1) * sizeof *cols), n = 0;
     for (int k = 1; cols && k < t->ncols; k++)
         cols[n++] = k;
-    const plot_spec p = {"energies", "energies.csv", "energy", 760, 380};
+    const plot_spec p = {"energies", "energies.csv", "energy", 760, 380, NULL, 0, -1};
     line_plot(f, &p, t, cols, n);
     free(cols);
 }
@@ -313,7 +385,7 @@ static void put_time_steps(FILE *f, const sph_csv_table *t)
     const int col = 1;
     fputs("<h2>Time step</h2>\n<p class=\"note\">The mean time step of each output interval "
           "(its time over its steps), since this process started the run.</p>\n", f);
-    const plot_spec p = {"time-step", NULL, "time step (s)", 560, 260};
+    const plot_spec p = {"time-step", NULL, "time step (s)", 560, 260, NULL, 0, -1};
     line_plot(f, &p, t, &col, 1);
 }
 
@@ -364,12 +436,17 @@ static void put_bounds(FILE *f, const sph_report *r)
         if (any)
             cols[n++] = k;
     }
-    const plot_spec p = {"time-step-shares", NULL, "share of steps", 560, 260};
+    const plot_spec p = {"time-step-shares", NULL, "share of steps", 560, 260, NULL, 0, -1};
     line_plot(f, &p, t, cols, n);
 }
 
-static void put_plane(FILE *f, const char *name, const sph_csv_table *t, int dim)
+/* Measurement plane q's plots, its displacements' and its forces', with the expectations
+ * on them. */
+static void put_plane(FILE *f, const sph_report *r, int q)
 {
+    const char *name = r->plane_names[q];
+    const sph_csv_table *t = &r->planes[q];
+    const int dim = r->dim;
     char file[300];
     snprintf(file, sizeof file, "measure_%s.csv", name);
     fputs("<h3>", f);
@@ -382,7 +459,8 @@ static void put_plane(FILE *f, const char *name, const sph_csv_table *t, int dim
             if (n < 3 && c[0] == (what ? 'f' : 'u') && !(dim == 2 && c[1] == 'y'))
                 cols[n++] = k;
         }
-        const plot_spec p = {NULL, file, what ? "force" : "displacement (m)", 420, 240};
+        const plot_spec p = {NULL, file, what ? "force" : "displacement (m)", 420, 240,
+                             r->curves, r->ncurves, q};
         line_plot(f, &p, t, cols, n);
     }
     fputs("</div>\n", f);
@@ -413,7 +491,7 @@ int sph_report_write(const char *path, const sph_report *r)
     if (r->nplanes)
         fputs("<h2>Measurement planes</h2>\n", f);
     for (int q = 0; q < r->nplanes; q++)
-        put_plane(f, r->plane_names[q], &r->planes[q], r->dim);
+        put_plane(f, r, q);
     fputs("<p class=\"note\">The numbers in full: summary.json and the CSV files beside "
           "this page.</p>\n</body>\n</html>\n", f);
     const int err = sph_close_whole(f, path);

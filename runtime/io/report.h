@@ -24,6 +24,19 @@ typedef struct {
     const char *rule;      /* "above" or "at most": how seen must stand to the limit */
 } sph_report_margin;
 
+/* An expectation drawn over its measurement plane's plot, at the times of the plane's table
+ * rows: a reference's values; an expected period's sinusoid y = mid + amplitude sin(2 pi (t
+ * - t0) / period) (the measured mid-line, half range and first crossing of the mid-line,
+ * amplitude negative where it falls there); an expected amplitude's two lines, mid plus and
+ * minus it (two curves). */
+typedef struct {
+    const char *kind;      /* "period", "amplitude", "reference" */
+    const char *text;      /* the model's line */
+    int plane, column;     /* its measurement plane, and the column of the plane's table */
+    double *y;             /* a value per row of the plane's table (NAN: none there) */
+    double period, mid, amplitude, t0; /* period: the sinusoid's numbers */
+} sph_report_curve;
+
 /* What the page shows: how the run stands, its expectations, and its CSV files as plots
  * (column 0 the time, the others a line each; every row of a table is drawn). */
 typedef struct {
@@ -48,6 +61,8 @@ typedef struct {
     const sph_csv_table *planes;   /* nplanes measurement planes, */
     const char *const *plane_names; /* their names */
     int nplanes;
+    const sph_report_curve *curves; /* expectations drawn over the planes, ncurves */
+    int ncurves;
     int dim;               /* 2: the planes' uy and fy (zero) are not drawn */
 } sph_report;
 

@@ -53,6 +53,8 @@ def check_plots(root, out, prefix=False):
                           f"{len(rows)}")
         picked = drawn_rows(len(rows), int(svg.get("data-stride")))
         for line in svg.iter(SVG + "polyline"):
+            if line.get("data-expect") is not None:  # (check_curves)
+                continue
             column = line.get("data-column")
             if column not in header:
                 errors.append(f"{name}: no column {column}")
@@ -112,6 +114,88 @@ def check_bounds(root, summary):
         errors.append("the shares of the bounds are not plotted at the time step's times")
     elif any(abs(sum(col) - 1) > 1e-12 for col in zip(*(ys for _, ys in lines))):
         errors.append("the shares of the bounds of an interval do not add up to 1")
+    return errors
+
+
+def close(a, b, scale):
+    return abs(a - b) <= 1e-9 * scale
+
+
+def check_curve(line, rows, k, expect, whole):
+    """The errors of an expectation's curve over column k of a plane's rows (those drawn),
+    against summary.json's expect: a reference's largest difference from the column is its
+    max_abs_error (at most, where not every row is drawn: whole false); where every row is
+    drawn, a period's sinusoid has the expected period, the column's mid-line and
+    half range, and its formula's values, the column crossing its mid-line at t0; an
+    amplitude's line is the mid-line plus or minus it."""
+    xs, ys = line_values(line)
+    column = [r[k] for r in rows]
+    lo, hi = min(column), max(column)
+    scale = max(abs(lo), abs(hi), 1e-300)
+    name = expect["model"]
+    if expect["kind"] == "reference":
+        worst = max(abs(y - c) for y, c in zip(ys, column) if math.isfinite(y))
+        if not close(worst, expect["max_abs_error"], scale) and (
+                whole or worst > expect["max_abs_error"]):
+            return [f"{name}: the curve is at most {worst} from the column, summary.json says "
+                    f"{expect['max_abs_error']}"]
+        return []
+    mid = (lo + hi) / 2
+    if not whole:
+        return []
+    if expect["kind"] == "amplitude":
+        if not all(close(abs(y - mid), expect["expected"], scale) for y in ys):
+            return [f"{name}: its lines are not the mid-line {mid} plus or minus "
+                    f"{expect['expected']}"]
+        return []
+    period, t0 = float(line.get("data-period")), float(line.get("data-t0"))
+    amp = float(line.get("data-amplitude"))
+    errors = []
+    if period != expect["expected"] or not close(float(line.get("data-mid")), mid, scale) or \
+            not close(abs(amp), (hi - lo) / 2, scale):
+        errors.append(f"{name}: period {period}, mid {line.get('data-mid')}, amplitude {amp}; "
+                      f"expected {expect['expected']}, the column's {mid} and {(hi - lo) / 2}")
+    want = [float(line.get("data-mid")) + amp * math.sin(2 * math.pi * (x - t0) / period)
+            for x in xs]
+    if not all(close(y, w, scale) for y, w in zip(ys, want)):
+        errors.append(f"{name}: the sinusoid's values are not its formula's")
+    before = [c for x, c in zip(xs, column) if x <= t0]
+    after = [c for x, c in zip(xs, column) if x >= t0]
+    if not before or not after or (before[-1] - mid) * (after[0] - mid) > 0 or \
+            (after[0] - before[-1]) * amp < 0:
+        errors.append(f"{name}: the column does not cross its mid-line at t0 = {t0} the way "
+                      f"the sinusoid does")
+    return errors
+
+
+def check_curves(root, out, summary):
+    """The errors of the expectations drawn over the planes' plots (a finished run's: its
+    expectations in summary.json), and each drawn at the rows its plot draws."""
+    if summary["status"] != "finished":
+        return []
+    expects = {e["model"]: e for e in summary.get("expectations", [])}
+    errors, drawn = [], set()
+    for svg in root.iter(SVG + "svg"):
+        name = svg.get("data-csv")
+        if name is None or not name.startswith("measure_"):
+            continue
+        with open(os.path.join(out, name), newline="") as f:
+            table = list(csv.reader(f))
+        header, rows = table[0], [[float(v) for v in r] for r in table[1:]]
+        rows = [rows[r] for r in drawn_rows(len(rows), int(svg.get("data-stride")))]
+        for line in svg.iter(SVG + "polyline"):
+            if line.get("data-expect") is None:
+                continue
+            drawn.add(line.get("data-model"))
+            if line_values(line)[0] != [r[0] for r in rows]:
+                errors.append(f"{line.get('data-model')}: not drawn at the plot's rows")
+                continue
+            errors += check_curve(line, rows, header.index(line.get("data-column")),
+                                  expects[line.get("data-model")],
+                                  svg.get("data-stride") == "1")
+    missing = {m for m, e in expects.items() if e["kind"] != "energy"} - drawn
+    if missing:
+        errors.append(f"expectations not drawn over their planes: {sorted(missing)}")
     return errors
 
 
@@ -209,6 +293,7 @@ def check_page(text, out, summary, prefix=False):
 
     errors += check_bounds(root, summary)
     errors += check_margins(root, summary)
+    errors += check_curves(root, out, summary)
 
     # The comparison can fail: one plotted number changed is found.
     line = next(root.iter(SVG + "polyline"))
