@@ -369,6 +369,32 @@ static void put_expectations(FILE *f, const sph_report *r)
     fputs("</table>\n", f);
 }
 
+/* The processes of a run on many: a row each (data-process: its rank; data-NAME: each
+ * number in full, named as summary.json's processes). */
+static void put_processes(FILE *f, const sph_report *r)
+{
+    static const char *const keys[4] = {"particles", "halo", "bytes_per_step", "wait_time"};
+    if (!r->processes)
+        return;
+    fputs("<h2>Processes</h2>\n<table id=\"processes\">\n<tr><th>process</th>"
+          "<th>particles</th><th>halo particles</th><th>bytes sent per step</th>"
+          "<th>waited for the halo (s)</th></tr>\n", f);
+    for (int k = 0; k < r->nprocesses; k++) {
+        const double *x = r->processes + 4 * (size_t)k;
+        fprintf(f, "<tr data-process=\"%d\"", k);
+        for (int c = 0; c < 4; c++) {
+            fprintf(f, " data-%s=\"", keys[c]);
+            put_number(f, x[c]);
+            fputc('"', f);
+        }
+        fprintf(f, "><td>%d</td>", k);
+        for (int c = 0; c < 4; c++)
+            put_cell(f, x[c], 1);
+        fputs("</tr>\n", f);
+    }
+    fputs("</table>\n", f);
+}
+
 static void put_energies(FILE *f, const sph_csv_table *t)
 {
     fputs("<h2>Energies</h2>\n", f);
@@ -482,6 +508,7 @@ int sph_report_write(const char *path, const sph_report *r)
     put_verdict(f, r);
     put_expectations(f, r);
     put_margins(f, r);
+    put_processes(f, r);
     if (r->energies)
         put_energies(f, r->energies);
     if (r->time_steps)

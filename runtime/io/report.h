@@ -63,6 +63,10 @@ typedef struct {
     int nplanes;
     const sph_report_curve *curves; /* expectations drawn over the planes, ncurves */
     int ncurves;
+    /* many processes: each one's own particles, halo particles, bytes sent per step and
+     * seconds waited for the halo (4 numbers per process, nprocesses; NULL: one process) */
+    const double *processes;
+    int nprocesses;
     int dim;               /* 2: the planes' uy and fy (zero) are not drawn */
 } sph_report;
 

@@ -671,7 +671,8 @@ static int summary_file(run_state *r, const char *status, double wall, int *fail
     if (!strcmp(status, "running")) {
         sph_json_num(&j, "end_time", r->t_end);
         const int bad = sph_json_close(&j);
-        return sph_run_report(r, status, NULL, NAN, NULL, 0) | bad;
+        const sph_run_outcome o = {status, NULL, NAN, NULL, 0, NULL, 0};
+        return sph_run_report(r, &o) | bad;
     }
     sph_json_num(&j, "wall_time", wall);
     sph_json_num(&j, "setup_time", r->setup_seconds);
@@ -723,9 +724,11 @@ static int summary_file(run_state *r, const char *status, double wall, int *fail
                                              sizeof r->errors, expects)
                        : 0;
     int bad = sph_json_close(&j);
-    bad |= sph_run_report(r, status, r->unstable[0] ? r->unstable
-                                     : !strcmp(status, "stopped") ? stop_name() : NULL,
-                          wall, expects, finished && expects ? r->m->nexpects : 0);
+    const sph_run_outcome o = {
+        status, r->unstable[0] ? r->unstable : !strcmp(status, "stopped") ? stop_name() : NULL,
+        wall, expects, finished && expects ? r->m->nexpects : 0, procs,
+        procs ? r->sim.par->size : 0};
+    bad |= sph_run_report(r, &o);
     free(expects);
     return bad;
 }

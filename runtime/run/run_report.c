@@ -145,8 +145,7 @@ static long *bound_counts(const sph_sim *s, const char ***names)
     return counts;
 }
 
-int sph_run_report(const run_state *r, const char *status, const char *message, double wall,
-                   const sph_report_expect *expects, int nexpects)
+int sph_run_report(const run_state *r, const sph_run_outcome *o)
 {
     const sph_model *m = r->m;
     sph_csv_table energies;
@@ -162,9 +161,10 @@ int sph_run_report(const run_state *r, const char *status, const char *message, 
     sph_report_margin margins[3];
     const int nmargins = monitor_margins(&r->mon, margins);
     const sph_report page = {
-        .model = m->name, .status = status, .message = message,
-        .time = r->sim.t, .end_time = r->t_end, .wall_time = wall, .steps = r->sim.step,
-        .expects = expects, .nexpects = nexpects,
+        .model = m->name, .status = o->status, .message = o->message,
+        .time = r->sim.t, .end_time = r->t_end, .wall_time = o->wall, .steps = r->sim.step,
+        .expects = o->expects, .nexpects = o->nexpects,
+        .processes = o->processes, .nprocesses = o->nprocesses,
         .energies = have_energies ? &energies : NULL,
         .time_steps = r->time_steps.nrows ? &r->time_steps : NULL,
         .dt_bounds = r->dt_bounds.nrows ? &r->dt_bounds : NULL,

@@ -90,10 +90,21 @@ int sph_run_resume_files(const sph_ckpt *c, const run_state *r);
 /* After the outputs are opened: times, frames, series, timers. */
 int sph_run_resume(const sph_ckpt *c, run_state *r);
 
-/* run_report.c: summary.html in the output folder (process 0, with summary.json): the status
- * and message (where it went unstable, the signal; NULL: none), the wall time (NAN while
- * running), the expectations' results, the CSV files read back; 0, or -1 after reporting. */
-int sph_run_report(const run_state *r, const char *status, const char *message, double wall,
-                   const sph_report_expect *expects, int nexpects);
+/* How a run stands for its report page: the status and message (where it went unstable, the
+ * signal; NULL: none), the wall time (NAN while running), the expectations' results, and on
+ * many processes, each process's own particles, halo particles, bytes sent per step and
+ * seconds waited for the halo (4 numbers per process; NULL: none). */
+typedef struct {
+    const char *status, *message;
+    double wall;
+    const sph_report_expect *expects;
+    int nexpects;
+    const double *processes;
+    int nprocesses;
+} sph_run_outcome;
+
+/* run_report.c: summary.html in the output folder (process 0, with summary.json): how the run
+ * stands, the CSV files read back; 0, or -1 after reporting. */
+int sph_run_report(const run_state *r, const sph_run_outcome *o);
 
 #endif

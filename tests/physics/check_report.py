@@ -1,9 +1,9 @@
 """The report page, summary.html, against the files it reports (Python's standard library only).
 
-    check_report.py [--exit N] PROGRAM OUT [ARGS...]
+    check_report.py [--exit N] [--launcher WORDS] PROGRAM OUT [ARGS...]
 
-runs PROGRAM --quiet --overwrite --out OUT ARGS (it must exit 0, or N), then checks
-OUT/summary.html:
+runs PROGRAM --quiet --overwrite --out OUT ARGS (it must exit 0, or N; WORDS, separated by
+commas, start it: mpirun and its flags), then checks OUT/summary.html:
 it is well-formed XML (XHTML); its verdict says how summary.json says the run ended; its
 table has each expectation of summary.json with its result and relative error; every plotted
 line's values (data-x, data-y: the rows data-stride picks) are those of its CSV file, row by
@@ -199,6 +199,22 @@ def check_curves(root, out, summary):
     return errors
 
 
+def check_processes(root, summary):
+    """The errors of the page's table of processes against summary.json's processes (a run on
+    many; none on one)."""
+    procs = summary.get("processes")
+    rows = [r for r in root.iter(XHTML + "tr") if r.get("data-process") is not None]
+    if not procs:
+        return ["a table of processes for a run on one"] if rows else []
+    keys = ("particles", "halo", "bytes_per_step", "wait_time")
+    got = [[float(r.get(f"data-{k}")) for k in keys] for r in rows]
+    want = [[float(procs[k][p]) for k in keys] for p in range(procs["count"])]
+    if got != want or [r.get("data-process") for r in rows] != [
+            str(p) for p in range(procs["count"])]:
+        return [f"the processes on the page {got}, in summary.json {want}"]
+    return []
+
+
 def check_margins(root, summary):
     """The errors of the stability margins: the page's are summary.json's, number for number;
     a finished run's largest speed over c0 is at least its bodies' at the end (its last
@@ -294,6 +310,7 @@ def check_page(text, out, summary, prefix=False):
     errors += check_bounds(root, summary)
     errors += check_margins(root, summary)
     errors += check_curves(root, out, summary)
+    errors += check_processes(root, summary)
 
     # The comparison can fail: one plotted number changed is found.
     line = next(root.iter(SVG + "polyline"))
@@ -323,12 +340,15 @@ def check_unstable(summary):
 
 
 def main():
-    code = 0
-    if sys.argv[1] == "--exit":
-        code = int(sys.argv[2])
+    code, launcher = 0, []
+    while sys.argv[1] in ("--exit", "--launcher"):
+        if sys.argv[1] == "--exit":
+            code = int(sys.argv[2])
+        else:
+            launcher = [w for w in sys.argv[2].split(",") if w]
         del sys.argv[1:3]
     program, out, args = sys.argv[1], sys.argv[2], sys.argv[3:]
-    run = subprocess.run([program, "--quiet", "--overwrite", "--out", out] + args,
+    run = subprocess.run(launcher + [program, "--quiet", "--overwrite", "--out", out] + args,
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     if run.returncode != code:
         sys.exit(f"{program} exited {run.returncode}:\n{run.stdout}")
