@@ -35,8 +35,8 @@ struct sph_sim {
      * bound it was (-1: the contact or the fixed step) */
     sph_dt_bound dt_bound;
     int dt_body;
-    /* the steps sph_sim_advance took on the host, by the bound that set each, and by the
-     * body whose bound it was (nbodies; the steps a device target chose are not counted) */
+    /* the steps sph_sim_advance took, by the bound that set each, and by the body whose
+     * bound it was (nbodies; a device target's clock counts its own, cuda/advance.h) */
     long dt_bound_steps[SPH_DT_NBOUNDS];
     long *dt_body_steps;
 };
