@@ -433,8 +433,8 @@ static int write_particles(run_state *r)
     return s->par->agree(bad);
 }
 
-/* The share of the steps of the output interval that ends now each bound set (none where
- * the device chose them: not counted). */
+/* The share of the steps of the output interval that ends now each bound set (sim.c, or a
+ * device target's clock, counts them). */
 static void note_bounds(run_state *r)
 {
     const sph_sim *s = &r->sim;
@@ -602,8 +602,8 @@ static void processes_summary(sph_json *j, const run_state *r, const double *x)
     sph_json_end_object(j);
 }
 
-/* What set the time steps the host chose since this process started the run: the steps
- * each bound set, and each body's bounds (summary.json "time_step_bounds"). */
+/* What set the time steps since this process started the run: the steps each bound set,
+ * and each body's bounds (summary.json "time_step_bounds"). */
 static void bounds_summary(sph_json *j, const sph_sim *s)
 {
     static const char *const names[SPH_DT_NBOUNDS] = SPH_DT_BOUND_NAMES;
@@ -1135,9 +1135,11 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
     memset(&r, 0, sizeof r);
     static char *const time_step_names[] = {"time", "mean_dt"};
     r.time_steps = (sph_csv_table){.ncols = 2, .names = (char **)time_step_names};
-    static char *const bound_names[1 + SPH_DT_NBOUNDS] = {"time", "speed", "acceleration",
-                                                          "compression", "contact", "fixed"};
-    r.dt_bounds = (sph_csv_table){.ncols = 1 + SPH_DT_NBOUNDS, .names = (char **)bound_names};
+    static const char *const bounds[SPH_DT_NBOUNDS] = SPH_DT_BOUND_NAMES;
+    static char *bound_columns[1 + SPH_DT_NBOUNDS] = {"time"};
+    for (int k = 0; k < SPH_DT_NBOUNDS; k++)
+        bound_columns[1 + k] = (char *)bounds[k];
+    r.dt_bounds = (sph_csv_table){.ncols = 1 + SPH_DT_NBOUNDS, .names = bound_columns};
     r.dt_step0 = -1;
     r.m = m;
     r.sim.par = par;

@@ -71,9 +71,9 @@ static int curve_values(sph_report_curve *c, const sph_csv_table *t,
         return -1;
     for (long row = 0; row < t->nrows; row++) {
         const double time = t->v[(size_t)row * (size_t)t->ncols];
+        const double phase = 2 * SPH_REPORT_PI * (time - c->t0) / c->period;
         c->y[row] = reference ? reference(time)
-                    : c->period > 0 ? c->mid + c->amplitude * sin(2 * SPH_REPORT_PI * (time - c->t0) /
-                                                                  c->period)
+                    : c->period > 0 ? c->mid + c->amplitude * sin(phase)
                                     : c->mid + c->amplitude;
     }
     return 0;
