@@ -66,7 +66,8 @@ static axis nice_axis(double lo, double hi)
         lo = 0, hi = 1;
     if (!isfinite(hi - lo)) /* (values near the largest double) */
         lo = -1e300, hi = 1e300;
-    if (hi - lo <= 1e-300 * fmax(1.0, fabs(hi))) {
+    if (hi - lo <= 1e-6 * fmax(fabs(lo), fabs(hi)) || hi - lo <= 1e-300) { /* (a constant,
+                                                            or as good as one: round-off) */
         const double pad = lo != 0 ? 0.5 * fabs(lo) : 1.0;
         lo -= pad, hi += pad;
     }
@@ -91,6 +92,16 @@ static double py(const frame *fr, const axis *a, double y)
            (y - a->lo) / (a->hi - a->lo) * (fr->height - fr->top - fr->bottom);
 }
 
+/* The significant digits that tell a's ticks apart: 4, or more where the ticks are close
+ * beside their size (a time step that varies in its fifth digit; nice_axis makes a range
+ * below 1e-6 of its size a constant's). */
+static int tick_digits(const axis *a)
+{
+    const double size = fmax(fabs(a->lo), fabs(a->hi));
+    const int digits = (int)ceil(log10(size / a->step)) + 1;
+    return digits < 4 ? 4 : digits > 9 ? 9 : digits;
+}
+
 /* The axes: the box, the ticks with their labels, grid lines, and the axes' names. */
 static void put_axes(FILE *f, const frame *fr, const axis *ax, const axis *ay,
                      const char *xname, const char *yname)
@@ -98,17 +109,18 @@ static void put_axes(FILE *f, const frame *fr, const axis *ax, const axis *ay,
     const double x0 = fr->left, x1 = fr->width - fr->right;
     const double y0 = fr->height - fr->bottom, y1 = fr->top;
     const long nx = lround((ax->hi - ax->lo) / ax->step), ny = lround((ay->hi - ay->lo) / ay->step);
+    const int dx = tick_digits(ax), dy = tick_digits(ay);
     for (long k = 0; k <= nx; k++) {
         const double v = ax->lo + (double)k * ax->step, x = px(fr, ax, v);
         fprintf(f, "<line x1=\"%.1f\" y1=\"%g\" x2=\"%.1f\" y2=\"%g\" stroke=\"#e4e4e4\"/>"
-                   "<text x=\"%.1f\" y=\"%g\" text-anchor=\"middle\">%.4g</text>\n",
-                x, y0, x, y1, x, y0 + 14, fabs(v) < 1e-9 * ax->step ? 0.0 : v);
+                   "<text x=\"%.1f\" y=\"%g\" text-anchor=\"middle\">%.*g</text>\n",
+                x, y0, x, y1, x, y0 + 14, dx, fabs(v) < 1e-9 * ax->step ? 0.0 : v);
     }
     for (long k = 0; k <= ny; k++) {
         const double v = ay->lo + (double)k * ay->step, y = py(fr, ay, v);
         fprintf(f, "<line x1=\"%g\" y1=\"%.1f\" x2=\"%g\" y2=\"%.1f\" stroke=\"#e4e4e4\"/>"
-                   "<text x=\"%g\" y=\"%.1f\" text-anchor=\"end\">%.4g</text>\n",
-                x0, y, x1, y, x0 - 4, y + 4, fabs(v) < 1e-9 * ay->step ? 0.0 : v);
+                   "<text x=\"%g\" y=\"%.1f\" text-anchor=\"end\">%.*g</text>\n",
+                x0, y, x1, y, x0 - 4, y + 4, dy, fabs(v) < 1e-9 * ay->step ? 0.0 : v);
     }
     fprintf(f, "<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" "
                "stroke=\"#444\"/>\n", x0, y1, x1 - x0, y0 - y1);
@@ -153,6 +165,7 @@ typedef struct {
     int width, height;
     const sph_report_curve *curves;
     int ncurves, plane;
+    double ylo, yhi; /* the y axis' range where the data's may not change it (0, 0: none) */
 } plot_spec;
 
 /* Whether curve c is drawn over the plot of p with columns cols[0..ncols). */
@@ -245,7 +258,6 @@ static void line_plot(FILE *f, const plot_spec *p, const sph_csv_table *t, const
     int legend = 0; /* (the longest name) */
     for (int c = 0; c < ncols; c++)
         legend = (int)fmax(legend, (double)strlen(t->names[cols[c]]));
-    const frame fr = {p->width, p->height, 84, 48 + 7 * legend, 12, 36};
     const long stride = t->stride > 1 ? t->stride : 1;
     double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
     widen(&(line_values){t, 0, NULL}, &xlo, &xhi);
@@ -254,7 +266,11 @@ static void line_plot(FILE *f, const plot_spec *p, const sph_csv_table *t, const
     for (int k = 0; k < p->ncurves; k++)
         if (curve_in(p, &p->curves[k], cols, ncols))
             widen(&(line_values){t, 0, p->curves[k].y}, &ylo, &yhi);
+    if (p->ylo < p->yhi)
+        ylo = p->ylo, yhi = p->yhi;
     const axis ax = nice_axis(xlo, xhi), ay = nice_axis(ylo, yhi);
+    const frame fr = {p->width, p->height, 84 + 7 * (tick_digits(&ay) - 4), 48 + 7 * legend,
+                      12, 36}; /* (the y ticks' labels and the legend beside the plot) */
     fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
                "viewBox=\"0 0 %d %d\"", p->width, p->height, p->width, p->height);
     if (p->id)
@@ -401,7 +417,8 @@ static void put_energies(FILE *f, const sph_csv_table *t)
     int *cols = malloc(((size_t)t->ncols + 1) * sizeof *cols), n = 0;
     for (int k = 1; cols && k < t->ncols; k++)
         cols[n++] = k;
-    const plot_spec p = {"energies", "energies.csv", "energy", 760, 380, NULL, 0, -1};
+    const plot_spec p = {.id = "energies", .file = "energies.csv", .yname = "energy",
+                         .width = 760, .height = 380, .plane = -1};
     line_plot(f, &p, t, cols, n);
     free(cols);
 }
@@ -411,7 +428,8 @@ static void put_time_steps(FILE *f, const sph_csv_table *t)
     const int col = 1;
     fputs("<h2>Time step</h2>\n<p class=\"note\">The mean time step of each output interval "
           "(its time over its steps), since this process started the run.</p>\n", f);
-    const plot_spec p = {"time-step", NULL, "time step (s)", 560, 260, NULL, 0, -1};
+    const plot_spec p = {.id = "time-step", .yname = "time step (s)", .width = 560,
+                         .height = 260, .plane = -1};
     line_plot(f, &p, t, &col, 1);
 }
 
@@ -462,7 +480,8 @@ static void put_bounds(FILE *f, const sph_report *r)
         if (any)
             cols[n++] = k;
     }
-    const plot_spec p = {"time-step-shares", NULL, "share of steps", 560, 260, NULL, 0, -1};
+    const plot_spec p = {.id = "time-step-shares", .yname = "share of steps", .width = 560,
+                         .height = 260, .plane = -1, .ylo = 0, .yhi = 1};
     line_plot(f, &p, t, cols, n);
 }
 
@@ -485,8 +504,9 @@ static void put_plane(FILE *f, const sph_report *r, int q)
             if (n < 3 && c[0] == (what ? 'f' : 'u') && !(dim == 2 && c[1] == 'y'))
                 cols[n++] = k;
         }
-        const plot_spec p = {NULL, file, what ? "force" : "displacement (m)", 420, 240,
-                             r->curves, r->ncurves, q};
+        const plot_spec p = {.file = file, .yname = what ? "force" : "displacement (m)",
+                             .width = 420, .height = 240, .curves = r->curves,
+                             .ncurves = r->ncurves, .plane = q};
         line_plot(f, &p, t, cols, n);
     }
     fputs("</div>\n", f);
