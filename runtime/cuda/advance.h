@@ -27,20 +27,27 @@ __device__ static inline void sph_clock_choose_on(sph_cuda_clock *c)
     }
     double dt = INFINITY, vmax2 = 0, amax2 = 0;
     c->dt_factor = 1.0;
+    c->bound = SPH_DT_SPEED, c->body = 0;
     for (int i = 0; i < c->nbodies; i++) {
         const sph_body *b = c->bodies[i];
-        const double *red = b->red;
+        const double *red = b->red, v2 = red[SPH_RED_VMAX2], a2 = red[SPH_RED_AMAX2];
         const double f = sph_stretch_factor(c->lambda_on, b->lam2 != NULL, sph_red_lam2min(red));
         c->dt_factor = fmin(c->dt_factor, f);
-        dt = fmin(dt, sph_body_dt(f, b->h, b->c0, red[SPH_RED_VMAX2], red[SPH_RED_AMAX2]));
-        vmax2 = fmax(vmax2, red[SPH_RED_VMAX2]), amax2 = fmax(amax2, red[SPH_RED_AMAX2]);
+        const double own = sph_body_dt(f, b->h, b->c0, v2, a2);
+        if (own < dt) /* (what set it: as sph_sim_stable_dt says) */
+            dt = own, c->body = i, c->bound = sph_body_dt_bound(f, b->h, b->c0, v2, a2);
+        vmax2 = fmax(vmax2, v2), amax2 = fmax(amax2, a2);
     }
     if (c->contact_sums) { /* the stiffest contact, where a pair is in contact or near it */
         const double *cs = c->contact_sums;
         const int near = sph_contact_near(cs[SPH_CSUM_CLOSE], cs[SPH_CSUM_LEVEL], vmax2, amax2,
                                           c->dt, sph_chosen_dt(c->dt_fixed, c->cfl, dt));
-        dt = fmin(dt, sph_contact_bound(cs[SPH_CSUM_W2], c->contact_w2ref, near));
+        const double contact = sph_contact_bound(cs[SPH_CSUM_W2], c->contact_w2ref, near);
+        if (contact < dt)
+            dt = contact, c->bound = SPH_DT_CONTACT, c->body = -1;
     }
+    if (c->dt_fixed > 0)
+        c->bound = SPH_DT_FIXED, c->body = -1;
     dt = sph_chosen_dt(c->dt_fixed, c->cfl, dt);
     const double floor_now = sph_dt_floor_now(c->floor_dt, c->dt_factor);
     if (!(dt >= floor_now)) {
@@ -57,6 +64,9 @@ __device__ static inline void sph_clock_tick_on(sph_cuda_clock *c)
         return;
     c->t += c->dt;
     c->step++;
+    c->bound_steps[c->bound]++;
+    if (c->body >= 0)
+        c->body_steps[c->body]++;
 }
 
 __global__ void sph_clock_choose_kernel() { sph_clock_choose_on(&sph_clock); }
@@ -86,12 +96,16 @@ static void sph_cuda_clock_start(const sph_sim *s, const sph_advance *a, sph_bod
         for (int i = 0; i < s->nbodies; i++)
             sph_host_sums_to_device(&s->bodies[i], dev[i]->red);
     static sph_body **views; /* the device views, where the device's clock reads them */
+    static long *body_steps; /* the steps each body's bound set (the clock counts them) */
     if (!views) {
         SPH_CUDA_CHECK(cudaMallocManaged(&views, (size_t)s->nbodies * sizeof *views));
         for (int i = 0; i < s->nbodies; i++)
             views[i] = dev[i];
         sph_read_mostly(views, (size_t)s->nbodies * sizeof *views);
+        SPH_CUDA_CHECK(cudaMallocManaged(&body_steps, (size_t)s->nbodies * sizeof *body_steps));
     }
+    for (int i = 0; i < s->nbodies; i++) /* (the host waited for the last batch) */
+        body_steps[i] = 0;
     const sph_model *m = s->m;
     sph_cuda_clock c = {};
     c.t = s->t, c.dt = s->dt, c.dt_prev = s->dt_prev, c.step = s->step, c.dt_factor = s->dt_factor;
@@ -99,7 +113,18 @@ static void sph_cuda_clock_start(const sph_sim *s, const sph_advance *a, sph_bod
     c.cfl = m->cfl, c.dt_fixed = m->dt_fixed, c.lambda_on = m->dt_lambda_on;
     c.nbodies = s->nbodies, c.bodies = views;
     c.contact_sums = contact_sums, c.contact_w2ref = contact_w2ref;
+    c.bound = s->dt_bound, c.body = s->dt_body, c.body_steps = body_steps;
     SPH_CUDA_CHECK(cudaMemcpyToSymbol(sph_clock, &c, sizeof c));
+}
+
+/* The batch's steps, counted by the clock by what set each, into the host's counts. */
+static void sph_cuda_clock_counts(sph_sim *s, const sph_cuda_clock *c)
+{
+    for (int k = 0; k < SPH_DT_NBOUNDS; k++)
+        s->dt_bound_steps[k] += c->bound_steps[k];
+    for (int i = 0; s->dt_body_steps && i < s->nbodies; i++)
+        s->dt_body_steps[i] += c->body_steps[i];
+    s->dt_bound = (sph_dt_bound)c->bound, s->dt_body = c->body;
 }
 
 /* The end of a batch: the passes run again (skip cleared), and the host waits for the clock:
@@ -113,6 +138,7 @@ static void sph_cuda_clock_finish(sph_sim *s, sph_advance *a)
     sph_cuda_profile_collect(); /* (the host has waited) */
     s->t = c.t, s->dt = c.dt, s->dt_prev = c.dt_prev, s->step = c.step, s->dt_factor = c.dt_factor;
     a->collapsed = c.collapsed, a->dt_bad = c.dt_bad, a->floor_bad = c.floor_bad;
+    sph_cuda_clock_counts(s, &c);
 }
 
 /* Whether the clock stopped the batch (one small copy: the host waits for the steps queued). */

@@ -6,6 +6,7 @@
 #include "target.h"
 #include "core/defs.h"
 #include "scene/body.h"
+#include "scene/sim.h"
 
 /* The time loop's state that the passes read (t and dt) when the device runs a batch of
  * steps by itself (sph_model.advance, sph_sim_advance): before each step it chooses the time
@@ -31,6 +32,9 @@ struct sph_cuda_clock {
     sph_body *const *bodies;   /* the device views (managed) */
     const double *contact_sums; /* the contact's sums of the step (device, contact_law.h), */
     double contact_w2ref;      /* the laws' reference omega^2: the contact's bound (contact.c) */
+    int bound, body;           /* what set the time step chosen (sph_sim.dt_bound, dt_body), */
+    long bound_steps[SPH_DT_NBOUNDS]; /* and the batch's steps by it (sph_sim.dt_bound_steps) */
+    long *body_steps;          /* and by body (managed, nbodies; sph_sim.dt_body_steps) */
 };
 
 __device__ static sph_cuda_clock sph_clock;

@@ -66,7 +66,8 @@ static axis nice_axis(double lo, double hi)
         lo = 0, hi = 1;
     if (!isfinite(hi - lo)) /* (values near the largest double) */
         lo = -1e300, hi = 1e300;
-    if (hi - lo <= 1e-300 * fmax(1.0, fabs(hi))) {
+    if (hi - lo <= 1e-6 * fmax(fabs(lo), fabs(hi)) || hi - lo <= 1e-300) { /* (a constant,
+                                                            or as good as one: round-off) */
         const double pad = lo != 0 ? 0.5 * fabs(lo) : 1.0;
         lo -= pad, hi += pad;
     }
@@ -91,6 +92,16 @@ static double py(const frame *fr, const axis *a, double y)
            (y - a->lo) / (a->hi - a->lo) * (fr->height - fr->top - fr->bottom);
 }
 
+/* The significant digits that tell a's ticks apart: 4, or more where the ticks are close
+ * beside their size (a time step that varies in its fifth digit; nice_axis makes a range
+ * below 1e-6 of its size a constant's). */
+static int tick_digits(const axis *a)
+{
+    const double size = fmax(fabs(a->lo), fabs(a->hi));
+    const int digits = (int)ceil(log10(size / a->step)) + 1;
+    return digits < 4 ? 4 : digits > 9 ? 9 : digits;
+}
+
 /* The axes: the box, the ticks with their labels, grid lines, and the axes' names. */
 static void put_axes(FILE *f, const frame *fr, const axis *ax, const axis *ay,
                      const char *xname, const char *yname)
@@ -98,17 +109,18 @@ static void put_axes(FILE *f, const frame *fr, const axis *ax, const axis *ay,
     const double x0 = fr->left, x1 = fr->width - fr->right;
     const double y0 = fr->height - fr->bottom, y1 = fr->top;
     const long nx = lround((ax->hi - ax->lo) / ax->step), ny = lround((ay->hi - ay->lo) / ay->step);
+    const int dx = tick_digits(ax), dy = tick_digits(ay);
     for (long k = 0; k <= nx; k++) {
         const double v = ax->lo + (double)k * ax->step, x = px(fr, ax, v);
         fprintf(f, "<line x1=\"%.1f\" y1=\"%g\" x2=\"%.1f\" y2=\"%g\" stroke=\"#e4e4e4\"/>"
-                   "<text x=\"%.1f\" y=\"%g\" text-anchor=\"middle\">%.4g</text>\n",
-                x, y0, x, y1, x, y0 + 14, fabs(v) < 1e-9 * ax->step ? 0.0 : v);
+                   "<text x=\"%.1f\" y=\"%g\" text-anchor=\"middle\">%.*g</text>\n",
+                x, y0, x, y1, x, y0 + 14, dx, fabs(v) < 1e-9 * ax->step ? 0.0 : v);
     }
     for (long k = 0; k <= ny; k++) {
         const double v = ay->lo + (double)k * ay->step, y = py(fr, ay, v);
         fprintf(f, "<line x1=\"%g\" y1=\"%.1f\" x2=\"%g\" y2=\"%.1f\" stroke=\"#e4e4e4\"/>"
-                   "<text x=\"%g\" y=\"%.1f\" text-anchor=\"end\">%.4g</text>\n",
-                x0, y, x1, y, x0 - 4, y + 4, fabs(v) < 1e-9 * ay->step ? 0.0 : v);
+                   "<text x=\"%g\" y=\"%.1f\" text-anchor=\"end\">%.*g</text>\n",
+                x0, y, x1, y, x0 - 4, y + 4, dy, fabs(v) < 1e-9 * ay->step ? 0.0 : v);
     }
     fprintf(f, "<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" "
                "stroke=\"#444\"/>\n", x0, y1, x1 - x0, y0 - y1);
@@ -120,80 +132,167 @@ static void put_axes(FILE *f, const frame *fr, const axis *ax, const axis *ay,
     fputs("</text>\n", f);
 }
 
-/* The attribute name="..." of column k of t's rows, each number as put_number writes it. */
-static void put_column(FILE *f, const char *name, const sph_csv_table *t, int k)
+/* A line's values at the rows of table t: column k of t's, or ys (one per row). */
+typedef struct {
+    const sph_csv_table *t;
+    int k;
+    const double *ys; /* NULL: column k */
+} line_values;
+
+static double value_at(const line_values *l, long r)
+{
+    return l->ys ? l->ys[r] : l->t->v[(size_t)r * (size_t)l->t->ncols + (size_t)l->k];
+}
+
+/* The attribute name="..." of l's values, each number as put_number writes it. */
+static void put_values(FILE *f, const char *name, const line_values *l)
 {
     fprintf(f, "\n %s=\"", name);
-    for (long r = 0; r < t->nrows; r++) {
+    for (long r = 0; r < l->t->nrows; r++) {
         if (r)
             fputc(' ', f);
-        put_number(f, t->v[(size_t)r * (size_t)t->ncols + (size_t)k]);
+        put_number(f, value_at(l, r));
     }
     fputc('"', f);
 }
 
-/* A line plot of table t (file: its name in the output folder, NULL: a table of the run's
- * memory, the <svg> without data-csv): column 0, the time, along x,
- * columns cols[0..ncols) each a line, named in a legend on the right. */
-static void line_plot(FILE *f, const char *file, const sph_csv_table *t, const int *cols,
-                      int ncols, const char *yname, int width, int height)
+/* What a plot is: its id (NULL: none), the file it draws (its name in the output folder;
+ * NULL: a table of the run's memory, the <svg> without data-csv), the name of its y axis,
+ * its size in pixels; the expectations drawn over it (those of curves whose plane is plane
+ * and whose column is one of the plot's). */
+typedef struct {
+    const char *id, *file, *yname;
+    int width, height;
+    const sph_report_curve *curves;
+    int ncurves, plane;
+    double ylo, yhi; /* the y axis' range where the data's may not change it (0, 0: none) */
+} plot_spec;
+
+/* Whether curve c is drawn over the plot of p with columns cols[0..ncols). */
+static int curve_in(const plot_spec *p, const sph_report_curve *c, const int *cols, int ncols)
+{
+    for (int k = 0; k < ncols && c->plane == p->plane; k++)
+        if (cols[k] == c->column)
+            return 1;
+    return 0;
+}
+
+/* The range of l's finite values into lo, hi. */
+static void widen(const line_values *l, double *lo, double *hi)
+{
+    for (long r = 0; r < l->t->nrows; r++) {
+        const double v = value_at(l, r);
+        if (isfinite(v))
+            *lo = fmin(*lo, v), *hi = fmax(*hi, v);
+    }
+}
+
+/* The rest of a polyline whose opening tag and own attributes are written: l's data-x,
+ * data-y and points (a pair that is not finite is left out). */
+static void put_line(FILE *f, const frame *fr, const axis *ax, const axis *ay,
+                     const line_values *l)
+{
+    const line_values x = {l->t, 0, NULL};
+    put_values(f, "data-x", &x);
+    put_values(f, "data-y", l);
+    fputs("\n points=\"", f);
+    int first = 1;
+    for (long r = 0; r < l->t->nrows; r++) {
+        const double tx = value_at(&x, r), v = value_at(l, r);
+        if (isfinite(tx) && isfinite(v)) {
+            fprintf(f, "%s%.1f,%.1f", first ? "" : " ", px(fr, ax, tx), py(fr, ay, v));
+            first = 0;
+        }
+    }
+    fputs("\"/>\n", f);
+}
+
+/* A column's line and its legend entry (the c-th). */
+static void put_column_line(FILE *f, const frame *fr, const axis *ax, const axis *ay,
+                            const sph_csv_table *t, int k, int c)
+{
+    const int total = !strcmp(t->names[k], "total");
+    const char *color = total ? "#000" : COLORS[c % NCOLORS];
+    fputs("<polyline fill=\"none\" data-column=\"", f);
+    put_text(f, t->names[k]);
+    fprintf(f, "\" stroke=\"%s\" stroke-width=\"%s\"", color, total ? "2" : "1.3");
+    put_line(f, fr, ax, ay, &(line_values){t, k, NULL});
+    const int ly = fr->top + 8 + 16 * c, lx = fr->width - fr->right + 10;
+    fprintf(f, "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"%s\" "
+               "stroke-width=\"2\"/><text x=\"%d\" y=\"%d\">", lx, ly, lx + 20, ly, color,
+            lx + 26, ly + 4);
+    put_text(f, t->names[k]);
+    fputs("</text>\n", f);
+}
+
+/* An expectation's curve, dashed, in its column's colour (the c-th column of the plot):
+ * data-expect its kind, data-column its column, data-model its line; a period's sinusoid
+ * also its numbers. */
+static void put_curve(FILE *f, const frame *fr, const axis *ax, const axis *ay,
+                      const sph_csv_table *t, const sph_report_curve *cv, int c)
+{
+    fprintf(f, "<polyline fill=\"none\" data-expect=\"%s\" data-column=\"", cv->kind);
+    put_text(f, t->names[cv->column]);
+    fputs("\" data-model=\"", f);
+    put_text(f, cv->text);
+    fputc('"', f);
+    if (!strcmp(cv->kind, "period")) {
+        const double v[4] = {cv->period, cv->mid, cv->amplitude, cv->t0};
+        static const char *const names[4] = {"period", "mid", "amplitude", "t0"};
+        for (int k = 0; k < 4; k++) {
+            fprintf(f, " data-%s=\"", names[k]);
+            put_number(f, v[k]);
+            fputc('"', f);
+        }
+    }
+    fprintf(f, " stroke=\"%s\" stroke-width=\"1\" stroke-dasharray=\"5,3\"",
+            COLORS[c % NCOLORS]);
+    put_line(f, fr, ax, ay, &(line_values){t, 0, cv->y});
+}
+
+/* A line plot of table t as p says: column 0, the time, along x, columns cols[0..ncols) each
+ * a line, named in a legend on the right, and the expectations drawn over them dashed. */
+static void line_plot(FILE *f, const plot_spec *p, const sph_csv_table *t, const int *cols,
+                      int ncols)
 {
     int legend = 0; /* (the longest name) */
     for (int c = 0; c < ncols; c++)
         legend = (int)fmax(legend, (double)strlen(t->names[cols[c]]));
-    const frame fr = {width, height, 84, 48 + 7 * legend, 12, 36};
-    const long n = t->nrows, stride = t->stride > 1 ? t->stride : 1;
+    const long stride = t->stride > 1 ? t->stride : 1;
     double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
-    for (long r = 0; r < n; r++) {
-        const double *row = t->v + (size_t)r * (size_t)t->ncols;
-        if (isfinite(row[0]))
-            xlo = fmin(xlo, row[0]), xhi = fmax(xhi, row[0]);
-        for (int c = 0; c < ncols; c++)
-            if (isfinite(row[cols[c]]))
-                ylo = fmin(ylo, row[cols[c]]), yhi = fmax(yhi, row[cols[c]]);
-    }
+    widen(&(line_values){t, 0, NULL}, &xlo, &xhi);
+    for (int c = 0; c < ncols; c++)
+        widen(&(line_values){t, cols[c], NULL}, &ylo, &yhi);
+    for (int k = 0; k < p->ncurves; k++)
+        if (curve_in(p, &p->curves[k], cols, ncols))
+            widen(&(line_values){t, 0, p->curves[k].y}, &ylo, &yhi);
+    if (p->ylo < p->yhi)
+        ylo = p->ylo, yhi = p->yhi;
     const axis ax = nice_axis(xlo, xhi), ay = nice_axis(ylo, yhi);
+    const frame fr = {p->width, p->height, 84 + 7 * (tick_digits(&ay) - 4), 48 + 7 * legend,
+                      12, 36}; /* (the y ticks' labels and the legend beside the plot) */
     fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
-               "viewBox=\"0 0 %d %d\"", width, height, width, height);
-    if (file) {
+               "viewBox=\"0 0 %d %d\"", p->width, p->height, p->width, p->height);
+    if (p->id)
+        fprintf(f, " id=\"%s\"", p->id);
+    if (p->file) {
         fputs(" data-csv=\"", f);
-        put_text(f, file);
+        put_text(f, p->file);
         fputc('"', f);
     }
     fprintf(f, " data-stride=\"%ld\" data-rows=\"%ld\">\n", stride, t->total);
-    put_axes(f, &fr, &ax, &ay, "time (s)", yname);
+    put_axes(f, &fr, &ax, &ay, "time (s)", p->yname);
     for (int c = 0; c < ncols; c++) {
-        const int k = cols[c];
-        const int total = !strcmp(t->names[k], "total");
-        const char *color = total ? "#000" : COLORS[c % NCOLORS];
-        fputs("<polyline fill=\"none\" data-column=\"", f);
-        put_text(f, t->names[k]);
-        fprintf(f, "\" stroke=\"%s\" stroke-width=\"%s\"", color, total ? "2" : "1.3");
-        put_column(f, "data-x", t, 0);
-        put_column(f, "data-y", t, k);
-        fputs("\n points=\"", f);
-        int first = 1; /* (a non-finite value is left out) */
-        for (long r = 0; r < n; r++) {
-            const double *row = t->v + (size_t)r * (size_t)t->ncols;
-            if (isfinite(row[0]) && isfinite(row[k])) {
-                fprintf(f, "%s%.1f,%.1f", first ? "" : " ", px(&fr, &ax, row[0]),
-                        py(&fr, &ay, row[k]));
-                first = 0;
-            }
-        }
-        fputs("\"/>\n", f);
-        const int ly = fr.top + 8 + 16 * c, lx = width - fr.right + 10;
-        fprintf(f, "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"%s\" "
-                   "stroke-width=\"2\"/><text x=\"%d\" y=\"%d\">", lx, ly, lx + 20, ly, color,
-                lx + 26, ly + 4);
-        put_text(f, t->names[k]);
-        fputs("</text>\n", f);
+        put_column_line(f, &fr, &ax, &ay, t, cols[c], c);
+        for (int k = 0; k < p->ncurves; k++)
+            if (curve_in(p, &p->curves[k], &cols[c], 1))
+                put_curve(f, &fr, &ax, &ay, t, &p->curves[k], c);
     }
     fputs("</svg>\n", f);
     if (stride > 1)
         fprintf(f, "<p class=\"note\">%ld rows: one in %ld drawn, and the last.</p>\n",
                 t->total, stride);
-    else if (n == 0)
+    else if (t->nrows == 0)
         fputs("<p class=\"note\">No rows yet.</p>\n", f);
 }
 
@@ -214,8 +313,8 @@ static void put_verdict(FILE *f, const sph_report *r)
 {
     fprintf(f, "<p id=\"verdict\" class=\"verdict %s\">", r->status);
     if (!strcmp(r->status, "running"))
-        fprintf(f, "Running: t = %g s of %g s, step %ld (this page is written again at the "
-                   "end).", r->time, r->end_time, r->steps);
+        fprintf(f, "Running: t = %g s of %g s, step %ld (this page is written again as the "
+                   "run goes on, and at its end).", r->time, r->end_time, r->steps);
     else if (!strcmp(r->status, "finished"))
         fprintf(f, "Finished: t = %g s, %ld steps.", r->time, r->steps);
     else if (!strcmp(r->status, "unstable"))
@@ -241,6 +340,28 @@ static void put_cell(FILE *f, double v, double scale)
         fputs("<td></td>", f);
 }
 
+/* The stability monitor's checks: how near each came to its limit (data-seen: the number in
+ * full). */
+static void put_margins(FILE *f, const sph_report *r)
+{
+    if (!r->nmargins)
+        return;
+    fputs("<h2>Stability margins</h2>\n<p class=\"note\">The nearest the stability "
+          "monitor's checks saw the run come to their limits.</p>\n<table id=\"margins\">\n"
+          "<tr><th>check</th><th>nearest seen</th><th>limit</th></tr>\n", f);
+    for (int k = 0; k < r->nmargins; k++) {
+        const sph_report_margin *m = &r->margins[k];
+        fprintf(f, "<tr data-check=\"%s\" data-seen=\"", m->key);
+        put_number(f, m->seen);
+        fputs("\"><td class=\"text\">", f);
+        put_text(f, m->text);
+        fputs("</td>", f);
+        put_cell(f, m->seen, 1);
+        fprintf(f, "<td>%s %g</td></tr>\n", m->rule, m->limit);
+    }
+    fputs("</table>\n", f);
+}
+
 static void put_expectations(FILE *f, const sph_report *r)
 {
     if (!r->nexpects)
@@ -264,13 +385,41 @@ static void put_expectations(FILE *f, const sph_report *r)
     fputs("</table>\n", f);
 }
 
+/* The processes of a run on many: a row each (data-process: its rank; data-NAME: each
+ * number in full, named as summary.json's processes). */
+static void put_processes(FILE *f, const sph_report *r)
+{
+    static const char *const keys[4] = {"particles", "halo", "bytes_per_step", "wait_time"};
+    if (!r->processes)
+        return;
+    fputs("<h2>Processes</h2>\n<table id=\"processes\">\n<tr><th>process</th>"
+          "<th>particles</th><th>halo particles</th><th>bytes sent per step</th>"
+          "<th>waited for the halo (s)</th></tr>\n", f);
+    for (int k = 0; k < r->nprocesses; k++) {
+        const double *x = r->processes + 4 * (size_t)k;
+        fprintf(f, "<tr data-process=\"%d\"", k);
+        for (int c = 0; c < 4; c++) {
+            fprintf(f, " data-%s=\"", keys[c]);
+            put_number(f, x[c]);
+            fputc('"', f);
+        }
+        fprintf(f, "><td>%d</td>", k);
+        for (int c = 0; c < 4; c++)
+            put_cell(f, x[c], 1);
+        fputs("</tr>\n", f);
+    }
+    fputs("</table>\n", f);
+}
+
 static void put_energies(FILE *f, const sph_csv_table *t)
 {
     fputs("<h2>Energies</h2>\n", f);
     int *cols = malloc(((size_t)t->ncols + 1) * sizeof *cols), n = 0;
     for (int k = 1; cols && k < t->ncols; k++)
         cols[n++] = k;
-    line_plot(f, "energies.csv", t, cols, n, "energy", 760, 380);
+    const plot_spec p = {.id = "energies", .file = "energies.csv", .yname = "energy",
+                         .width = 760, .height = 380, .plane = -1};
+    line_plot(f, &p, t, cols, n);
     free(cols);
 }
 
@@ -279,11 +428,70 @@ static void put_time_steps(FILE *f, const sph_csv_table *t)
     const int col = 1;
     fputs("<h2>Time step</h2>\n<p class=\"note\">The mean time step of each output interval "
           "(its time over its steps), since this process started the run.</p>\n", f);
-    line_plot(f, NULL, t, &col, 1, "time step (s)", 560, 260);
+    const plot_spec p = {.id = "time-step", .yname = "time step (s)", .width = 560,
+                         .height = 260, .plane = -1};
+    line_plot(f, &p, t, &col, 1);
 }
 
-static void put_plane(FILE *f, const char *name, const sph_csv_table *t, int dim)
+/* The steps each bound set over the run, and each body's, with their shares of the steps
+ * counted: a row each (those that set none left out), named in data-bound or data-body. */
+static void put_bound_table(FILE *f, const sph_report *r)
 {
+    long counted = 0;
+    for (int k = 0; k < r->nbounds; k++)
+        counted += r->counts[k];
+    fputs("<table id=\"time-step-bounds\">\n<tr><th>set by</th><th>steps</th>"
+          "<th>share %</th></tr>\n", f);
+    for (int k = 0; k < r->nbounds + r->nbodies; k++) {
+        if (r->counts[k] <= 0)
+            continue;
+        fprintf(f, "<tr %s=\"", k < r->nbounds ? "data-bound" : "data-body");
+        put_text(f, r->count_names[k]);
+        fprintf(f, "\"><td class=\"text\">%s", k < r->nbounds ? "" : "body ");
+        put_text(f, r->count_names[k]);
+        fprintf(f, "</td><td>%ld</td><td>%.4g</td></tr>\n", r->counts[k],
+                100.0 * (double)r->counts[k] / (double)counted);
+    }
+    fputs("</table>\n", f);
+}
+
+/* What bounded the time step, where the host counted steps: the table, and each interval's
+ * share of steps by bound (the bounds that set a step at all), when an interval ended. */
+static void put_bounds(FILE *f, const sph_report *r)
+{
+    const sph_csv_table *t = r->dt_bounds;
+    long counted = 0;
+    for (int k = 0; k < r->nbounds; k++)
+        counted += r->counts[k];
+    if (counted <= 0)
+        return;
+    fputs("<h3>What bounded it</h3>\n<p class=\"note\">The steps each bound set (speed: "
+          "eq. 65, the sound speed and the particles' speed; acceleration: eq. 66; "
+          "compression: eq. 65 under the factor of a compressed body; contact: the stiffest "
+          "contact; fixed: the scene's step), and each body's bounds.</p>\n", f);
+    put_bound_table(f, r);
+    if (!t)
+        return;
+    int cols[16], n = 0;
+    for (int k = 1; k < t->ncols && n < 16; k++) {
+        int any = 0;
+        for (long row = 0; row < t->nrows && !any; row++)
+            any = t->v[(size_t)row * (size_t)t->ncols + (size_t)k] > 0;
+        if (any)
+            cols[n++] = k;
+    }
+    const plot_spec p = {.id = "time-step-shares", .yname = "share of steps", .width = 560,
+                         .height = 260, .plane = -1, .ylo = 0, .yhi = 1};
+    line_plot(f, &p, t, cols, n);
+}
+
+/* Measurement plane q's plots, its displacements' and its forces', with the expectations
+ * on them. */
+static void put_plane(FILE *f, const sph_report *r, int q)
+{
+    const char *name = r->plane_names[q];
+    const sph_csv_table *t = &r->planes[q];
+    const int dim = r->dim;
     char file[300];
     snprintf(file, sizeof file, "measure_%s.csv", name);
     fputs("<h3>", f);
@@ -296,8 +504,10 @@ static void put_plane(FILE *f, const char *name, const sph_csv_table *t, int dim
             if (n < 3 && c[0] == (what ? 'f' : 'u') && !(dim == 2 && c[1] == 'y'))
                 cols[n++] = k;
         }
-        line_plot(f, file, t, cols, n, what ? "force" : "displacement (m)",
-                  420, 240);
+        const plot_spec p = {.file = file, .yname = what ? "force" : "displacement (m)",
+                             .width = 420, .height = 240, .curves = r->curves,
+                             .ncurves = r->ncurves, .plane = q};
+        line_plot(f, &p, t, cols, n);
     }
     fputs("</div>\n", f);
 }
@@ -317,14 +527,18 @@ int sph_report_write(const char *path, const sph_report *r)
     fputs("</h1>\n", f);
     put_verdict(f, r);
     put_expectations(f, r);
+    put_margins(f, r);
+    put_processes(f, r);
     if (r->energies)
         put_energies(f, r->energies);
     if (r->time_steps)
         put_time_steps(f, r->time_steps);
+    if (r->counts && r->nbounds)
+        put_bounds(f, r);
     if (r->nplanes)
         fputs("<h2>Measurement planes</h2>\n", f);
     for (int q = 0; q < r->nplanes; q++)
-        put_plane(f, r->plane_names[q], &r->planes[q], r->dim);
+        put_plane(f, r, q);
     fputs("<p class=\"note\">The numbers in full: summary.json and the CSV files beside "
           "this page.</p>\n</body>\n</html>\n", f);
     const int err = sph_close_whole(f, path);

@@ -45,6 +45,21 @@ static double period(const sph_series *s, int q)
     return crossings >= 2 ? 2.0 * (last - first) / (crossings - 1) : NAN;
 }
 
+int sph_expect_phase(const sph_series *s, int q, double *mid, double *amplitude, double *t0)
+{
+    double lo, hi;
+    min_max(s, q, &lo, &hi);
+    *mid = 0.5 * (lo + hi), *amplitude = 0.5 * (hi - lo), *t0 = NAN;
+    for (int i = 1; i < s->n; i++) { /* (the first crossing, as period() finds it) */
+        const double a = column(s, i - 1, q) - *mid, b = column(s, i, q) - *mid;
+        if ((a < 0 && b >= 0) || (a > 0 && b <= 0)) {
+            *t0 = s->t[i - 1] + (s->t[i] - s->t[i - 1]) * a / (a - b);
+            return a < 0 ? 1 : -1;
+        }
+    }
+    return 0;
+}
+
 static double energy_drift(const sph_series *e)
 {
     if (e->n == 0)

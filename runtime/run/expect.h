@@ -19,6 +19,10 @@ typedef struct {
 /* errors (if not NULL, len bytes) receives "period 1.91 %, energy 0.0059 %", one entry per
  * expectation, for the program's final line; out (if not NULL, m->nexpects entries) the
  * results, for the report page. */
+/* The mid-line (max + min) / 2 of column q of s, half its range, and the first time it
+ * crosses the mid-line (as the period is measured): 1 rising there, -1 falling, 0 never
+ * (t0 NAN).  The report page draws the sinusoid of an expected period from them. */
+int sph_expect_phase(const sph_series *s, int q, double *mid, double *amplitude, double *t0);
 int sph_expect_evaluate(const sph_model *m, const sph_record *r, sph_json *j, int quiet,
                         char *errors, size_t len, sph_report_expect *out);
 

@@ -64,10 +64,13 @@ static int not_finite(const sph_body *b, int i, finding *f)
     return 0;
 }
 
-static int scan_body(const sph_body *b, finding *f)
+/* Whether a particle of body b fails a check (f says which); seen[0] gets the largest -det F,
+ * seen[1] the largest |v|^2 / c0^2 of those it looked at. */
+static int scan_body(const sph_body *b, finding *f, double seen[2])
 {
     const int D = b->dim;
-    const double vlim2 = 100.0 * b->c0 * b->c0;
+    const double c2 = b->c0 * b->c0;
+    const double vlim2 = SPH_MONITOR_SPEED * SPH_MONITOR_SPEED * c2;
     for (int i = 0; i < b->nown; i++) {
         if (not_finite(b, i, f))
             return 1;
@@ -75,6 +78,7 @@ static int scan_body(const sph_body *b, finding *f)
         for (int k = 0; k < D; k++)
             v2 += b->v[(size_t)i * D + k] * b->v[(size_t)i * D + k];
         const double J = sph_det3(b->F + (size_t)i * 9);
+        seen[0] = fmax(seen[0], -J), seen[1] = fmax(seen[1], v2 / c2);
         if (!(J > 0)) {
             f->particle = i, f->value = J;
             snprintf(f->what, sizeof f->what, "det F <= 0 (particle inverted)");
@@ -82,7 +86,8 @@ static int scan_body(const sph_body *b, finding *f)
         }
         if (v2 > vlim2) {
             f->particle = i, f->value = sqrt(v2);
-            snprintf(f->what, sizeof f->what, "speed above 10 c0 (velocity runaway)");
+            snprintf(f->what, sizeof f->what, "speed above %g c0 (velocity runaway)",
+                     SPH_MONITOR_SPEED);
             return 1;
         }
     }
@@ -148,14 +153,36 @@ static void report(char *msg, size_t len, const sph_sim *s, const sph_body *b, c
                  isnan(f->value) ? fabs(f->value) : f->value); /* "nan", not "-nan" */
 }
 
+/* A scan's smallest det F and largest |v| / c0 (seen, over the processes) into the margins. */
+static void note_scan(sph_monitor *mon, const sph_sim *s, double seen[2])
+{
+    s->par->max(seen, 2);
+    const double j = -seen[0], speed = sqrt(seen[1]);
+    mon->j_min = mon->scans ? fmin(mon->j_min, j) : j;
+    mon->speed = mon->scans ? fmax(mon->speed, speed) : speed;
+    mon->scans++;
+}
+
+/* The total energy e at a check against the largest before it: its ratio into the margins;
+ * whether it grew beyond the limit (or is not finite). */
+static int energy_runaway(sph_monitor *mon, double e)
+{
+    if (mon->e_ref > 0)
+        mon->growth = fmax(mon->growth, e / mon->e_ref);
+    mon->sums++;
+    return !isfinite(e) || (mon->e_ref > 0 && e > SPH_MONITOR_GROWTH * mon->e_ref);
+}
+
 int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len)
 {
     int found = 0;
+    double seen[2] = {-INFINITY, 0};
     for (int ib = 0; ib < s->nbodies && !found; ib++) {
         finding f;
-        if ((found = scan_body(&s->bodies[ib], &f)))
+        if ((found = scan_body(&s->bodies[ib], &f, seen)))
             report(msg, len, s, &s->bodies[ib], &f);
     }
+    note_scan(mon, s, seen); /* (with a finding: up to the particle that failed) */
     if (sph_monitor_share(s, found, msg, len))
         return 1;
     double e_total = 0, e_most = -1, *e = calloc((size_t)s->nbodies + 1, sizeof *e);
@@ -174,7 +201,7 @@ int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len)
             e_most = e[ib], most = ib;
     }
     free(e);
-    if (!isfinite(e_total) || (mon->e_ref > 0 && e_total > 1e6 * mon->e_ref)) {
+    if (energy_runaway(mon, e_total)) {
         /* Named like the other findings: the body with the most energy and its fastest
          * particle (on many processes, that of the process where it is fastest). */
         const sph_body *b = &s->bodies[most];
@@ -235,7 +262,7 @@ int sph_monitor_glance(sph_monitor *mon, const sph_sim *s, const sph_monitor_sum
     }
     if (most[0] > 0)
         return 1;
-    if (!isfinite(e_total) || (mon->e_ref > 0 && e_total > 1e6 * mon->e_ref))
+    if (energy_runaway(mon, e_total))
         return 1;
     if (e_total > mon->e_ref)
         mon->e_ref = e_total;

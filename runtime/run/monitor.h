@@ -9,7 +9,17 @@
 /* Stability checks; returns 0 when the state is sane, otherwise fills msg. */
 typedef struct {
     double e_ref;     /* largest total energy seen (for runaway detection) */
+    /* how near the checks came to their limits, since this process started the run: */
+    long scans;       /* the checks that looked at every particle (sph_monitor_check) */
+    double j_min;     /* of those, the smallest det F (the limit: above 0), */
+    double speed;     /* the largest |v| / c0 (the limit: 10) */
+    long sums;        /* the checks that compared the energy, */
+    double growth;    /* and the largest ratio of the total energy to the largest before it
+                       * (the limit: 1e6; 0 while that was 0) */
 } sph_monitor;
+/* The limits of the checks (monitor.c): speed over c0, growth of the total energy. */
+#define SPH_MONITOR_SPEED 10.0
+#define SPH_MONITOR_GROWTH 1e6
 int sph_monitor_check(sph_monitor *mon, const sph_sim *s, char *msg, size_t len);
 /* 0 when every displacement, velocity and acceleration is finite, otherwise 1 with msg as
  * sph_monitor_check's (step, time, body, particle, what; the initial state, a collapsed step). */

@@ -1,7 +1,8 @@
 /* options.c — the command line of a generated program.
  *
  *   --out DIR  --threads N  --end T  --every T  --frames T  --checkpoint T  --restart FILE
- *   --overwrite  --quiet  --progress T  --profile  --partition N  --no-stencil  --whole-law
+ *   --overwrite  --quiet  --progress T  --summary T  --profile  --partition N  --no-stencil
+ *   --whole-law
  *   --help | -h
  *
  * Options with a value also accept the spelling --opt=value; each may be given once (a
@@ -17,7 +18,8 @@
 
 typedef enum {
     OPT_OUT, OPT_THREADS, OPT_END, OPT_EVERY, OPT_FRAMES, OPT_CHECKPOINT, OPT_RESTART,
-    OPT_OVERWRITE, OPT_QUIET, OPT_PROGRESS, OPT_PROFILE, OPT_PARTITION, OPT_NO_STENCIL, OPT_WHOLE_LAW, OPT_HELP,
+    OPT_OVERWRITE, OPT_QUIET, OPT_PROGRESS, OPT_SUMMARY, OPT_PROFILE, OPT_PARTITION,
+    OPT_NO_STENCIL, OPT_WHOLE_LAW, OPT_HELP,
     NOPT_IDS
 } opt_id;
 
@@ -32,6 +34,7 @@ static const opt_info OPTIONS[] = {
     {"--every", OPT_EVERY, 1}, {"--frames", OPT_FRAMES, 1},   {"--checkpoint", OPT_CHECKPOINT, 1},
     {"--restart", OPT_RESTART, 1}, {"--overwrite", OPT_OVERWRITE, 0},
     {"--quiet", OPT_QUIET, 0},     {"--progress", OPT_PROGRESS, 1},
+    {"--summary", OPT_SUMMARY, 1},
     {"--profile", OPT_PROFILE, 0}, {"--partition", OPT_PARTITION, 1},
     {"--no-stencil", OPT_NO_STENCIL, 0}, {"--whole-law", OPT_WHOLE_LAW, 0},
     {"--help", OPT_HELP, 0},       {"-h", OPT_HELP, 0},
@@ -70,6 +73,8 @@ static void usage(FILE *f, const char *prog, const char *model)
             "  --quiet       no progress lines\n"
             "  --progress T  a progress line every T seconds when the output is not a\n"
             "                terminal (a log; default 10, 0: none)\n"
+            "  --summary T   while running, write summary.json and summary.html again at\n"
+            "                an output at most every T seconds (default 5, 0: every output)\n"
             "  --profile     the time each pass of the step takes, printed at the end and\n"
             "                written to summary.json\n"
             "  --partition N  report how each body would be decomposed for N processes\n"
@@ -157,6 +162,7 @@ static int set_value(sph_options *o, opt_id id, const char *name, const char *va
     case OPT_FRAMES:  bad = parse_positive_double(value, &o->t_frames); break;
     case OPT_CHECKPOINT: bad = parse_positive_double(value, &o->t_checkpoint); break;
     case OPT_PROGRESS: bad = parse_double(value, &o->progress, 0, 1); break;
+    case OPT_SUMMARY: bad = parse_double(value, &o->summary, 0, 1); break;
     case OPT_RESTART:
         bad = value[0] == '\0';
         o->restart = value;
@@ -168,7 +174,7 @@ static int set_value(sph_options *o, opt_id id, const char *name, const char *va
     fprintf(stderr, "%s: error: invalid value '%s' for %s%s\n", prog, value, name,
             id == OPT_OUT || id == OPT_RESTART ? ""
             : id == OPT_THREADS                ? " (expected a positive integer)"
-            : id == OPT_PROGRESS               ? " (expected seconds, 0 or more)"
+            : id == OPT_PROGRESS || id == OPT_SUMMARY ? " (expected seconds, 0 or more)"
                                                : " (expected a positive number)");
     usage(stderr, prog, model);
     return -1;
@@ -229,7 +235,7 @@ int sph_parse_options(sph_options *o, const char *model_name, int argc, char **a
     const char *prog = program_name(argc, argv, model);
     *o = (sph_options){.out_dir = NULL, .threads = 0, .t_end = -1, .t_out = -1, .t_frames = -1,
                        .t_checkpoint = -1, .restart = NULL, .quiet = 0, .profile = 0,
-                       .overwrite = 0, .progress = 10};
+                       .overwrite = 0, .progress = 10, .summary = 5};
     const char *given[NOPT_IDS] = {NULL}; /* each option's value, once given */
     for (int i = 1; i < argc; i++) {
         const char *value;

@@ -18,6 +18,8 @@ typedef struct {
     int whole_law;        /* --whole-law: no fast path of the material laws */
     int overwrite;        /* --overwrite: replace the outputs of an earlier run in out_dir */
     double progress;      /* --progress T: a progress line every T s in a log (0: none) */
+    double summary;       /* --summary T: summary.json and .html again at an output at most
+                           * every T s of wall time while running (0: every output) */
 } sph_options;
 /* Parses argv; prints usage and returns -1 on a bad option (the caller exits 2);
  * returns 1 after printing --help, 0 otherwise. */

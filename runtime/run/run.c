@@ -445,7 +445,26 @@ static int write_particles(run_state *r)
     return s->par->agree(bad);
 }
 
-/* The mean time step over the output interval that ends now (none at the first output). */
+/* The share of the steps of the output interval that ends now each bound set (sim.c, or a
+ * device target's clock, counts them). */
+static void note_bounds(run_state *r)
+{
+    const sph_sim *s = &r->sim;
+    double row[1 + SPH_DT_NBOUNDS], counted = 0;
+    for (int k = 0; k < SPH_DT_NBOUNDS; k++)
+        counted += (double)(s->dt_bound_steps[k] - r->dt_bounds0[k]);
+    row[0] = s->t;
+    for (int k = 0; k < SPH_DT_NBOUNDS; k++) {
+        row[1 + k] = counted > 0 ? (double)(s->dt_bound_steps[k] - r->dt_bounds0[k]) / counted
+                                 : 0.0;
+        r->dt_bounds0[k] = s->dt_bound_steps[k];
+    }
+    if (counted > 0)
+        sph_csv_table_add(&r->dt_bounds, row, SPH_REPORT_POINTS);
+}
+
+/* The mean time step over the output interval that ends now (none at the first output), and
+ * what bounded it. */
 static void note_time_step(run_state *r)
 {
     const sph_sim *s = &r->sim;
@@ -453,6 +472,7 @@ static void note_time_step(run_state *r)
         const double row[2] = {s->t, (s->t - r->dt_t0) / (double)(s->step - r->dt_step0)};
         sph_csv_table_add(&r->time_steps, row, SPH_REPORT_POINTS); /* (thinned when long) */
     }
+    note_bounds(r);
     r->dt_t0 = s->t, r->dt_step0 = s->step;
 }
 
@@ -594,6 +614,45 @@ static void processes_summary(sph_json *j, const run_state *r, const double *x)
     sph_json_end_object(j);
 }
 
+/* What set the time steps since this process started the run: the steps each bound set,
+ * and each body's bounds (summary.json "time_step_bounds"). */
+static void bounds_summary(sph_json *j, const sph_sim *s)
+{
+    static const char *const names[SPH_DT_NBOUNDS] = SPH_DT_BOUND_NAMES;
+    long counted = 0;
+    for (int k = 0; k < SPH_DT_NBOUNDS; k++)
+        counted += s->dt_bound_steps[k];
+    sph_json_key_object(j, "time_step_bounds");
+    sph_json_int(j, "counted", counted);
+    sph_json_key_object(j, "bounds");
+    for (int k = 0; k < SPH_DT_NBOUNDS; k++)
+        sph_json_int(j, names[k], s->dt_bound_steps[k]);
+    sph_json_end_object(j);
+    sph_json_key_object(j, "bodies");
+    for (int i = 0; i < s->nbodies && s->dt_body_steps; i++)
+        sph_json_int(j, s->bodies[i].desc->name, s->dt_body_steps[i]);
+    sph_json_end_object(j);
+    if (s->dt_body >= 0 && counted > 0)
+        sph_json_str(j, "last_body", s->bodies[s->dt_body].desc->name);
+    if (counted > 0)
+        sph_json_str(j, "last", names[s->dt_bound]);
+    sph_json_end_object(j);
+}
+
+/* How near the monitor's checks came to their limits (summary.json stability.margins). */
+static void margins_summary(sph_json *j, const sph_monitor *mon)
+{
+    sph_json_key_object(j, "margins");
+    sph_json_int(j, "scans", mon->scans);
+    sph_json_num(j, "smallest_J", mon->scans ? mon->j_min : NAN);
+    sph_json_num(j, "largest_speed_over_c0", mon->scans ? mon->speed : NAN);
+    sph_json_num(j, "speed_limit", SPH_MONITOR_SPEED);
+    sph_json_int(j, "energy_checks", mon->sums);
+    sph_json_num(j, "largest_energy_growth", mon->sums ? mon->growth : NAN);
+    sph_json_num(j, "energy_growth_limit", SPH_MONITOR_GROWTH);
+    sph_json_end_object(j);
+}
+
 static int summary_file(run_state *r, const char *status, double wall, int *failed,
                         const body_stats *st, const double *procs)
 {
@@ -620,10 +679,12 @@ static int summary_file(run_state *r, const char *status, double wall, int *fail
         sph_json_int(&j, "step", r->step_resumed);
         sph_json_end_object(&j);
     }
+    bounds_summary(&j, s);
     if (!strcmp(status, "running")) {
         sph_json_num(&j, "end_time", r->t_end);
         const int bad = sph_json_close(&j);
-        return sph_run_report(r, status, NULL, NAN, NULL, 0) | bad;
+        const sph_run_outcome o = {status, NULL, NAN, NULL, 0, NULL, 0};
+        return sph_run_report(r, &o) | bad;
     }
     sph_json_num(&j, "wall_time", wall);
     sph_json_num(&j, "setup_time", r->setup_seconds);
@@ -653,6 +714,7 @@ static int summary_file(run_state *r, const char *status, double wall, int *fail
     sph_json_int(&j, "device_checks", r->device_checks);
     sph_json_num(&j, "smallest_stretch", r->stretch_seen);
     sph_json_num(&j, "largest_energy", r->mon.e_ref);
+    margins_summary(&j, &r->mon);
     sph_json_end_object(&j);
     sph_json_key_array(&j, "bodies");
     for (int i = 0; i < s->nbodies; i++)
@@ -674,9 +736,11 @@ static int summary_file(run_state *r, const char *status, double wall, int *fail
                                              sizeof r->errors, expects)
                        : 0;
     int bad = sph_json_close(&j);
-    bad |= sph_run_report(r, status, r->unstable[0] ? r->unstable
-                                     : !strcmp(status, "stopped") ? stop_name() : NULL,
-                          wall, expects, finished && expects ? r->m->nexpects : 0);
+    const sph_run_outcome o = {
+        status, r->unstable[0] ? r->unstable : !strcmp(status, "stopped") ? stop_name() : NULL,
+        wall, expects, finished && expects ? r->m->nexpects : 0, procs,
+        procs ? r->sim.par->size : 0};
+    bad |= sph_run_report(r, &o);
     free(expects);
     return bad;
 }
@@ -686,6 +750,7 @@ static int write_summary(run_state *r, const char *status, double wall, int *fai
 {
     const sph_par *par = r->sim.par;
     const int running = !strcmp(status, "running");
+    const double w0 = sph_wall_time();
     body_stats *st = calloc((size_t)r->sim.nbodies + 1, sizeof *st);
     for (int i = 0; st && !running && i < r->sim.nbodies; i++)
         body_stats_of(&r->sim.bodies[i], &st[i]);
@@ -699,7 +764,29 @@ static int write_summary(run_state *r, const char *status, double wall, int *fai
     if (failed)
         *failed = ok[1];
     free(st), free(procs);
+    r->summary_wall = sph_wall_time();
+    r->summary_cost = r->summary_wall - w0;
     return ok[0];
+}
+
+/* While running, summary.json and its page are written again at an output once --summary
+ * seconds of wall time have passed since they last were, and no sooner than SUMMARY_SHARE
+ * times as long as writing them took (a long run's page reads its CSV files back), or with
+ * --summary 0 at every output: a page opened during the run shows it up to a recent output.
+ * Process 0 decides for all (the writing is collective).  Not at the last output, which the
+ * end's summary follows. */
+enum { SUMMARY_SHARE = 50 };
+static int summary_due(run_state *r)
+{
+    const sph_par *par = r->sim.par;
+    const double every = r->opt.summary;
+    int due = 0;
+    if (par->rank == 0 && r->sim.t < r->t_end - 1e-9 * r->t_out)
+        due = every == 0 || sph_wall_time() - r->summary_wall >=
+                                fmax(every, SUMMARY_SHARE * r->summary_cost);
+    if (par->size > 1)
+        par->bcast(&due, sizeof due, 0);
+    return due;
 }
 
 /* ------------------------------------------------------------------ resuming */
@@ -878,6 +965,8 @@ static int time_loop(run_state *r)
                 return -1;
             r->next_out += r->t_out;
             if (sph_run_checkpoint_due(r) && sph_run_write_checkpoint(r))
+                return -1;
+            if (summary_due(r) && write_summary(r, "running", 0, NULL))
                 return -1;
             r->output_seconds += sph_wall_time() - w0;
         } else {
@@ -1065,6 +1154,11 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
     memset(&r, 0, sizeof r);
     static char *const time_step_names[] = {"time", "mean_dt"};
     r.time_steps = (sph_csv_table){.ncols = 2, .names = (char **)time_step_names};
+    static const char *const bounds[SPH_DT_NBOUNDS] = SPH_DT_BOUND_NAMES;
+    static char *bound_columns[1 + SPH_DT_NBOUNDS] = {"time"};
+    for (int k = 0; k < SPH_DT_NBOUNDS; k++)
+        bound_columns[1 + k] = (char *)bounds[k];
+    r.dt_bounds = (sph_csv_table){.ncols = 1 + SPH_DT_NBOUNDS, .names = bound_columns};
     r.dt_step0 = -1;
     r.m = m;
     r.sim.par = par;
@@ -1144,6 +1238,7 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
     }
     sph_sim_free(&r.sim);
     free(r.time_steps.v);
+    free(r.dt_bounds.v);
     if (r.opt.profile) {
         const sph_profile_times t = {r.setup_seconds, r.step_seconds, r.check_seconds,
                                      r.output_seconds};

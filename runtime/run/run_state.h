@@ -54,6 +54,12 @@ typedef struct {
     sph_csv_table time_steps;
     double dt_t0;
     long dt_step0;        /* -1: no output yet */
+    /* the share of each interval's steps each bound set (sim.dt_bound_steps over the
+     * interval; rows of time and SPH_DT_NBOUNDS shares), and the counts at its start */
+    sph_csv_table dt_bounds;
+    long dt_bounds0[SPH_DT_NBOUNDS];
+    double summary_wall;  /* process 0: when summary.json was last written while running, */
+    double summary_cost;  /* and how long writing it (and the page) took */
     char unstable[512];
     char errors[512];     /* the declared expectations' errors, for the final line */
 } run_state;
@@ -84,10 +90,21 @@ int sph_run_resume_files(const sph_ckpt *c, const run_state *r);
 /* After the outputs are opened: times, frames, series, timers. */
 int sph_run_resume(const sph_ckpt *c, run_state *r);
 
-/* run_report.c: summary.html in the output folder (process 0, with summary.json): the status
- * and message (where it went unstable, the signal; NULL: none), the wall time (NAN while
- * running), the expectations' results, the CSV files read back; 0, or -1 after reporting. */
-int sph_run_report(const run_state *r, const char *status, const char *message, double wall,
-                   const sph_report_expect *expects, int nexpects);
+/* How a run stands for its report page: the status and message (where it went unstable, the
+ * signal; NULL: none), the wall time (NAN while running), the expectations' results, and on
+ * many processes, each process's own particles, halo particles, bytes sent per step and
+ * seconds waited for the halo (4 numbers per process; NULL: none). */
+typedef struct {
+    const char *status, *message;
+    double wall;
+    const sph_report_expect *expects;
+    int nexpects;
+    const double *processes;
+    int nprocesses;
+} sph_run_outcome;
+
+/* run_report.c: summary.html in the output folder (process 0, with summary.json): how the run
+ * stands, the CSV files read back; 0, or -1 after reporting. */
+int sph_run_report(const run_state *r, const sph_run_outcome *o);
 
 #endif

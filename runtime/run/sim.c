@@ -49,6 +49,9 @@ int sph_sim_init_par(sph_sim *s, const sph_model *m, double t_end, int verbose,
     s->contact = NULL;
     s->nbodies = m->nbodies;
     s->bodies = calloc((size_t)m->nbodies, sizeof(sph_body));
+    s->dt_body_steps = calloc((size_t)m->nbodies + 1, sizeof *s->dt_body_steps);
+    for (int k = 0; k < SPH_DT_NBOUNDS; k++)
+        s->dt_bound_steps[k] = 0;
     for (int i = 0; i < m->nbodies; i++) {
         sph_body *b = &s->bodies[i];
         if (sph_body_setup(b, &m->bodies[i], m, t_end, par))
@@ -149,15 +152,32 @@ double sph_sim_stable_dt(sph_sim *s)
     double dt = INFINITY;
     s->dt_factor = 1.0;
     global_bounds(s);
+    s->dt_bound = SPH_DT_SPEED, s->dt_body = 0;
     for (int i = 0; i < s->nbodies; i++) {
         const sph_body *b = &s->bodies[i];
         const double f = sph_stretch_factor(m->dt_lambda_on, b->lam2 != NULL, b->lam2min);
         s->dt_factor = fmin(s->dt_factor, f);
-        dt = fmin(dt, sph_body_dt(f, b->h, b->c0, b->vmax2, b->amax2));
+        const double own = sph_body_dt(f, b->h, b->c0, b->vmax2, b->amax2);
+        if (own < dt) {
+            dt = own, s->dt_body = i;
+            s->dt_bound = (sph_dt_bound)sph_body_dt_bound(f, b->h, b->c0, b->vmax2, b->amax2);
+        }
     }
     /* the stiffest contact, where a pair is in contact or near it */
-    dt = fmin(dt, sph_contact_dt(s, sph_chosen_dt(m->dt_fixed, m->cfl, dt)));
+    const double contact = sph_contact_dt(s, sph_chosen_dt(m->dt_fixed, m->cfl, dt));
+    if (contact < dt)
+        dt = contact, s->dt_bound = SPH_DT_CONTACT, s->dt_body = -1;
+    if (m->dt_fixed > 0)
+        s->dt_bound = SPH_DT_FIXED, s->dt_body = -1;
     return sph_chosen_dt(m->dt_fixed, m->cfl, dt);
+}
+
+/* A step taken: counted under the bound that set its time step, and its body. */
+static void count_bound(sph_sim *s)
+{
+    s->dt_bound_steps[s->dt_bound]++;
+    if (s->dt_body >= 0 && s->dt_body_steps)
+        s->dt_body_steps[s->dt_body]++;
 }
 
 void sph_sim_step(sph_sim *s, double dt)
@@ -187,6 +207,7 @@ int sph_sim_advance(sph_sim *s, sph_advance *a)
             break;
         }
         sph_sim_step(s, sph_landing_dt(dt, a->t_stop - s->t)); /* land on output times */
+        count_bound(s);
     }
     return (int)(s->step - step0);
 }
@@ -197,6 +218,8 @@ void sph_sim_free(sph_sim *s)
     for (int i = 0; i < s->nbodies; i++)
         sph_body_free(&s->bodies[i]);
     free(s->bodies);
+    free(s->dt_body_steps);
     s->bodies = NULL;
+    s->dt_body_steps = NULL;
     s->nbodies = 0;
 }

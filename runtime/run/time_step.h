@@ -6,6 +6,7 @@
 #include <math.h>
 
 #include "core/defs.h"
+#include "scene/sim.h"
 
 SPH_C_BEGIN
 
@@ -44,6 +45,16 @@ SPH_HD static inline double sph_body_dt(double f, double h, double c0, double vm
     const double dtv = f * h / (c0 + sqrt(vmax2));                      /* eq. 65 */
     const double dta = amax2 > 0 ? sqrt(h / sqrt(amax2)) : INFINITY;   /* eq. 66 */
     return fmin(dtv, dta);
+}
+
+/* Which of a body's bounds sph_body_dt takes on the same numbers: eq. 66 where it is the
+ * smaller, otherwise eq. 65, as compression where the factor f cut it. */
+SPH_HD static inline int sph_body_dt_bound(double f, double h, double c0, double vmax2,
+                                           double amax2)
+{
+    const double dtv = f * h / (c0 + sqrt(vmax2));
+    const double dta = amax2 > 0 ? sqrt(h / sqrt(amax2)) : INFINITY;
+    return dta < dtv ? SPH_DT_ACCELERATION : f < 1 ? SPH_DT_COMPRESSION : SPH_DT_SPEED;
 }
 
 /* The time step from the bodies' and contacts' smallest bound: eq. 64, or the scene's fixed

@@ -91,6 +91,16 @@ if(NOT looks EQUAL outputs)
 endif()
 message(STATUS "${stem}: ${device_checks} of the monitor's ${checks} checks on the device")
 
+# What bounded the time steps: the device's clock counts them as the CPU's host does, step
+# for step (summary.json's time_step_bounds, the same object).
+file(READ ${WORKDIR}/cpu_out/summary.json cpu_summary)
+string(JSON cpu_bounds GET "${cpu_summary}" time_step_bounds)
+string(JSON device_bounds GET "${summary}" time_step_bounds)
+if(NOT cpu_bounds STREQUAL device_bounds)
+  message(FATAL_ERROR "the time step's bounds: ${cpu_bounds} on the CPU, ${device_bounds} "
+                      "counted by the device's clock")
+endif()
+
 # HOSTSTEP: the device's clock chooses the host's time steps to the bit.  The same model.cu
 # without its `advance` hook (the host chooses every time step from the sums it reads back
 # after each step, and waits for them) must write byte for byte the same files.

@@ -123,6 +123,11 @@ static void test_outputs(void)
     const char *defaults[] = {NULL};
     CHECK(parse(&o, defaults, out, err, sizeof out) == 0 && o.progress == 10,
           "progress 10 by default");
+    CHECK(o.summary == 5, "summary every 5 s by default, got %g", o.summary);
+    const char *every[] = {"--summary", "0", NULL};
+    CHECK(parse(&o, every, out, err, sizeof out) == 0 && o.summary == 0, "--summary 0");
+    const char *negative[] = {"--summary", "-1", NULL};
+    CHECK(parse(&o, negative, out, err, sizeof out) < 0, "--summary -1 refused");
 }
 
 static void test_equals_spelling(void)
