@@ -2,11 +2,12 @@
 """The cantilever beam's tip against its reference (docs/verification.md, "Cantilever beam").
 
 Builds tests/physics/beam2d_coarse.sph, the oscillating beam of cases/beam2d.sph at
-dx = 1 mm, runs it for a quarter of its period (``--end 0.3``: a whole one, about a minute on
-two cores), and prints the deflection of the tip plane against the plane-strain FE
-reference, 23.2 mm x sin(2 pi t / 0.2553 s), then the model's expectations as summary.json
-reports them (a run shorter than a period has no period to compare: that one fails).  With
-matplotlib it also plots both curves (``--plot FILE``).
+dx = 1 mm, runs it for a whole period (about a minute on two cores; ``--end 0.07``, a quarter
+of one, for a quick look), and prints the deflection of the tip plane against the
+plane-strain FE reference, 23.2 mm x sin(2 pi t / 0.2553 s), then the model's expectations
+(its period and amplitude against that reference) as summary.json reports them (a run
+shorter than a period has no period to compare: that one fails).  With matplotlib it also
+plots both curves (``--plot FILE``), the figure of the beam in docs/verification.md.
 
     PYTHONPATH=python python3 python/examples/beam_tip.py --sphc build/sphc
 """
@@ -30,7 +31,7 @@ def reference(t: float) -> float:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--end", type=float, default=0.07, help="end time [s] (default 0.07)")
+    parser.add_argument("--end", type=float, default=0.3, help="end time [s] (default 0.3)")
     parser.add_argument("--out", default="beam_tip_out", help="output folder")
     parser.add_argument("--sphc", help="the sphc compiler (default: $SPHC, else PATH)")
     parser.add_argument("--plot", default="beam_tip.png", help="the plot's file (matplotlib)")
@@ -56,7 +57,7 @@ def main() -> None:
           f"in {results.summary['wall_time']:.1f} s")
     if args.end < PERIOD:
         print("the model's expectations (a run shorter than a period cannot measure the "
-              "period and amplitude: --end 0.3 runs a whole one):")
+              "period and amplitude: the default --end 0.3 runs a whole one):")
     for x in results.summary.get("expectations", []):
         error = x.get("relative_error")
         shown = "none" if error is None else f"{100 * error:.2f} %"
