@@ -19,7 +19,7 @@ void emit_fracture_material(FILE *out, const BodyModel *b, const BodyPlan *p)
                  "double *psi, double *psip)\n{\n",
             b->name);
     fputs("    (void)F;\n    (void)s;\n", out);
-    emit_law_body(out, p, 1);
+    emit_law_body(out, b->name, p, 1);
     fputs("}\n\n", out);
 }
 

@@ -1,16 +1,43 @@
 /* emit_law.c — a body's material law in C: the statements of its folded scalar graph and its
- * outputs assigned to the generated function's arguments (lower/graph_print.h prints them). */
+ * outputs assigned to the generated function's arguments (lower/graph_print.h prints them),
+ * a large law in pieces. */
 #include "emit_law.h"
 #include "lower/graph_print.h"
 
-void emit_law_body(FILE *out, const BodyPlan *p, int degraded)
+/* The law's statements and outputs as the body of function NAME: whole, or calling its
+ * pieces. */
+static void print_law(FILE *out, const BodyPlan *p, const LawOutput *o, int no, const char *name)
 {
-    LawOutput o[LAW_MAX_OUTPUTS];
-    graph_print(&p->law, o, plan_law_outputs(p, degraded, o), 1, out);
+    if (graph_pieces(&p->law, o, no))
+        graph_print_pieced(&p->law, o, no, name, out);
+    else
+        graph_print(&p->law, o, no, 1, out);
 }
 
-void emit_law_fast_body(FILE *out, const BodyPlan *p)
+void emit_law_pieces(FILE *out, const char *B, const BodyPlan *p)
 {
+    char name[1100]; /* a name has at most 1024 characters */
     LawOutput o[LAW_MAX_OUTPUTS + 1];
-    graph_print(&p->law, o, plan_law_fast_outputs(p, o), 1, out);
+    snprintf(name, sizeof name, "%s_material", B);
+    graph_print_pieces(&p->law, o, plan_law_outputs(p, p->fracture, o), name, out);
+    if (!p->rare)
+        return;
+    snprintf(name, sizeof name, "%s_material_fast", B);
+    graph_print_pieces(&p->law, o, plan_law_fast_outputs(p, o), name, out);
+}
+
+void emit_law_body(FILE *out, const char *B, const BodyPlan *p, int degraded)
+{
+    char name[1100]; /* a name has at most 1024 characters */
+    LawOutput o[LAW_MAX_OUTPUTS];
+    snprintf(name, sizeof name, "%s_material", B);
+    print_law(out, p, o, plan_law_outputs(p, degraded, o), name);
+}
+
+void emit_law_fast_body(FILE *out, const char *B, const BodyPlan *p)
+{
+    char name[1100]; /* a name has at most 1024 characters */
+    LawOutput o[LAW_MAX_OUTPUTS + 1];
+    snprintf(name, sizeof name, "%s_material_fast", B);
+    print_law(out, p, o, plan_law_fast_outputs(p, o), name);
 }

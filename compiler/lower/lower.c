@@ -121,6 +121,22 @@ static int law_combinations(const Model *m, const BodyModel *b, const BodyPlan *
     return bad;
 }
 
+/* A law with more operations for body b than LAW_MAX_OPERATIONS: an error at the law's line,
+ * 1; 0 otherwise. */
+static int law_too_large(const BodyModel *b, const BodyPlan *p)
+{
+    LawOutput o[LAW_MAX_OUTPUTS];
+    int roots[PLAN_MAX_ROOTS];
+    const int nroots = plan_output_roots(o, plan_law_outputs(p, p->fracture, o), roots);
+    const int n = sg_operations(&p->law, roots, nroots);
+    if (n <= LAW_MAX_OPERATIONS)
+        return 0;
+    diag_error(b->law->loc, "material '%s' has %d operations for body '%s' (its stress and "
+               "energy, constants folded), more than the %d a material law may have",
+               b->law->name, n, b->name, LAW_MAX_OPERATIONS);
+    return 1;
+}
+
 int lower_model(const Model *m, Plan *plan)
 {
     int bad = 0;
@@ -160,7 +176,7 @@ int lower_model(const Model *m, Plan *plan)
                          "dp 1 mm, docs/verification.md); 'gradient linear' suits flow",
                          b->name, b->law->name);
         features(m, b, &p->roots, p);
-        if (built && law_combinations(m, b, p))
+        if (built && (law_combinations(m, b, p) || law_too_large(b, p)))
             bad = 1;
         if (p->rare && law_fast(&p->law, &p->roots, &p->fast, &p->fast_flag))
             p->rare = 0;

@@ -146,6 +146,11 @@ int plan_law_fast_outputs(const BodyPlan *p, LawOutput out[LAW_MAX_OUTPUTS + 1])
  * graph computing them is printed by graph_print.h.) */
 int plan_output_roots(const LawOutput *o, int no, int roots[PLAN_MAX_ROOTS]);
 
+/* The most operations a body's material function may have, constants folded (its outputs'
+ * sg_operations): the C compiler's time grows with it, linearly once the law is printed in
+ * pieces (graph_print.h); a larger law is an error at its line. */
+enum { LAW_MAX_OPERATIONS = 200000 };
+
 /* Print the plan (sphc --dump=plan): each body's features and its law's graph. */
 void plan_dump(const Plan *plan, FILE *out);
 
