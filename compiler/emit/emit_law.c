@@ -1,6 +1,7 @@
 /* emit_law.c — a body's material law in C: the statements of its folded scalar graph and its
  * outputs assigned to the generated function's arguments (lower/graph_print.h prints them),
  * a large law in pieces. */
+#include "emit.h"
 #include "emit_law.h"
 #include "lower/graph_print.h"
 
@@ -12,6 +13,17 @@ static void print_law(FILE *out, const BodyPlan *p, const LawOutput *o, int no, 
         graph_print_pieced(&p->law, o, no, name, out);
     else
         graph_print(&p->law, o, no, 1, out);
+}
+
+int emit_law_in_pieces(const Plan *plan)
+{
+    LawOutput o[LAW_MAX_OUTPUTS];
+    for (int i = 0; i < plan->nbodies; i++) {
+        const BodyPlan *p = &plan->bodies[i];
+        if (graph_pieces(&p->law, o, plan_law_outputs(p, p->fracture, o)))
+            return 1;
+    }
+    return 0;
 }
 
 void emit_law_pieces(FILE *out, const char *B, const BodyPlan *p)

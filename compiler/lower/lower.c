@@ -121,20 +121,28 @@ static int law_combinations(const Model *m, const BodyModel *b, const BodyPlan *
     return bad;
 }
 
-/* A law with more operations for body b than LAW_MAX_OPERATIONS: an error at the law's line,
- * 1; 0 otherwise. */
-static int law_too_large(const BodyModel *b, const BodyPlan *p)
+/* A law with more operations for body b than limit: an error at the law's line, 1; 0
+ * otherwise. */
+static int law_too_large(const BodyModel *b, const BodyPlan *p, int limit, const char *whose)
 {
     LawOutput o[LAW_MAX_OUTPUTS];
     int roots[PLAN_MAX_ROOTS];
     const int nroots = plan_output_roots(o, plan_law_outputs(p, p->fracture, o), roots);
     const int n = sg_operations(&p->law, roots, nroots);
-    if (n <= LAW_MAX_OPERATIONS)
+    if (n <= limit)
         return 0;
     diag_error(b->law->loc, "material '%s' has %d operations for body '%s' (its stress and "
-               "energy, constants folded), more than the %d a material law may have",
-               b->law->name, n, b->name, LAW_MAX_OPERATIONS);
+               "energy, constants folded), more than the %d a material law may have%s",
+               b->law->name, n, b->name, limit, whose);
     return 1;
+}
+
+int plan_laws_beyond(const Plan *plan, int limit, const char *whose)
+{
+    int beyond = 0;
+    for (int i = 0; i < plan->nbodies; i++)
+        beyond |= law_too_large(&plan->model->bodies[i], &plan->bodies[i], limit, whose);
+    return beyond;
 }
 
 int lower_model(const Model *m, Plan *plan)
@@ -176,7 +184,8 @@ int lower_model(const Model *m, Plan *plan)
                          "dp 1 mm, docs/verification.md); 'gradient linear' suits flow",
                          b->name, b->law->name);
         features(m, b, &p->roots, p);
-        if (built && (law_combinations(m, b, p) || law_too_large(b, p)))
+        if (built && (law_combinations(m, b, p) ||
+                      law_too_large(b, p, LAW_MAX_OPERATIONS, "")))
             bad = 1;
         if (p->rare && law_fast(&p->law, &p->roots, &p->fast, &p->fast_flag))
             p->rare = 0;

@@ -148,8 +148,12 @@ int plan_output_roots(const LawOutput *o, int no, int roots[PLAN_MAX_ROOTS]);
 
 /* The most operations a body's material function may have, constants folded (its outputs'
  * sg_operations): the C compiler's time grows with it, linearly once the law is printed in
- * pieces (graph_print.h); a larger law is an error at its line. */
-enum { LAW_MAX_OPERATIONS = 200000 };
+ * pieces (graph_print.h); a larger law is an error at its line.  nvcc takes some 3 ms an
+ * operation where gcc takes 0.15 ms: the CUDA target's limit is lower. */
+enum { LAW_MAX_OPERATIONS = 200000, LAW_MAX_OPERATIONS_CUDA = 16000 };
+/* Each body whose law has more than limit operations: an error at the law's line, the limit
+ * `whose` (" on the CUDA target", or ""); whether there was one. */
+int plan_laws_beyond(const Plan *plan, int limit, const char *whose);
 
 /* Print the plan (sphc --dump=plan): each body's features and its law's graph. */
 void plan_dump(const Plan *plan, FILE *out);
