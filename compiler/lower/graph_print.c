@@ -199,8 +199,8 @@ static int needed_nodes(const SGraph *g, const int *roots, int nroots, int parts
 
 /* `<indent>name[k] = <ref of ids[k]><end>` for k < n, one line each; `<indent>name = ...` for
  * n = -1 (one value, ids[0]). */
-static void print_output(const SGraph *g, const Pieces *P, const char *indent, const char *name, const int *ids,
-                         int n, const char *end, FILE *out)
+static void print_output(const SGraph *g, const Pieces *P, const char *indent, const char *name,
+                         const int *ids, int n, const char *end, FILE *out)
 {
     for (int k = 0; k < (n < 0 ? 1 : n); k++) {
         if (n < 0)
@@ -259,7 +259,8 @@ static void assign_pieces(const SGraph *g, Pieces *P)
         P->piece[P->ids[k]] = P->n - 1;
         ops++;
     }
-    int *start = calloc((size_t)P->n + 1, sizeof *start), *sorted = malloc((size_t)P->nids * sizeof *sorted);
+    int *start = calloc((size_t)P->n + 1, sizeof *start);
+    int *sorted = malloc((size_t)P->nids * sizeof *sorted);
     for (int k = 0; k < P->nids; k++)
         start[P->piece[P->ids[k]] + 1]++;
     for (int q = 0; q < P->n; q++)
@@ -301,7 +302,8 @@ static void take_slot(Pieces *P, int id, int *free_slots, int *nfree)
  * value's last piece (next: the values of each last piece, a list from head). */
 static void assign_slots(const SGraph *g, Pieces *P, const int *last)
 {
-    int *head = malloc((size_t)(P->n + 1) * sizeof *head), *next = malloc((size_t)(g->n + 1) * sizeof *next);
+    int *head = malloc((size_t)(P->n + 1) * sizeof *head);
+    int *next = malloc((size_t)(g->n + 1) * sizeof *next);
     int *free_slots = malloc((size_t)(g->n + 1) * sizeof *free_slots), nfree = 0, freed = 0;
     for (int q = 0; q <= P->n; q++)
         head[q] = -1;

@@ -14,13 +14,15 @@ static void closed_form(const double F[9], double lambda, double mu, double S[9]
     double E[9], EE = 0;
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
-            E[3 * i + j] = 0.5 * (F[i] * F[j] + F[3 + i] * F[3 + j] + F[6 + i] * F[6 + j] - (i == j));
+            E[3 * i + j] =
+                0.5 * (F[i] * F[j] + F[3 + i] * F[3 + j] + F[6 + i] * F[6 + j] - (i == j));
     for (int k = 0; k < 9; k++)
         EE += E[k] * E[k];
     const double t = E[0] + E[4] + E[8], a0 = 1 + t * t * t * t, q = pow(1.0001, 3000);
     *psi = 0.5 * lambda * t * t + mu * EE + mu * (pow(a0, q) - 1);
     for (int k = 0; k < 9; k++)
-        S[k] = 2 * mu * E[k] + (k % 4 == 0) * (lambda * t + 4 * mu * q * pow(a0, q - 1) * t * t * t);
+        S[k] = 2 * mu * E[k] +
+               (k % 4 == 0) * (lambda * t + 4 * mu * q * pow(a0, q - 1) * t * t * t);
 }
 
 int main(void)
