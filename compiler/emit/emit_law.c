@@ -5,11 +5,17 @@
 #include "emit_law.h"
 #include "lower/graph_print.h"
 
+/* Whether body p's law is printed in pieces. */
+static int in_pieces(const BodyPlan *p)
+{
+    return plan_law_operations(p) > GRAPH_WHOLE_OPS;
+}
+
 /* The law's statements and outputs as the body of function NAME: whole, or calling its
  * pieces. */
 static void print_law(FILE *out, const BodyPlan *p, const LawOutput *o, int no, const char *name)
 {
-    if (graph_pieces(&p->law, o, no))
+    if (in_pieces(p))
         graph_print_pieced(&p->law, o, no, name, out);
     else
         graph_print(&p->law, o, no, 1, out);
@@ -17,12 +23,9 @@ static void print_law(FILE *out, const BodyPlan *p, const LawOutput *o, int no, 
 
 int emit_law_in_pieces(const Plan *plan)
 {
-    LawOutput o[LAW_MAX_OUTPUTS];
-    for (int i = 0; i < plan->nbodies; i++) {
-        const BodyPlan *p = &plan->bodies[i];
-        if (graph_pieces(&p->law, o, plan_law_outputs(p, p->fracture, o)))
+    for (int i = 0; i < plan->nbodies; i++)
+        if (in_pieces(&plan->bodies[i]))
             return 1;
-    }
     return 0;
 }
 
@@ -30,6 +33,8 @@ void emit_law_pieces(FILE *out, const char *B, const BodyPlan *p)
 {
     char name[1100]; /* a name has at most 1024 characters */
     LawOutput o[LAW_MAX_OUTPUTS + 1];
+    if (!in_pieces(p))
+        return;
     snprintf(name, sizeof name, "%s_material", B);
     graph_print_pieces(&p->law, o, plan_law_outputs(p, p->fracture, o), name, out);
     if (!p->rare)

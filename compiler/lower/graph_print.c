@@ -329,14 +329,12 @@ static void assign_slots(const SGraph *g, Pieces *P, const int *last)
     free(head);
 }
 
-/* The pieces of the graph's outputs o, or 0 where they are printed whole. */
-static int plan_pieces(const SGraph *g, const LawOutput *o, int no, Pieces *P)
+/* The pieces of the graph's outputs o. */
+static void plan_pieces(const SGraph *g, const LawOutput *o, int no, Pieces *P)
 {
     int roots[PLAN_MAX_ROOTS];
     const int nroots = plan_output_roots(o, no, roots);
     memset(P, 0, sizeof *P);
-    if (sg_operations(g, roots, nroots) <= GRAPH_WHOLE_OPS)
-        return 0;
     P->ids = malloc((size_t)(g->n + 1) * sizeof *P->ids);
     P->piece = malloc((size_t)(g->n + 1) * sizeof *P->piece);
     P->slot = malloc((size_t)(g->n + 1) * sizeof *P->slot);
@@ -347,7 +345,6 @@ static int plan_pieces(const SGraph *g, const LawOutput *o, int no, Pieces *P)
     int *last = last_uses(g, P, roots, nroots);
     assign_slots(g, P, last);
     free(last);
-    return P->n;
 }
 
 static void free_pieces(Pieces *P)
@@ -355,14 +352,6 @@ static void free_pieces(Pieces *P)
     free(P->ids);
     free(P->piece);
     free(P->slot);
-}
-
-int graph_pieces(const SGraph *g, const LawOutput *o, int no)
-{
-    Pieces P;
-    const int n = plan_pieces(g, o, no, &P);
-    free_pieces(&P);
-    return n;
 }
 
 void graph_print_pieces(const SGraph *g, const LawOutput *o, int no, const char *name, FILE *out)

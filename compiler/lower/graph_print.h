@@ -13,13 +13,12 @@
  * or as the dump shows it, `label[k] = tN`. */
 void graph_print(const SGraph *g, const LawOutput *o, int no, int as_c, FILE *out);
 
-/* A law of more than GRAPH_WHOLE_OPS operations is printed in pieces of GRAPH_PIECE_OPS: the
- * time the C compiler takes for one function grows with the square of its size (its register
- * allocation over the values live across it), for the pieces linearly with the law. */
+/* A law of more than GRAPH_WHOLE_OPS operations (plan_law_operations) is printed in pieces of
+ * GRAPH_PIECE_OPS: the time the C compiler takes for one function grows with the square of its
+ * size (its register allocation over the values live across it), for the pieces linearly with
+ * the law.  The standard library's largest law, ogden in 3D, has 9772. */
 enum { GRAPH_WHOLE_OPS = 10000, GRAPH_PIECE_OPS = 200 };
 
-/* The pieces graph_print_pieces prints for outputs o[0 .. no-1]; 0: the law is printed whole. */
-int graph_pieces(const SGraph *g, const LawOutput *o, int no);
 /* The pieces as C functions `SPH_PIECE void NAME_pieceK(double *v)`, K from 1, before function
  * NAME: each piece's statements, those a later piece reads stored in v. */
 void graph_print_pieces(const SGraph *g, const LawOutput *o, int no, const char *name, FILE *out);

@@ -121,18 +121,31 @@ static int law_combinations(const Model *m, const BodyModel *b, const BodyPlan *
     return bad;
 }
 
+/* The operations of outputs o[0 .. no-1] of body p's law. */
+static int outputs_operations(const BodyPlan *p, const LawOutput *o, int no)
+{
+    int roots[PLAN_MAX_ROOTS];
+    return sg_operations(&p->law, roots, plan_output_roots(o, no, roots));
+}
+
+int plan_law_operations(const BodyPlan *p)
+{
+    LawOutput o[LAW_MAX_OUTPUTS + 1];
+    int n = outputs_operations(p, o, plan_law_outputs(p, p->fracture, o));
+    if (p->rare)
+        n += outputs_operations(p, o, plan_law_fast_outputs(p, o));
+    return n;
+}
+
 /* A law with more operations for body b than limit: an error at the law's line, 1; 0
  * otherwise. */
 static int law_too_large(const BodyModel *b, const BodyPlan *p, int limit, const char *whose)
 {
-    LawOutput o[LAW_MAX_OUTPUTS];
-    int roots[PLAN_MAX_ROOTS];
-    const int nroots = plan_output_roots(o, plan_law_outputs(p, p->fracture, o), roots);
-    const int n = sg_operations(&p->law, roots, nroots);
+    const int n = plan_law_operations(p);
     if (n <= limit)
         return 0;
-    diag_error(b->law->loc, "material '%s' has %d operations for body '%s' (its stress and "
-               "energy, constants folded), more than the %d a material law may have%s",
+    diag_error(b->law->loc, "material '%s' has %d operations for body '%s' (its material "
+               "functions, constants folded), more than the %d a material law may have%s",
                b->law->name, n, b->name, limit, whose);
     return 1;
 }
@@ -184,11 +197,12 @@ int lower_model(const Model *m, Plan *plan)
                          "dp 1 mm, docs/verification.md); 'gradient linear' suits flow",
                          b->name, b->law->name);
         features(m, b, &p->roots, p);
-        if (built && (law_combinations(m, b, p) ||
-                      law_too_large(b, p, LAW_MAX_OPERATIONS, "")))
+        if (built && law_combinations(m, b, p))
             bad = 1;
         if (p->rare && law_fast(&p->law, &p->roots, &p->fast, &p->fast_flag))
             p->rare = 0;
+        if (built && law_too_large(b, p, LAW_MAX_OPERATIONS, ""))
+            bad = 1;
         numbers(m, b, p);
         plan->fracture |= p->fracture;
     }

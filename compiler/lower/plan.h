@@ -146,8 +146,11 @@ int plan_law_fast_outputs(const BodyPlan *p, LawOutput out[LAW_MAX_OUTPUTS + 1])
  * graph computing them is printed by graph_print.h.) */
 int plan_output_roots(const LawOutput *o, int no, int roots[PLAN_MAX_ROOTS]);
 
-/* The most operations a body's material function may have, constants folded (its outputs'
- * sg_operations): the C compiler's time grows with it, linearly once the law is printed in
+/* The operations of body p's material functions, constants folded (their outputs'
+ * sg_operations): its law's, and its fast path's where it has one. */
+int plan_law_operations(const BodyPlan *p);
+/* The most operations a body's material functions may have (plan_law_operations): the C
+ * compiler's time grows with it, linearly once the law is printed in
  * pieces (graph_print.h); a larger law is an error at its line.  nvcc takes some 3 ms an
  * operation where gcc takes 0.15 ms: the CUDA target's limit is lower. */
 enum { LAW_MAX_OPERATIONS = 200000, LAW_MAX_OPERATIONS_CUDA = 16000 };
