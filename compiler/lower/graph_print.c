@@ -26,16 +26,20 @@ typedef struct {
     int *ids, nids; /* the nodes the outputs need, by piece */
 } Pieces;
 
-/* A value another piece computed (or an input, which the function copies in): its place in v. */
-static int in_v(const Pieces *P, int id)
+/* Whether a reference to node id reads v: a value another piece computed, or in a piece, an
+ * input the function copied in (after the pieces, an input is read where it is: its place in
+ * v may hold another value by then). */
+static int in_v(const SGraph *g, const Pieces *P, int id)
 {
-    return P && P->slot[id] >= 0 && P->piece[id] != P->cur;
+    if (!P || P->slot[id] < 0 || P->piece[id] == P->cur)
+        return 0;
+    return !is_leaf(&g->nodes[id]) || (P->cur >= 0 && P->cur < P->n);
 }
 
 static void print_ref(const SGraph *g, const Pieces *P, int id, FILE *out)
 {
     const SNode *s = &g->nodes[id];
-    if (in_v(P, id)) {
+    if (in_v(g, P, id)) {
         fprintf(out, "v[%d]", P->slot[id]);
     } else if (s->op == SN_CONST) {
         if (s->v < 0)
