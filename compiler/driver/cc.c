@@ -275,7 +275,7 @@ static int compile_cuda(const Plan *plan, const Options *o, const char *src, con
     argv[n++] = arch;
     /* a law in pieces: each device function compiled on its own (ptxas's time over a whole
      * program grows faster than its functions' number: 3000 chained lets, 390 s, 53 s so) */
-    if (emit_law_in_pieces(plan))
+    if (emit_law_in_pieces(plan, TARGET_CUDA))
         argv[n++] = "-rdc=true";
     argv[n++] = "-Xcompiler";
     argv[n++] = "-fopenmp,-Wall,-Wextra";

@@ -5,35 +5,37 @@
 #include "emit_law.h"
 #include "lower/graph_print.h"
 
-/* Whether body p's law is printed in pieces. */
-static int in_pieces(const BodyPlan *p)
+/* Whether body p's law is printed in pieces (for the CUDA target, with its calls weighed). */
+static int in_pieces(const BodyPlan *p, int cuda)
 {
-    return plan_law_operations(p) > GRAPH_WHOLE_OPS;
+    const int calls = cuda ? (GRAPH_CUDA_CALL_OPS - 1) * plan_law_calls(p) : 0;
+    return plan_law_operations(p) + calls > GRAPH_WHOLE_OPS;
 }
 
 /* The law's statements and outputs as the body of function NAME: whole, or calling its
  * pieces. */
-static void print_law(FILE *out, const BodyPlan *p, const LawOutput *o, int no, const char *name)
+static void print_law(FILE *out, const BodyPlan *p, int cuda, const LawOutput *o, int no,
+                      const char *name)
 {
-    if (in_pieces(p))
+    if (in_pieces(p, cuda))
         graph_print_pieced(&p->law, o, no, name, out);
     else
         graph_print(&p->law, o, no, 1, out);
 }
 
-int emit_law_in_pieces(const Plan *plan)
+int emit_law_in_pieces(const Plan *plan, Target t)
 {
     for (int i = 0; i < plan->nbodies; i++)
-        if (in_pieces(&plan->bodies[i]))
+        if (in_pieces(&plan->bodies[i], t == TARGET_CUDA))
             return 1;
     return 0;
 }
 
-void emit_law_pieces(FILE *out, const char *B, const BodyPlan *p)
+void emit_law_pieces(FILE *out, const char *B, const BodyPlan *p, int cuda)
 {
     char name[1100]; /* a name has at most 1024 characters */
     LawOutput o[LAW_MAX_OUTPUTS + 1];
-    if (!in_pieces(p))
+    if (!in_pieces(p, cuda))
         return;
     snprintf(name, sizeof name, "%s_material", B);
     graph_print_pieces(&p->law, o, plan_law_outputs(p, p->fracture, o), name, out);
@@ -43,18 +45,18 @@ void emit_law_pieces(FILE *out, const char *B, const BodyPlan *p)
     graph_print_pieces(&p->law, o, plan_law_fast_outputs(p, o), name, out);
 }
 
-void emit_law_body(FILE *out, const char *B, const BodyPlan *p, int degraded)
+void emit_law_body(FILE *out, const char *B, const BodyPlan *p, int cuda, int degraded)
 {
     char name[1100]; /* a name has at most 1024 characters */
     LawOutput o[LAW_MAX_OUTPUTS];
     snprintf(name, sizeof name, "%s_material", B);
-    print_law(out, p, o, plan_law_outputs(p, degraded, o), name);
+    print_law(out, p, cuda, o, plan_law_outputs(p, degraded, o), name);
 }
 
-void emit_law_fast_body(FILE *out, const char *B, const BodyPlan *p)
+void emit_law_fast_body(FILE *out, const char *B, const BodyPlan *p, int cuda)
 {
     char name[1100]; /* a name has at most 1024 characters */
     LawOutput o[LAW_MAX_OUTPUTS + 1];
     snprintf(name, sizeof name, "%s_material_fast", B);
-    print_law(out, p, o, plan_law_fast_outputs(p, o), name);
+    print_law(out, p, cuda, o, plan_law_fast_outputs(p, o), name);
 }

@@ -137,6 +137,30 @@ int plan_law_operations(const BodyPlan *p)
     return n;
 }
 
+/* The calls (pow and the built-in functions: exp, sqrt, ...) among the operations of outputs
+ * o[0 .. no-1] of body p's law. */
+static int outputs_calls(const BodyPlan *p, const LawOutput *o, int no)
+{
+    int roots[PLAN_MAX_ROOTS];
+    const int nroots = plan_output_roots(o, no, roots);
+    char *live = calloc((size_t)p->law.n + 1, 1);
+    sg_mark_live(&p->law, roots, nroots, live);
+    int calls = 0;
+    for (int id = 0; id < p->law.n; id++)
+        calls += live[id] && (p->law.nodes[id].op == SN_POW || p->law.nodes[id].op == SN_CALL);
+    free(live);
+    return calls;
+}
+
+int plan_law_calls(const BodyPlan *p)
+{
+    LawOutput o[LAW_MAX_OUTPUTS + 1];
+    int n = outputs_calls(p, o, plan_law_outputs(p, p->fracture, o));
+    if (p->rare)
+        n += outputs_calls(p, o, plan_law_fast_outputs(p, o));
+    return n;
+}
+
 /* A law with more operations for body b than limit: an error at the law's line, 1; 0
  * otherwise. */
 static int law_too_large(const BodyModel *b, const BodyPlan *p, int limit, const char *whose)

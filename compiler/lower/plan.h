@@ -149,6 +149,8 @@ int plan_output_roots(const LawOutput *o, int no, int roots[PLAN_MAX_ROOTS]);
 /* The operations of body p's material functions, constants folded (their outputs'
  * sg_operations): its law's, and its fast path's where it has one. */
 int plan_law_operations(const BodyPlan *p);
+/* How many of them are calls: pow and the built-in functions (exp, sqrt, ...). */
+int plan_law_calls(const BodyPlan *p);
 /* The most operations a body's material functions may have (plan_law_operations): the C
  * compiler's time grows with it, linearly once the law is printed in
  * pieces (graph_print.h); a larger law is an error at its line.  nvcc takes some 3 ms an
