@@ -5,11 +5,12 @@
 #include "emit_law.h"
 #include "lower/graph_print.h"
 
-/* Whether body p's law is printed in pieces (for the CUDA target, with its calls weighed). */
+/* Whether body p's law is printed in pieces: its operations, each call weighed as the target's
+ * compiler finds it (lower/graph_print.h), more than GRAPH_WHOLE_OPS. */
 static int in_pieces(const BodyPlan *p, int cuda)
 {
-    const int calls = cuda ? (GRAPH_CUDA_CALL_OPS - 1) * plan_law_calls(p) : 0;
-    return plan_law_operations(p) + calls > GRAPH_WHOLE_OPS;
+    const int weight = cuda ? GRAPH_CUDA_CALL_OPS : GRAPH_CALL_OPS;
+    return plan_law_operations(p) + (weight - 1) * plan_law_calls(p) > GRAPH_WHOLE_OPS;
 }
 
 /* The law's statements and outputs as the body of function NAME: whole, or calling its

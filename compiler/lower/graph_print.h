@@ -18,10 +18,12 @@ void graph_print(const SGraph *g, const LawOutput *o, int no, int as_c, FILE *ou
  * size (its register allocation over the values live across it), for the pieces linearly with
  * the law.  The standard library's largest law, ogden in 3D, has 9772. */
 enum { GRAPH_WHOLE_OPS = 10000, GRAPH_PIECE_OPS = 200 };
-/* For the CUDA target a call (pow, exp, ...; plan_law_calls) counts as this many operations:
- * nvcc writes each one's code out in place (some 85 PTX instructions a pow), and a function of
- * many takes it minutes (1000 chained lets whole, 2000 pows: more than 3 minutes). */
-enum { GRAPH_CUDA_CALL_OPS = 20 };
+/* A call (pow, exp, ...; plan_law_calls) counts as this many operations: on the CPU every
+ * value live across it is spilled around it (the register allocation of 2450 chained lets,
+ * 4900 pows among 9840 operations, took gcc 42 s); nvcc writes each one's code out in place
+ * (some 85 PTX instructions a pow), and a function of many takes it minutes (1000 chained lets
+ * whole, 2000 pows: more than 3 minutes). */
+enum { GRAPH_CALL_OPS = 4, GRAPH_CUDA_CALL_OPS = 20 };
 
 /* The pieces as C functions `SPH_PIECE void NAME_pieceK(double *v)`, K from 1, before function
  * NAME: each piece's statements, those a later piece reads stored in v. */
