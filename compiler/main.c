@@ -89,6 +89,11 @@ int main(int argc, char **argv)
                 * parameters is an error of the model */
     if (lower_model(&m, &plan))
         return 1;
+    if (o.target == TARGET_CUDA &&
+        plan_laws_beyond(&plan, LAW_MAX_OPERATIONS_CUDA, " on the CUDA target")) {
+        plan_free(&plan);
+        return 1;
+    }
     if (o.dump) {
         plan_dump(&plan, stdout);
         return 0;

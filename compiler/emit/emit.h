@@ -20,5 +20,7 @@ const char *target_name(Target t);
 /* Write the whole generated program for target t, for many processes (MPI) when mpi is set;
  * templates_dir holds the templates.  Returns 0, or -1 after reporting. */
 int emit_program(const Plan *plan, Target t, int mpi, const char *templates_dir, FILE *out);
+/* Whether a body's material law is printed in pieces for target t (lower/graph_print.h). */
+int emit_law_in_pieces(const Plan *plan, Target t);
 
 #endif

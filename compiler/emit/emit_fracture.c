@@ -10,7 +10,7 @@
 
 /* static inline void B_material(F, s, S, psi, psip): S = s^2 S+ + S- (eq. 18), psi = s^2 psi+
  * + psi- (eq. 7), and psi+ itself for the history field (eq. 8). */
-void emit_fracture_material(FILE *out, const BodyModel *b, const BodyPlan *p)
+void emit_fracture_material(FILE *out, const BodyModel *b, const BodyPlan *p, int cuda)
 {
     fprintf(out, ".\n * In: deformation gradient F (3x3), phase field s. Out: degraded second "
                  "Piola-Kirchhoff stress\n * S = s^2 S+ + S- (eq. 18), degraded strain energy "
@@ -19,7 +19,7 @@ void emit_fracture_material(FILE *out, const BodyModel *b, const BodyPlan *p)
                  "double *psi, double *psip)\n{\n",
             b->name);
     fputs("    (void)F;\n    (void)s;\n", out);
-    emit_law_body(out, p, 1);
+    emit_law_body(out, b->name, p, cuda, 1);
     fputs("}\n\n", out);
 }
 

@@ -85,12 +85,15 @@ static const char *extra_inputs(const BodyPlan *p)
 void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
 {
     FILE *out = E->out;
-    fprintf(out, "/* ==== body %s ==== */\n\n/* Material law '%s' (%s:%d), constants folded:",
-            b->name, b->law->name, source_basename(b->law->loc.file), b->law->loc.line);
+    fprintf(out, "/* ==== body %s ==== */\n\n", b->name);
+    const int cuda = E->target == emit_target(TARGET_CUDA);
+    emit_law_pieces(out, b->name, p, cuda);
+    fprintf(out, "/* Material law '%s' (%s:%d), constants folded:",
+            b->law->name, source_basename(b->law->loc.file), b->law->loc.line);
     for (int k = 0; k < b->law->nparams; k++)
         fprintf(out, " %s = %g", b->law->params[k], b->law_args[k]);
     if (p->fracture) {
-        emit_fracture_material(out, b, p);
+        emit_fracture_material(out, b, p, cuda);
         return;
     }
     const LawRoots *r = &p->roots;
@@ -117,7 +120,7 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
         fputs("    (void)dt;\n", out);
     if (p->law_fdot)
         fputs("    (void)Fd;\n", out);
-    emit_law_body(out, p, 0);
+    emit_law_body(out, b->name, p, cuda, 0);
     fputs("}\n\n", out);
     if (!p->rare)
         return;
@@ -132,6 +135,6 @@ void emit_material(Emitter *E, const BodyModel *b, const BodyPlan *p)
     fputs(p->law_dt ? "    (void)F;\n    (void)dt;\n    (void)st;\n" : "    (void)F;\n    (void)st;\n", out);
     if (p->law_fdot)
         fputs("    (void)Fd;\n", out);
-    emit_law_fast_body(out, p);
+    emit_law_fast_body(out, b->name, p, cuda);
     fputs("}\n\n", out);
 }

@@ -121,6 +121,67 @@ static int law_combinations(const Model *m, const BodyModel *b, const BodyPlan *
     return bad;
 }
 
+/* The operations of outputs o[0 .. no-1] of body p's law. */
+static int outputs_operations(const BodyPlan *p, const LawOutput *o, int no)
+{
+    int roots[PLAN_MAX_ROOTS];
+    return sg_operations(&p->law, roots, plan_output_roots(o, no, roots));
+}
+
+int plan_law_operations(const BodyPlan *p)
+{
+    LawOutput o[LAW_MAX_OUTPUTS + 1];
+    int n = outputs_operations(p, o, plan_law_outputs(p, p->fracture, o));
+    if (p->rare)
+        n += outputs_operations(p, o, plan_law_fast_outputs(p, o));
+    return n;
+}
+
+/* The calls (pow and the built-in functions: exp, sqrt, ...) among the operations of outputs
+ * o[0 .. no-1] of body p's law. */
+static int outputs_calls(const BodyPlan *p, const LawOutput *o, int no)
+{
+    int roots[PLAN_MAX_ROOTS];
+    const int nroots = plan_output_roots(o, no, roots);
+    char *live = calloc((size_t)p->law.n + 1, 1);
+    sg_mark_live(&p->law, roots, nroots, live);
+    int calls = 0;
+    for (int id = 0; id < p->law.n; id++)
+        calls += live[id] && (p->law.nodes[id].op == SN_POW || p->law.nodes[id].op == SN_CALL);
+    free(live);
+    return calls;
+}
+
+int plan_law_calls(const BodyPlan *p)
+{
+    LawOutput o[LAW_MAX_OUTPUTS + 1];
+    int n = outputs_calls(p, o, plan_law_outputs(p, p->fracture, o));
+    if (p->rare)
+        n += outputs_calls(p, o, plan_law_fast_outputs(p, o));
+    return n;
+}
+
+/* A law with more operations for body b than limit: an error at the law's line, 1; 0
+ * otherwise. */
+static int law_too_large(const BodyModel *b, const BodyPlan *p, int limit, const char *whose)
+{
+    const int n = plan_law_operations(p);
+    if (n <= limit)
+        return 0;
+    diag_error(b->law->loc, "material '%s' has %d operations for body '%s' (its material "
+               "functions, constants folded), more than the %d a material law may have%s",
+               b->law->name, n, b->name, limit, whose);
+    return 1;
+}
+
+int plan_laws_beyond(const Plan *plan, int limit, const char *whose)
+{
+    int beyond = 0;
+    for (int i = 0; i < plan->nbodies; i++)
+        beyond |= law_too_large(&plan->model->bodies[i], &plan->bodies[i], limit, whose);
+    return beyond;
+}
+
 int lower_model(const Model *m, Plan *plan)
 {
     int bad = 0;
@@ -164,6 +225,8 @@ int lower_model(const Model *m, Plan *plan)
             bad = 1;
         if (p->rare && law_fast(&p->law, &p->roots, &p->fast, &p->fast_flag))
             p->rare = 0;
+        if (built && law_too_large(b, p, LAW_MAX_OPERATIONS, ""))
+            bad = 1;
         numbers(m, b, p);
         plan->fracture |= p->fracture;
     }

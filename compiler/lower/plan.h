@@ -146,6 +146,20 @@ int plan_law_fast_outputs(const BodyPlan *p, LawOutput out[LAW_MAX_OUTPUTS + 1])
  * graph computing them is printed by graph_print.h.) */
 int plan_output_roots(const LawOutput *o, int no, int roots[PLAN_MAX_ROOTS]);
 
+/* The operations of body p's material functions, constants folded (their outputs'
+ * sg_operations): its law's, and its fast path's where it has one. */
+int plan_law_operations(const BodyPlan *p);
+/* How many of them are calls: pow and the built-in functions (exp, sqrt, ...). */
+int plan_law_calls(const BodyPlan *p);
+/* The most operations a body's material functions may have (plan_law_operations): the C
+ * compiler's time grows with it, linearly once the law is printed in
+ * pieces (graph_print.h); a larger law is an error at its line.  nvcc takes some 3 ms an
+ * operation where gcc takes 0.15 ms: the CUDA target's limit is lower. */
+enum { LAW_MAX_OPERATIONS = 200000, LAW_MAX_OPERATIONS_CUDA = 16000 };
+/* Each body whose law has more than limit operations: an error at the law's line, the limit
+ * `whose` (" on the CUDA target", or ""); whether there was one. */
+int plan_laws_beyond(const Plan *plan, int limit, const char *whose);
+
 /* Print the plan (sphc --dump=plan): each body's features and its law's graph. */
 void plan_dump(const Plan *plan, FILE *out);
 

@@ -1,8 +1,9 @@
 /* defs.h — what every part of the runtime and generated code share before anything else: the
- * markers of functions that run on the device too (SPH_HD, SPH_FN) or are inlined into the
- * CPU's stress pass (SPH_FLAT), loops without dependences (SPH_IVDEP), C linkage for the
- * CUDA target's C++ (SPH_C_BEGIN, SPH_C_END), the vector math library's forms, and the
- * smallest helpers: a compact vector's axis, the model language's max and min. */
+ * markers of functions that run on the device too (SPH_HD, SPH_FN), are inlined into the
+ * CPU's stress pass (SPH_FLAT) or never inlined (SPH_PIECE), loops without dependences
+ * (SPH_IVDEP), C linkage for the CUDA target's C++ (SPH_C_BEGIN, SPH_C_END), the vector
+ * math library's forms, and the smallest helpers: a compact vector's axis, the model
+ * language's max and min. */
 #ifndef SPHRT_CORE_DEFS_H
 #define SPHRT_CORE_DEFS_H
 
@@ -33,6 +34,16 @@
 #define SPH_FLAT SPH_FN
 #else
 #define SPH_FLAT static inline __attribute__((always_inline))
+#endif
+/* SPH_PIECE marks the pieces of a large material law (more operations than sphc prints as one
+ * function): each compiled once, called from the law's function, never inlined into it, and
+ * by GCC at -O1, which takes half the time of -O3 on such straight-line code. */
+#ifdef __CUDACC__
+#define SPH_PIECE SPH_HD static __noinline__
+#elif defined(__clang__) || !defined(__GNUC__)
+#define SPH_PIECE static __attribute__((noinline))
+#else
+#define SPH_PIECE static __attribute__((noinline, optimize("O1")))
 #endif
 /* SPH_IVDEP, before a loop: no iteration depends on another (GCC's ivdep, Clang's
  * assume_safety), so the compiler need not prove that the arrays it touches never overlap. */
