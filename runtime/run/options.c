@@ -19,7 +19,7 @@
 typedef enum {
     OPT_OUT, OPT_THREADS, OPT_END, OPT_EVERY, OPT_FRAMES, OPT_CHECKPOINT, OPT_RESTART,
     OPT_OVERWRITE, OPT_QUIET, OPT_PROGRESS, OPT_SUMMARY, OPT_PROFILE, OPT_PARTITION,
-    OPT_NO_STENCIL, OPT_WHOLE_LAW, OPT_HELP,
+    OPT_NO_STENCIL, OPT_WHOLE_LAW, OPT_FIXED_THREADS, OPT_HELP,
     NOPT_IDS
 } opt_id;
 
@@ -37,6 +37,7 @@ static const opt_info OPTIONS[] = {
     {"--summary", OPT_SUMMARY, 1},
     {"--profile", OPT_PROFILE, 0}, {"--partition", OPT_PARTITION, 1},
     {"--no-stencil", OPT_NO_STENCIL, 0}, {"--whole-law", OPT_WHOLE_LAW, 0},
+    {"--fixed-threads", OPT_FIXED_THREADS, 0},
     {"--help", OPT_HELP, 0},       {"-h", OPT_HELP, 0},
 };
 #define NOPTIONS (int)(sizeof OPTIONS / sizeof OPTIONS[0])
@@ -57,8 +58,10 @@ static void usage(FILE *f, const char *prog, const char *model)
             "\n"
             "options:\n"
             "  --out DIR     output folder (default: %s_out)\n"
-            "  --threads N   number of OpenMP threads, at most 4 per core (default:\n"
-            "                OpenMP's count, fewer while other programs hold the cores)\n"
+            "  --threads N   the most OpenMP threads the steps run on, at most 4 per core\n"
+            "                (default: OpenMP's count); fewer while other programs hold\n"
+            "                the cores, and said at the end\n"
+            "  --fixed-threads  the thread count throughout, never fewer (a benchmark's)\n"
             "  --end T       end time in seconds (default: the model's)\n"
             "  --every T     output interval in seconds (default: the model's)\n"
             "  --frames T    interval of the particle files (default: every output; the\n"
@@ -256,6 +259,8 @@ int sph_parse_options(sph_options *o, const char *model_name, int argc, char **a
                 o->overwrite = 1;
             else if (opt->id == OPT_NO_STENCIL)
                 o->no_stencil = 1;
+            else if (opt->id == OPT_FIXED_THREADS)
+                o->fixed_threads = 1;
             else if (opt->id == OPT_WHOLE_LAW)
                 o->whole_law = 1;
             else

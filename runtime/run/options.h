@@ -5,7 +5,8 @@
 /* Command-line options of a generated program. */
 typedef struct {
     const char *out_dir;  /* --out DIR (default "<model>_out") */
-    int threads;          /* --threads N (0 = OpenMP default) */
+    int threads;          /* --threads N (0 = OpenMP default): the most the steps run on */
+    int fixed_threads;    /* --fixed-threads: that count throughout, never fewer */
     int partition;        /* --partition N: report the decomposition and exit (0: run) */
     double t_end;         /* --end T   (< 0: model's) */
     double t_out;         /* --every T (< 0: model's) */

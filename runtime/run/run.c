@@ -1033,6 +1033,20 @@ static void stretch_hint(const run_state *r)
              "auto`, bounds it by the current one (docs/stability.md)", lam);
 }
 
+/* After a run given --threads N whose steps ran on fewer threads for a while (the machine
+ * busy with other work: par/team.h): said, with the mean count. */
+static void threads_hint(const run_state *r)
+{
+    const sph_team *t = &r->team;
+    const double mean = t->step_seconds > 0 ? t->thread_seconds / t->step_seconds : t->now;
+    if (r->opt.threads <= 0 || t->fixed || t->changes == 0 || r->sim.par->rank != 0 ||
+        !(mean < t->max - 0.05))
+        return;
+    sph_note("--threads %d: the steps ran on %.2f threads on average (%d last), fewer while "
+             "other programs held the cores; --fixed-threads keeps the count", t->max, mean,
+             t->now);
+}
+
 /* The output and frame times are reached by adding the interval: beyond some 10^9 intervals
  * to the end (an interval below the spacing of doubles near t, at worst) the run would never
  * get there, stepping or writing outputs forever.  The model's own end and output interval
@@ -1170,10 +1184,10 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
     set_threads(&r);
     if (r.opt.partition > 0) /* a report, no run (docs/mpi.md) */
         return sph_partition_report(m, r.opt.partition) ? SPH_EXIT_SETUP : 0;
-    /* fewer threads while the machine is busy, unless told how many (a device target's
-     * host threads only copy and check) */
+    /* fewer threads while the machine is busy, --threads N the most (a device target's host
+     * threads only copy and check; processes of one run keep theirs: --fixed-threads too) */
     sph_team_init(&r.team, omp_get_max_threads(),
-                  r.opt.threads > 0 || m->advance || par->size > 1);
+                  r.opt.fixed_threads || m->advance || par->size > 1);
     sph_profile_on = r.opt.profile;
     sph_profile_phase = SPH_PHASE_SETUP;
     sph_stencil_off = r.opt.no_stencil;
@@ -1265,6 +1279,7 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
         stretch_hint(&r);
         return SPH_EXIT_UNSTABLE;
     }
+    threads_hint(&r);
     if (!r.opt.quiet)
         printf("%s: %ld particles, %ld steps to t = %g s in %.2f s (%.1f ns per particle-step)"
                "%s%s\n%s: ParaView: %s/particles/%s.pvd ; energies and measurements in %s/\n",

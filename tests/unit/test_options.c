@@ -69,6 +69,7 @@ static void test_defaults(void)
           o.out_dir ? o.out_dir : "(null)");
     CHECK(o.threads == 0 && o.t_end == -1 && o.t_out == -1 && o.t_frames == -1 && o.quiet == 0,
           "other defaults");
+    CHECK(o.fixed_threads == 0, "the thread count a maximum by default");
     CHECK(out[0] == '\0' && err[0] == '\0', "nothing printed");
 }
 
@@ -85,6 +86,9 @@ static void test_separate_values(void)
     CHECK(o.t_out == 1e-3, "t_out 1e-3");
     CHECK(o.t_frames == 0.1, "t_frames 0.1");
     CHECK(o.quiet == 1, "quiet");
+    const char *fixed[] = {"--threads", "2", "--fixed-threads", NULL};
+    CHECK(parse(&o, fixed, out, err, sizeof out) == 0 && o.threads == 2 && o.fixed_threads == 1,
+          "--fixed-threads (stderr: %s)", err);
 }
 
 static void test_checkpoints(void)
