@@ -77,11 +77,10 @@ static sph_pair_law make_law(const sph_model *m, const sph_body *A, const sph_bo
     return L;
 }
 
-void sph_contact_init(sph_sim *s)
+/* The contact state of scene s (pair laws, search), not built yet. */
+static sph_contact *contact_new(const sph_sim *s)
 {
-    if (!s->m->contact || s->contact)
-        return;
-    sph_contact *c = s->contact = calloc(1, sizeof *c);
+    sph_contact *c = calloc(1, sizeof *c);
     const int nb = s->nbodies;
     c->dim = s->m->dim;
     c->nbodies = nb;
@@ -112,6 +111,13 @@ void sph_contact_init(sph_sim *s)
                               .dc = c->dc, .skin = skin};
     c->level = 0.5 * skin;
     c->close = c->level; /* before the first step's pairs: as if touching */
+    return c;
+}
+
+void sph_contact_init(sph_sim *s)
+{
+    if (s->m->contact && !s->contact)
+        s->contact = contact_new(s);
 }
 
 /* Current positions and velocities of every own particle into c->x, c->v. */
@@ -373,11 +379,8 @@ double sph_contact_w2max(const sph_sim *s)
     return s->contact ? s->contact->w2max : 0;
 }
 
-void sph_contact_free(sph_sim *s)
+static void contact_free(sph_contact *c)
 {
-    sph_contact *c = s->contact;
-    if (!c)
-        return;
     sph_csearch_free(&c->search);
     free(c->base);
     free(c->body);
@@ -387,5 +390,99 @@ void sph_contact_free(sph_sim *s)
     free(c->v);
     free(c->part);
     free(c);
+}
+
+void sph_contact_free(sph_sim *s)
+{
+    if (s->contact)
+        contact_free(s->contact);
     s->contact = NULL;
+}
+
+/* What the pairs of two bodies closer than their contact distance hold: pairs (each counted
+ * from both sides), of them coincident, the deepest overlap over d_c, their stored energy. */
+typedef struct {
+    double pairs, coincident, deepest, stored;
+} overlap;
+
+/* Body pair (A, B)'s overlaps among the candidates of contact c, A's own particles' side. */
+static void overlaps_of(const sph_contact *c, overlap *o)
+{
+    const sph_csearch *q = &c->search;
+    const int D = c->dim, nb = c->nbodies;
+    for (int a = 0; a < q->nactive; a++) {
+        const int gi = q->active[a];
+        if (gi >= c->nown)
+            continue; /* (a partner of another process: that one counts its side) */
+        for (int p = q->start[gi]; p < q->start[gi + 1]; p++) {
+            const int gj = q->nb[p], k = c->body[gi] * nb + c->body[gj];
+            double r2 = 0, f[3], power = 0, w2 = 0, close = 0;
+            for (int d = 0; d < D; d++) {
+                const double x = c->x[(size_t)gi * D + d] - c->x[(size_t)gj * D + d];
+                r2 += x * x;
+            }
+            const double dc = c->law[k].dc, r = sqrt(r2);
+            if (!(r < dc * (1 - 1e-9)))
+                continue; /* (apart, or touching up to the round-off of their positions) */
+            o[k].pairs += 1;
+            o[k].coincident += r <= 1e-9 * dc;
+            o[k].deepest = fmax(o[k].deepest, (dc - r) / dc);
+            sph_contact_pair(&c->law[k], D, c->x + (size_t)gi * D, c->x + (size_t)gj * D,
+                             c->v + (size_t)gi * D, c->v + (size_t)gj * D, 1.0, c->level, f,
+                             &o[k].stored, &power, &w2, &close);
+        }
+    }
+}
+
+/* Particles of two bodies that overlap in the configuration the run starts from (a
+ * collective call on many processes, before the first step of a run not resumed): a warning
+ * for each pair of bodies, and the energy their contacts store from the start, where
+ * energies.csv's first row counts it.  The candidates are found by a contact state of their
+ * own, so that the run's are built at its first contact pass as before. */
+void sph_contact_overlaps(sph_sim *s)
+{
+    if (!s->m->contact || s->nbodies < 2)
+        return;
+    sph_contact_init(s);
+    sph_contact *c = contact_new(s);
+    gather(c, s);
+    if (s->par->size > 1)
+        add_partners(c, s);
+    sph_csearch_build_at(&c->search, c->x);
+    const int nb = c->nbodies;
+    overlap *o = calloc((size_t)nb * nb, sizeof *o);
+    overlaps_of(c, o);
+    double total = 0, stored = 0; /* (this process's share of the stored energy) */
+    for (int k = 0; k < nb * nb; k++) {
+        double all[4] = {o[k].pairs, o[k].coincident, o[k].stored, 0};
+        stored += o[k].stored;
+        s->par->sum(all, 3);
+        double deepest = o[k].deepest;
+        s->par->max(&deepest, 1);
+        o[k].pairs = all[0], o[k].coincident = all[1], o[k].deepest = deepest;
+        o[k].stored = all[2];
+        total += all[0];
+    }
+    for (int a = 0; a < nb && s->par->rank == 0; a++)
+        for (int b = a + 1; b < nb; b++) {
+            const overlap *x = &o[a * nb + b], *y = &o[b * nb + a];
+            if (x->pairs + y->pairs == 0)
+                continue;
+            char coincident[160] = "";
+            if (x->coincident + y->coincident > 0)
+                snprintf(coincident, sizeof coincident, ", %.0f of them coincident (no force "
+                         "acts between them: they pass through each other)",
+                         0.5 * (x->coincident + y->coincident));
+            sph_warning("bodies '%s' and '%s' overlap at the start: %.0f pairs of their "
+                        "particles are closer than the contact distance %g m, the deepest by "
+                        "%.3g of it%s; the contact pushes them apart from the first step, and "
+                        "energies.csv's contact column holds the %g J it stores at the start",
+                        s->bodies[a].desc->name, s->bodies[b].desc->name,
+                        0.5 * (x->pairs + y->pairs), c->law[a * nb + b].dc,
+                        fmax(x->deepest, y->deepest), coincident, x->stored + y->stored);
+        }
+    free(o);
+    contact_free(c);
+    if (total > 0)
+        s->contact->stored = stored; /* (this process's share, as a contact pass leaves it) */
 }

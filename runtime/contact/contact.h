@@ -29,6 +29,10 @@ double sph_contact_w2max(const sph_sim *s);
 /* Frees the contact state (sph_sim_free calls it). */
 void sph_contact_free(sph_sim *s);
 
+/* Particles of two bodies closer than their contact distance where the run starts (before
+ * its first step; collective on many processes): a warning for each pair of bodies, and
+ * their contacts' stored energy at the start in the contact's sums (energies.csv). */
+void sph_contact_overlaps(sph_sim *s);
 /* The contact state of a scene with contact (pair laws, search); idempotent. */
 void sph_contact_init(sph_sim *s);
 /* For checkpoints: 1 with the contact's sums (stored, dissipated, the largest

@@ -1224,6 +1224,7 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
             return SPH_EXIT_SETUP;
     } else {
         sync_host(&r);
+        sph_contact_overlaps(&r.sim); /* (bodies placed into each other: said, and their energy) */
         if (initial_state_bad(&r) || par->agree(open_outputs(&r)) ||
             write_summary(&r, "running", 0, NULL))
             return SPH_EXIT_SETUP;
