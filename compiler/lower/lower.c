@@ -128,13 +128,20 @@ static int outputs_operations(const BodyPlan *p, const LawOutput *o, int no)
     return sg_operations(&p->law, roots, plan_output_roots(o, no, roots));
 }
 
-int plan_law_operations(const BodyPlan *p)
+/* count over body p's law: its material function's outputs, and its fast path's where it has
+ * one. */
+static int over_law(const BodyPlan *p, int (*count)(const BodyPlan *, const LawOutput *, int))
 {
     LawOutput o[LAW_MAX_OUTPUTS + 1];
-    int n = outputs_operations(p, o, plan_law_outputs(p, p->fracture, o));
+    int n = count(p, o, plan_law_outputs(p, p->fracture, o));
     if (p->rare)
-        n += outputs_operations(p, o, plan_law_fast_outputs(p, o));
+        n += count(p, o, plan_law_fast_outputs(p, o));
     return n;
+}
+
+int plan_law_operations(const BodyPlan *p)
+{
+    return over_law(p, outputs_operations);
 }
 
 /* The calls (pow and the built-in functions: exp, sqrt, ...) among the operations of outputs
@@ -154,11 +161,7 @@ static int outputs_calls(const BodyPlan *p, const LawOutput *o, int no)
 
 int plan_law_calls(const BodyPlan *p)
 {
-    LawOutput o[LAW_MAX_OUTPUTS + 1];
-    int n = outputs_calls(p, o, plan_law_outputs(p, p->fracture, o));
-    if (p->rare)
-        n += outputs_calls(p, o, plan_law_fast_outputs(p, o));
-    return n;
+    return over_law(p, outputs_calls);
 }
 
 /* A law with more operations for body b than limit: an error at the law's line, 1; 0
