@@ -1,6 +1,7 @@
 /* emit_functions.c — the generated program's functions that both targets compile for the
  * host and the device (SPH_FN): the model's constants and user functions, and each body's
  * material law from its folded scalar graph. */
+#include <stdlib.h>
 #include <string.h>
 
 #include "emit_fracture.h"
@@ -9,50 +10,82 @@
 #include "emit_quote.h"
 #include "util/source.h"
 
-static int names(const Expr *e, const char *name)
+/* Whether expression e names `name`: as a variable (kind EX_NAME) or as a function it
+ * calls (EX_CALL). */
+static int names(const Expr *e, ExprKind kind, const char *name)
 {
-    if (e->kind == EX_NAME && !strcmp(e->name, name))
+    if (e->kind == kind && !strcmp(e->name, name))
         return 1;
     for (int i = 0; i < e->nargs; i++)
-        if (names(e->args[i], name))
+        if (names(e->args[i], kind, name))
             return 1;
     return 0;
 }
 
+/* Whether an expression the program evaluates at run time names `name` (names): a boundary
+ * condition's value, a phase field's bound, a reference solution.  The others (shapes,
+ * settings, the material laws) were folded into numbers or law graphs by the compiler. */
+static int run_time_names(const Model *m, ExprKind kind, const char *name)
+{
+    for (int i = 0; i < m->nbodies; i++) {
+        const BodyModel *b = &m->bodies[i];
+        for (int k = 0; k < b->nbcs; k++)
+            if (b->bcs[k].comps && names(b->bcs[k].value, kind, name))
+                return 1;
+        if (b->fracture.restrict_expr && names(b->fracture.restrict_expr, kind, name))
+            return 1;
+    }
+    for (int i = 0; i < m->nexpects; i++)
+        if (m->expects[i].reference && names(m->expects[i].reference, kind, name))
+            return 1;
+    return 0;
+}
+
+/* used[i]: whether user function i is called at run time, by a run-time expression or by a
+ * function that is (a function only a material law calls is in the law's graph). */
+static void fns_used(const Model *m, char *used)
+{
+    for (int i = 0; i < m->nfns; i++)
+        used[i] = (char)run_time_names(m, EX_CALL, m->fns[i].name);
+    for (int changed = 1; changed;) {
+        changed = 0;
+        for (int i = 0; i < m->nfns; i++)
+            for (int j = 0; j < m->nfns && !used[i]; j++)
+                if (used[j] && names(m->fns[j].body, EX_CALL, m->fns[i].name))
+                    used[i] = changed = 1;
+    }
+}
+
 /* Whether constant `name` appears in an expression the program evaluates at run time (the
  * others were folded into numbers by the compiler and need no C constant). */
-static int const_used(const Model *m, const char *name)
+static int const_used(const Model *m, const char *used, const char *name)
 {
     for (int i = 0; i < m->nfns; i++) {
         int shadowed = 0;
         for (int k = 0; k < m->fns[i].nparams; k++)
             shadowed |= !strcmp(m->fns[i].params[k], name);
-        if (!shadowed && names(m->fns[i].body, name))
+        if (used[i] && !shadowed && names(m->fns[i].body, EX_NAME, name))
             return 1;
     }
-    for (int i = 0; i < m->nbodies; i++) {
-        const BodyModel *b = &m->bodies[i];
-        for (int k = 0; k < b->nbcs; k++)
-            if (b->bcs[k].comps && names(b->bcs[k].value, name))
-                return 1;
-        if (b->fracture.restrict_expr && names(b->fracture.restrict_expr, name))
-            return 1;
-    }
-    for (int i = 0; i < m->nexpects; i++)
-        if (m->expects[i].reference && names(m->expects[i].reference, name))
-            return 1;
-    return 0;
+    return run_time_names(m, EX_NAME, name);
 }
 
 void emit_consts_fns(Emitter *E)
 {
     const Model *m = E->m;
+    char *used = calloc((size_t)m->nfns + 1, 1);
+    fns_used(m, used);
+    int any = 0;
     for (int i = 0; i < m->nconsts; i++)
-        if (const_used(m, m->consts[i].name))
+        if (const_used(m, used, m->consts[i].name)) {
             fprintf(E->out, "static const double k_%s = %.17g; /* %s:%d */\n", m->consts[i].name,
                 m->consts[i].value, source_basename(m->consts[i].loc.file), m->consts[i].loc.line);
+            any = 1;
+        }
     for (int i = 0; i < m->nfns; i++) {
         const FnDef *f = &m->fns[i];
+        if (!used[i])
+            continue;
         fprintf(E->out, "\n/* %s:%d: %s */\nSPH_FN double f_%s(", source_basename(f->loc.file),
                 f->loc.line, emit_line_of(f->loc), f->name);
         for (int k = 0; k < f->nparams; k++)
@@ -63,8 +96,10 @@ void emit_consts_fns(Emitter *E)
         EmitScope s = {m, f->params, f->nparams, "a_"};
         emit_expr(E->out, &s, f->body);
         fputs(";\n}\n", E->out);
+        any = 1;
     }
-    if (m->nconsts || m->nfns)
+    free(used);
+    if (any)
         fputs("\n", E->out);
 }
 
