@@ -87,6 +87,7 @@ int main(int argc, char **argv)
 
     Plan plan; /* --check lowers too: a law that folds to a non-finite value with a body's
                 * parameters is an error of the model */
+    m.no_simd = o.no_simd;
     if (lower_model(&m, &plan))
         return 1;
     if (o.target == TARGET_CUDA &&

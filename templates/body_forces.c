@@ -427,8 +427,7 @@ static void @B@_stress_block(sph_body *b, int i0, int m)
     enum { NS = @NSTATE@ };
     double *restrict stb = b->state + (size_t)i0 * NS;
 //@endif
-//@if DIM3
-//@else
+//@if STENCIL
     @B@_stencil_gradient(b, i0, i0 + m); /* (the run particles' A and Laplacian) */
 //@endif
     for (int q = 0; q < m; q++) {
@@ -517,8 +516,7 @@ static void @B@_stress_pass(sph_body *b)
 #pragma omp parallel for schedule(static)
     for (int i0 = 0; i0 < n; i0 += @B@_BLOCK) {
         const int i1 = n - i0 < @B@_BLOCK ? n : i0 + @B@_BLOCK;
-//@if DIM3
-//@else
+//@if STENCIL
         @B@_stencil_gradient(b, i0, i1); /* (the run particles' A and Laplacian) */
 //@endif
 SPH_IVDEP /* particle i reads and writes entry i of arrays that never overlap */

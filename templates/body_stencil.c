@@ -1,3 +1,4 @@
+//@if STENCIL
 /* ---- body @B@: the pair passes on the lattice stencil's runs ------------------------------
  * Particles of a run (runtime/pairs/stencil.c; 2D bodies) have their neighbours at i + o and
  * i - o for the stencil's offsets o, at the same table entries: a pair sum over them is a
@@ -12,8 +13,6 @@
  * precision one particle at a time.  A step of crack branching took 0.62 of its time with
  * the lists, the flyer plates' 0.75, the beam's 0.61 (docs/architecture.md). */
 
-//@if DIM3
-//@else
 /* A_i of particle i of a run: the pair (i, i + o) adds (u_{i+o} - u_i) (x) w to A_i and the
  * pair (i - o, i) adds (u_i - u_{i-o}) (x) w, so A_i is the sum over the offsets of
  * (u_{i+o} - u_{i-o}) (x) w.

@@ -322,6 +322,10 @@ static int compile_c(const Plan *plan, const Options *o, const char *src, const 
                                         "-Wextra",          NULL};
     for (const char *const *f = flags; *f; f++)
         argv[n++] = (char *)*f;
+    if (o->no_simd) { /* scalar code: no loop vectorised, no statements packed into vectors */
+        argv[n++] = "-fno-tree-vectorize";
+        argv[n++] = "-fno-tree-slp-vectorize";
+    }
     argv[n++] = (char *)inc;
     argv[n++] = (char *)src;
     if (o->mpi) { /* lib is DIR/libsphrt.a (build_program) */

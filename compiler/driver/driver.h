@@ -16,6 +16,7 @@ typedef struct {
     Target target;         /* --target cpu | cuda */
     const char *cuda_arch; /* --cuda-arch: nvcc's -arch (NULL: native with a GPU, else sm_90) */
     int mpi;               /* --mpi: a program for many processes (docs/mpi.md) */
+    int no_simd;           /* --no-simd: a CPU program without vectors across particles */
     const char *emit_dir;  /* --emit-c */
     const char *dump;      /* ast | model | plan */
     int check_only;

@@ -25,6 +25,9 @@ static void usage(FILE *f)
           "                   present, else sm_90)\n"
           "  --mpi            build for many processes (MPI): mpirun -np N ./model runs the model\n"
           "                   on N processes; without mpirun it runs as one (docs/mpi.md)\n"
+          "  --no-simd        a CPU program of scalar code: no pair pass by the lattice\n"
+          "                   stencil or offset blocks, no loop over particles vectorised (to\n"
+          "                   compare with the vector code; docs/performance.md)\n"
           "  --emit-c DIR     keep the generated C source in DIR\n"
           "  --dump=STAGE     print the syntax tree, checked model or kernel plan and stop\n"
           "  --emit-only      with --emit-c: write the C source without compiling it\n"
@@ -114,6 +117,8 @@ int parse_options(int argc, char **argv, Options *o)
             o->cuda_arch = a + 12;
         } else if (!strcmp(a, "--mpi")) {
             o->mpi = 1;
+        } else if (!strcmp(a, "--no-simd")) {
+            o->no_simd = 1;
         } else if (!strcmp(a, "--emit-c") && i + 1 < argc) {
             o->emit_dir = argv[++i];
         } else if (!strncmp(a, "--emit-c=", 9)) {
@@ -147,6 +152,11 @@ int parse_options(int argc, char **argv, Options *o)
     }
     if (target_named(target, &o->target)) {
         diag_fatal_noloc("unknown target '%s' (expected cpu or cuda)", target);
+        return -1;
+    }
+    if (o->no_simd && o->target == TARGET_CUDA) {
+        diag_fatal_noloc("--no-simd is for the cpu target (a CUDA device runs its threads in "
+                         "warps whatever the code)");
         return -1;
     }
     if (o->emit_only && !o->emit_dir) {

@@ -102,7 +102,7 @@ static int body_fillings(const Emitter *E, const BodyPlan *p, Filling out[3])
     }
     if (p->viscosity)
         out[n++] = (Filling){real, 0, 0, 1};
-    if (E->m->dim == 2)
+    if (p->stencil)
         out[n++] = (Filling){&LANES_V8, 0, 0, p->viscosity && p->stencil_momentum};
     else if (p->offset_blocks || p->momentum_blocks)
         out[n++] = (Filling){&LANES_V8, p->offset_blocks, p->momentum_blocks, 0};

@@ -313,7 +313,7 @@ void emit_model_desc(Emitter *E)
             "    .dtmin_coef = %.17g,\n    .dt_fixed = %.17g,\n    .t_end = %.17g,\n"
             "    .t_out = %.17g,\n%s    .gravity = {%.17g, %.17g, %.17g},\n"
             "    .bodies = BODIES,\n    .nbodies = %d,\n    .expects = %s,\n    .nexpects = %d,\n"
-            "    .compat_outputs = %d,\n%s%s"
+            "    .compat_outputs = %d,\n%s%s%s"
             "    .velocity_bcs = model_velocity_bcs,\n    .step = model_step,\n"
             "    .stress_output = model_stress_output,\n%s};\n\n"
             "int main(int argc, char **argv)\n{\n    return %s(&MODEL, argc, argv);\n}\n",
@@ -324,5 +324,6 @@ void emit_model_desc(Emitter *E)
             m->nexpects ? "EXPECTS" : "NULL", m->nexpects, m->compat_outputs,
             lambda_on,
             model_has_contact(m) ? "    .contact = &CONTACT,\n" : "",
+            m->no_simd ? "    .scalar = 1, /* sphc --no-simd: the pair passes on the lists */\n" : "",
             E->target->desc_members, main_entry(E));
 }

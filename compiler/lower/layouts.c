@@ -37,8 +37,13 @@ static const char *pair_terms(const BodyPlan *p)
 /* (so does the velocity's gradient of a law that reads Fdot, Cdot or Edot) */
 #define FDOT "its law reads a rate (the velocity's gradient rides with the lists' pairs)"
 
+/* (sphc --no-simd: the lists' scalar loops alone) */
+#define NO_SIMD "--no-simd"
+
 const char *layout_gradient_blocks_refused(const Model *m, const BodyPlan *p)
 {
+    if (m->no_simd)
+        return NO_SIMD;
     if (m->dim != 3)
         return "2D (the lattice stencil serves 2D)";
     if (p->fracture)
@@ -50,6 +55,8 @@ const char *layout_gradient_blocks_refused(const Model *m, const BodyPlan *p)
 
 const char *layout_momentum_blocks_refused(const Model *m, const BodyPlan *p)
 {
+    if (m->no_simd)
+        return NO_SIMD;
     if (m->dim != 3)
         return "2D (the lattice stencil serves 2D)";
     if (p->fracture)
@@ -63,6 +70,8 @@ const char *layout_momentum_blocks_refused(const Model *m, const BodyPlan *p)
 
 const char *layout_stencil_momentum_refused(const Model *m, const BodyPlan *p)
 {
+    if (m->no_simd)
+        return NO_SIMD;
     if (m->dim != 2)
         return "3D";
     if (p->quadratic)
@@ -87,8 +96,9 @@ static void line(FILE *out, const char *pass, const char *layout, const char *wh
 void layouts_dump(const Model *m, const BodyPlan *p, FILE *out)
 {
     if (m->dim == 2) {
-        if (p->quadratic || p->law_fdot)
-            line(out, "gradient", "half lists", p->quadratic ? QUADRATIC : FDOT);
+        if (m->no_simd || p->quadratic || p->law_fdot)
+            line(out, "gradient", "half lists",
+                 m->no_simd ? NO_SIMD : p->quadratic ? QUADRATIC : FDOT);
         else
             line(out, "gradient", STENCIL, NULL);
         const char *why = layout_stencil_momentum_refused(m, p);

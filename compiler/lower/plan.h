@@ -41,6 +41,8 @@
     X(pair_v, NULL, PAIR_V, /* pairs read v of a neighbour */                                 \
       p->viscosity || p->pair_terms || p->law_fdot)                                            \
     X(dim3, NULL, DIM3, m->dim == 3) /* else 2D (plane strain) */                               \
+    X(simd, NULL, SIMD, !m->no_simd) /* loops over particles vectorised (not --no-simd) */      \
+    X(stencil, NULL, STENCIL, m->dim == 2 && !m->no_simd) /* 2D: the lattice stencil's code */ \
     X(staged, NULL, STAGED, stress_staged(m, r, &p->law)) /* the CPU's stress pass by blocks */ \
     X(rare, NULL, RARE, p->staged && !p->fracture && r->nrare > 0) /* and its law's fast path */ \
     X(stencil_momentum, NULL, STENCIL_MOMENTUM, /* the CPU's 2D momentum pass by the stencil */ \

@@ -167,6 +167,7 @@ typedef struct {
     ExpectModel *expects;
     int nexpects;
     int compat_outputs;   /* also write SoliDualSPHysics' output files (imported cases) */
+    int no_simd;          /* sphc --no-simd: scalar CPU code (lower/layouts.c, the update) */
     double contact;       /* contact stiffness multiplier (1); 0: bodies pass through each other */
 } Model;
 

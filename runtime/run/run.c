@@ -1190,7 +1190,7 @@ int sph_main_par(const sph_model *m, int argc, char **argv, const sph_par *par)
                   r.opt.fixed_threads || m->advance || par->size > 1);
     sph_profile_on = r.opt.profile;
     sph_profile_phase = SPH_PHASE_SETUP;
-    sph_stencil_off = r.opt.no_stencil;
+    sph_stencil_off = r.opt.no_stencil || m->scalar;
     sph_fast_law_off = r.opt.whole_law;
     r.t_end = r.opt.t_end > 0 ? r.opt.t_end : m->t_end;
     r.t_out = r.opt.t_out > 0 ? r.opt.t_out : m->t_out;

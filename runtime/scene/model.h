@@ -70,6 +70,9 @@ typedef struct {
      * 0 `undeformed` (never: eq. 65 on h as the paper writes it). */
     double dt_lambda_on;
     const sph_contact_desc *contact; /* NULL: the bodies do not touch each other */
+    /* 1: built with sphc --no-simd, scalar code: the pair passes on the half lists alone, as
+     * the program's --no-stencil makes them (no lattice stencil, no offset blocks). */
+    int scalar;
 
     /* Generated passes. */
     /* Apply velocity boundary conditions at time t (v set, fix bits set). */

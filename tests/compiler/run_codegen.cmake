@@ -1,5 +1,6 @@
 # Generated-code checks for one model:
 #   -DSPHC= -DMODEL= -DWORKDIR=          generate WORKDIR/<stem>.c with --emit-only
+#   -DOPTIONS="a;b"                      and these options of sphc
 #   -DFRAGMENT=file                      the file's text must appear verbatim in it
 #   -DABSENT="a;b"  -DPRESENT="c;d"      words that must not / must appear
 #   -DCC= -DINCLUDE=                     compile it with -Wall -Wextra -Werror
@@ -8,7 +9,7 @@
 get_filename_component(stem ${MODEL} NAME_WE)
 file(REMOVE_RECURSE ${WORKDIR})
 file(MAKE_DIRECTORY ${WORKDIR})
-execute_process(COMMAND ${SPHC} --emit-c ${WORKDIR} --emit-only ${MODEL}
+execute_process(COMMAND ${SPHC} ${OPTIONS} --emit-c ${WORKDIR} --emit-only ${MODEL}
                 RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "sphc failed on ${MODEL}:\n${err}")
