@@ -212,7 +212,9 @@ static void bodies_desc(Emitter *E)
         if (E->plans[i].law_fdot)
             fputs("        .fdot = 1, /* the law reads the rate of F */\n", out);
         if (E->plans[i].law_wave)
-            fputs("        .wavespeed = 1, /* the law gives its wave speed */\n", out);
+            fprintf(out, "        .wavespeed = 1, /* the law gives its wave speed */\n"
+                         "        .lam2_rest = %.17g, /* (c0 / its wave speed at rest)^2, at most 1 */\n",
+                    E->plans[i].lam2_rest);
         const int blocks = (E->plans[i].offset_blocks ? 1 : 0) | (E->plans[i].momentum_blocks ? 2 : 0);
         if (blocks && !strcmp(E->target->name, "cpu"))
             fprintf(out, "        .offset_blocks = %d, /* the pair passes' offset blocks */\n",

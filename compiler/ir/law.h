@@ -70,6 +70,10 @@ int law_verify_finite(const BodyModel *b, const SGraph *g, const LawRoots *r);
  * body's (the sound speed of eq. 59 follows the body's), an error when they are not finite;
  * returns the number of diagnostics. */
 int law_verify_moduli(const Model *m, const BodyModel *b);
+/* The wave speed law g, r gives (its `wavespeed`) at F = I, at its state's initial values:
+ * where it exceeds the body's c0, the compression bound takes it from the first step on
+ * (lower.c, lam2_rest); NaN for a law without one. */
+double law_wavespeed_at_rest(const SGraph *g, const LawRoots *r);
 
 /* Check a law's statements symbolically (its parameters unknown, in 3D, with its tension
  * block): the checker's test of every material law.  Returns 0, or -1 after reporting. */

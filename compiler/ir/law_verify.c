@@ -407,6 +407,19 @@ static void report_nonfinite(const BodyModel *b, const SGraph *g, const double *
                   "computed here", nonfinite_name(val[o - g->nodes]));
 }
 
+double law_wavespeed_at_rest(const SGraph *g, const LawRoots *r)
+{
+    if (!r->has_wavespeed)
+        return NAN;
+    static const double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    Point p = {identity, r};
+    double *val = malloc((size_t)g->n * sizeof *val);
+    sg_eval(g, r->wavespeed, input_at, &p, NULL, val);
+    const double c = val[r->wavespeed];
+    free(val);
+    return c;
+}
+
 int law_verify_finite(const BodyModel *b, const SGraph *g, const LawRoots *r)
 {
     Result res[5];

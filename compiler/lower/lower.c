@@ -67,6 +67,17 @@ static void features(const Model *m, const BodyModel *b, const LawRoots *r, Body
 _Static_assert(0 PLAN_NUMBERS(PLAN_ROW) <= 32, "BodyPlan.numbers has a bit per row of PLAN_NUMBERS");
 #undef PLAN_ROW
 
+/* The factor (c0 / c)^2 on the squared stretch of the compression bound where the wave speed
+ * c that body b's law gives at rest exceeds its c0 (the stress pass's factor, templates/
+ * body_particle.c), 1 otherwise: the bound before the first stress pass. */
+static double lam2_rest(const BodyModel *b, const BodyPlan *p)
+{
+    if (p->roots.wavespeed < 0 || p->roots.wavespeed >= p->law.n)
+        return 1;
+    const double c = law_wavespeed_at_rest(&p->law, &p->roots);
+    return isfinite(c) && c > b->c0 ? (b->c0 / c) * (b->c0 / c) : 1;
+}
+
 /* Each row of PLAN_NUMBERS (plan.h) that holds for body b, after its features. */
 static void numbers(const Model *m, const BodyModel *b, BodyPlan *p)
 {

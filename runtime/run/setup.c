@@ -148,14 +148,16 @@ static void allocate(sph_body *b)
     b->psi = zalloc(n, sizeof(double));
     b->sigma = zalloc(n * 6, sizeof(double));
     b->fix = zalloc(n, 1);
+    /* a law whose wave speed at rest exceeds c0 bounds the first step as the later ones */
+    const double rest = b->desc->lam2_rest > 0 ? b->desc->lam2_rest : 1.0;
     double sums[SPH_STEP_NSUMS]; /* (the step sums before the first step) */
     for (int k = 0; k < SPH_STEP_NSUMS; k++)
-        sums[k] = sph_step_sum_initial(k);
+        sums[k] = k == SPH_STEP_SUM_lam2min ? rest : sph_step_sum_initial(k);
     sph_step_sums_set(b, sums);
     if (b->desc->crush) {
         b->lam2 = zalloc(n, sizeof(double));
         for (size_t i = 0; i < n; i++)
-            b->lam2[i] = 1.0;
+            b->lam2[i] = rest;
     }
     const int ns = b->desc->nstate;
     if (ns > 0) {

@@ -79,6 +79,9 @@ typedef struct {
     const char *clamp_where;    /* its model line, for messages */
     int wavespeed;              /* 1: the law gives its wave speed, which the compression bound
                                    takes with the stretch (lam2 below) */
+    double lam2_rest;           /* with wavespeed: the squared stretch the bound takes at rest,
+                                   (c0 / the law's wave speed at F = I)^2 where that is above
+                                   c0, else 1 (0: 1), before the first stress pass gives it */
     int fdot;                   /* 1: the law reads the rate of F (the gradient pass sums the
                                    velocity's gradient into Ad; CPU lists) */
     int quadratic;              /* 1: the corrected gradient exact for quadratic fields, with

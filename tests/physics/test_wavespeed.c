@@ -2,7 +2,8 @@
  * time step as a compression of the spacing by c0 / cw would: with the default `timestep
  * auto` at cfl 0.2 (lambda_on = cfl / 0.4 = 0.5) the factor on eq. 65 is (1/3) / 0.5 = 2/3,
  * so that the Courant number at the law's wave speed stays 0.4; the same body without it
- * keeps the factor 1.  Checked after a step, to 1e-12. */
+ * keeps the factor 1.  Checked before the first step (the wave speed at rest, which the
+ * compiler evaluates: lam2_rest) and after it, to 1e-12. */
 #define main generated_main
 #include "wavespeed2d.c"
 #undef main
@@ -14,6 +15,10 @@ int main(void)
     sph_sim sim;
     if (sph_sim_init(&sim, &MODEL, 0) || sim.nbodies != 2)
         return 1;
+    double f0 = sph_stretch_factor(MODEL.dt_lambda_on, sim.bodies[0].lam2 != NULL,
+                                   sim.bodies[0].lam2min);
+    check_close("before the first step: factor of the body whose law gives 3 c0", f0, 2.0 / 3,
+                1e-12);
     sph_sim_step(&sim, sph_sim_stable_dt(&sim));
     double f[2];
     for (int k = 0; k < 2; k++) {
