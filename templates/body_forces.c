@@ -161,7 +161,9 @@ static inline void @B@_gradient_pairs(sph_body *b, int i, int p0, int p1,
  * its particles, the full lists, and nothing is written to j: no stripes.  Overwrites A_i
  * of own particles with the sums of their own pairs (the sums of the lists, in another
  * order).  The Taylor bar's stress pass (this in it) took 0.6 of its time with the half
- * lists, its step 0.84 (one thread). */
+ * lists, its step 0.84 (one thread).  Where the law reads a rate, the velocity's gradient
+ * Ad the same way from v by component (b->ob_v), in the same tasks: the Taylor bar with a
+ * law that reads one, its stress pass 0.65 of the lists' time. */
 static void @B@_gradient_blocks(sph_body *b)
 {
     typedef @B@_v8 dv8;
@@ -178,6 +180,16 @@ static void @B@_gradient_blocks(sph_body *b)
     const int *restrict os = b->ob_start;
     const sph_real *restrict wtab = b->wtab;
     sph_real *restrict A = b->A;
+//@if LAW_FDOT
+    /* the velocity's gradient the same way, from v by component (its law reads a rate) */
+    const double *restrict v = b->v;
+    double *restrict V = b->ob_v + b->ob_pad;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; i++)
+        for (int r = 0; r < D; r++)
+            V[(size_t)r * S + i] = v[(size_t)i * D + r];
+    sph_real *restrict Ad = b->Ad;
+//@endif
     const lv8 lane = {1, 2, 4, 8, 16, 32, 64, 128};
 #pragma omp parallel for schedule(static)
     for (int B = 0; B < b->nob; B++) {
@@ -185,6 +197,11 @@ static void @B@_gradient_blocks(sph_body *b)
         dv8 ui[D], a[D * D] = {0};
         for (int r = 0; r < D; r++)
             ui[r] = *(const dv8 *)(U + (size_t)r * S + i0);
+//@if LAW_FDOT
+        dv8 vi[D], ad[D * D] = {0};
+        for (int r = 0; r < D; r++)
+            vi[r] = *(const dv8 *)(V + (size_t)r * S + i0);
+//@endif
         for (int t = os[B]; t < os[B + 1]; t++) {
             const sph_real *wk = wtab + (size_t)(ob[t].key >> 8) * R;
             const double w[D] = {wk[0], wk[1], wk[2]};
@@ -194,11 +211,21 @@ static void @B@_gradient_blocks(sph_body *b)
             for (int r = 0; r < D; r++)
                 d[r] = (dv8)((lv8)(*(const dv8 *)(uj + (size_t)r * S) - ui[r]) & in);
             @B@_gradient_term_v8(a, d, w);
+//@if LAW_FDOT
+            const double *vj = V + i0 + ob[t].off;
+            for (int r = 0; r < D; r++)
+                d[r] = (dv8)((lv8)(*(const dv8 *)(vj + (size_t)r * S) - vi[r]) & in);
+            @B@_gradient_term_v8(ad, d, w);
+//@endif
         }
         for (int l = 0; l < SPH_OB_LANES && i0 + l < n; l++)
             for (int r = 0; r < D; r++)
-                for (int c = 0; c < D; c++)
+                for (int c = 0; c < D; c++) {
                     A[(size_t)(i0 + l) * D * R + r * R + c] = (sph_real)a[r * D + c][l];
+//@if LAW_FDOT
+                    Ad[(size_t)(i0 + l) * D * R + r * R + c] = (sph_real)ad[r * D + c][l];
+//@endif
+                }
     }
 }
 

@@ -48,9 +48,7 @@ const char *layout_gradient_blocks_refused(const Model *m, const BodyPlan *p)
         return "2D (the lattice stencil serves 2D)";
     if (p->fracture)
         return "fracture (the phase field's Laplacian rides with the lists' pairs)";
-    if (p->quadratic)
-        return QUADRATIC;
-    return p->law_fdot ? FDOT : NULL;
+    return p->quadratic ? QUADRATIC : NULL;
 }
 
 const char *layout_momentum_blocks_refused(const Model *m, const BodyPlan *p)

@@ -743,6 +743,6 @@ void sph_body_free(sph_body *b)
     free(b->image), free(b->image_of);
     free(b->st_k), free(b->st_o), free(b->st_run);
     free(b->rest), free(b->rest_start), free(b->rest_j), free(b->rest_k);
-    free(b->ob_start), free(b->ob), free(b->ob_u);
+    free(b->ob_start), free(b->ob), free(b->ob_u), free(b->ob_v);
     free(b->mb_start), free(b->mb_i0), free(b->mb_stripe), free(b->mb), free(b->mb_soa);
 }

@@ -101,12 +101,13 @@ struct sph_body {
     /* The gradient pass's offset blocks (offset_blocks.c; 3D, CPU only): block B, the
      * SPH_OB_LANES own particles from SPH_OB_LANES B on, sums its particles' own pairs by the
      * tasks ob[ob_start[B] .. ob_start[B + 1] - 1] (sph_ob_task), reading u by component from
-     * ob_u (row r from ob_u + r ob_stride, particle i at ob_pad + i); ob_pairs: the pairs,
-     * in both directions, that the tasks' lanes hold.  nob = 0, NULL: none (the half lists
-     * sum the pairs). */
+     * ob_u (row r from ob_u + r ob_stride, particle i at ob_pad + i), and v from ob_v alike
+     * where the law reads a rate (the velocity's gradient; NULL otherwise); ob_pairs: the
+     * pairs, in both directions, that the tasks' lanes hold.  nob = 0, NULL: none (the half
+     * lists sum the pairs). */
     int nob, *ob_start, ob_pad, ob_stride;
     sph_ob_task *ob;
-    double *ob_u;
+    double *ob_u, *ob_v;
     long ob_pairs;
     /* The momentum pass's offset blocks (offset_blocks.c; 3D, CPU only), over the half lists:
      * stripe s's blocks mb_stripe[s] .. mb_stripe[s + 1] - 1, block B the up to
