@@ -19,6 +19,9 @@
 //@if FRACTURE
  * And the Laplacian of eq. 62 alike: the sum of ltab (2 s_i - s_{i+o} - s_{i-o}).
 //@endif
+//@if LAW_FDOT
+ * And the velocity's gradient Ad alike from v (the law reads a rate).
+//@endif
  * Entry by entry: with the pair helpers of body_pairs.c here, GCC 12 built the table entry's
  * vector of the four-particle loop below (@B@_stencil_gradient_run, which this ends) on the
  * stack and loaded it back whole every offset, and the flyer plates' stress pass took 1.8
@@ -33,6 +36,10 @@ static void @B@_stencil_gradient_one(sph_body *b, int i)
     const double *restrict sf = b->s;
     double lapi = 0;
 //@endif
+//@if LAW_FDOT
+    const double *restrict v = b->v;
+    sph_real ad[D * D] = {0};
+//@endif
     for (int q = 0; q < b->st_m; q++) {
         const int jp = i + b->st_o[q], jm = i - b->st_o[q], k = b->st_k[q];
         const sph_real *w = b->wtab + (size_t)k * R;
@@ -40,14 +47,23 @@ static void @B@_stencil_gradient_one(sph_body *b, int i)
             const sph_real d = (sph_real)(u[(size_t)jp * D + r] - u[(size_t)jm * D + r]);
             for (int c = 0; c < D; c++)
                 a[r * D + c] += d * w[c];
+//@if LAW_FDOT
+            const sph_real dv = (sph_real)(v[(size_t)jp * D + r] - v[(size_t)jm * D + r]);
+            for (int c = 0; c < D; c++)
+                ad[r * D + c] += dv * w[c];
+//@endif
         }
 //@if FRACTURE
         lapi += b->ltab[k] * (2 * sf[i] - sf[jp] - sf[jm]);
 //@endif
     }
     for (int r = 0; r < D; r++)
-        for (int c = 0; c < D; c++)
+        for (int c = 0; c < D; c++) {
             b->A[(size_t)i * D * R + r * R + c] = a[r * D + c];
+//@if LAW_FDOT
+            b->Ad[(size_t)i * D * R + r * R + c] = ad[r * D + c];
+//@endif
+        }
 //@if FRACTURE
     b->lap[i] = lapi;
 //@endif
@@ -73,8 +89,14 @@ static void @B@_stencil_gradient_run(sph_body *b, int a, int e)
     typedef @B@_v4 v4;
     const double *restrict sf = b->s;
 //@endif
+//@if LAW_FDOT
+    const double *restrict v = b->v;
+//@endif
     for (; i + 4 <= e; i += 4) {
         v8 a01 = {0}, a23 = {0}; /* A of particles i, i + 1 and of i + 2, i + 3 */
+//@if LAW_FDOT
+        v8 ad01 = {0}, ad23 = {0}; /* and their Ad */
+//@endif
 //@if FRACTURE
         v4 lap = {0};
         const v4 s2 = 2 * *(const v4 *)(sf + i);
@@ -86,12 +108,21 @@ static void @B@_stencil_gradient_run(sph_body *b, int a, int e)
             const v8 w = {w0, w1, w0, w1, w0, w1, w0, w1};
             a01 += __builtin_shufflevector(d, d, 0, 0, 1, 1, 2, 2, 3, 3) * w;
             a23 += __builtin_shufflevector(d, d, 4, 4, 5, 5, 6, 6, 7, 7) * w;
+//@if LAW_FDOT
+            const v8 dv = *(const v8 *)(v + 2 * (i + o)) - *(const v8 *)(v + 2 * (i - o));
+            ad01 += __builtin_shufflevector(dv, dv, 0, 0, 1, 1, 2, 2, 3, 3) * w;
+            ad23 += __builtin_shufflevector(dv, dv, 4, 4, 5, 5, 6, 6, 7, 7) * w;
+//@endif
 //@if FRACTURE
             lap += b->ltab[k] * (s2 - *(const v4 *)(sf + i + o) - *(const v4 *)(sf + i - o));
 //@endif
         }
         *(v8 *)(b->A + 4 * (size_t)i) = a01;
         *(v8 *)(b->A + 4 * (size_t)i + 8) = a23;
+//@if LAW_FDOT
+        *(v8 *)(b->Ad + 4 * (size_t)i) = ad01;
+        *(v8 *)(b->Ad + 4 * (size_t)i + 8) = ad23;
+//@endif
 //@if FRACTURE
         *(v4 *)(b->lap + i) = lap;
 //@endif

@@ -34,8 +34,6 @@ static const char *pair_terms(const BodyPlan *p)
 
 /* (the quadratic fit's pair sums ride with the lists' pairs: templates/body_quadratic.c) */
 #define QUADRATIC "the quadratic gradient (its pair sums ride with the lists')"
-/* (so does the velocity's gradient of a law that reads Fdot, Cdot or Edot) */
-#define FDOT "its law reads a rate (the velocity's gradient rides with the lists' pairs)"
 
 /* (sphc --no-simd: the lists' scalar loops alone) */
 #define NO_SIMD "--no-simd"
@@ -74,8 +72,6 @@ const char *layout_stencil_momentum_refused(const Model *m, const BodyPlan *p)
         return "3D";
     if (p->quadratic)
         return QUADRATIC;
-    if (p->law_fdot) /* (the run-time set-up then makes no stencil) */
-        return FDOT;
     return p->pair_terms ? pair_terms(p) : NULL;
 }
 
@@ -94,9 +90,8 @@ static void line(FILE *out, const char *pass, const char *layout, const char *wh
 void layouts_dump(const Model *m, const BodyPlan *p, FILE *out)
 {
     if (m->dim == 2) {
-        if (m->no_simd || p->quadratic || p->law_fdot)
-            line(out, "gradient", "half lists",
-                 m->no_simd ? NO_SIMD : p->quadratic ? QUADRATIC : FDOT);
+        if (m->no_simd || p->quadratic)
+            line(out, "gradient", "half lists", m->no_simd ? NO_SIMD : QUADRATIC);
         else
             line(out, "gradient", STENCIL, NULL);
         const char *why = layout_stencil_momentum_refused(m, p);

@@ -713,7 +713,7 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, doub
     SPH_TIMED("set-up: offset blocks", sph_offset_blocks_setup(b));
     SPH_TIMED("set-up: half lists and stripes", half_lists(b));
     SPH_TIMED("set-up: momentum blocks", sph_momentum_blocks_setup(b));
-    if (!d->quadratic && !d->fdot) /* (its runs sum the linear moments of u only) */
+    if (!d->quadratic) /* (its runs sum the linear moments of u only) */
         SPH_TIMED("set-up: lattice stencil", sph_stencil_setup(b));
     SPH_TIMED("set-up: arrays", allocate(b));
     SPH_TIMED("set-up: BC and plane selections", selections(b, d, t_end));
