@@ -23,10 +23,11 @@ static int bcs_applied(const BodyModel *b, BcPass pass)
  * the law runs on them (templates/body_forces.c, STAGED), rather than reading the body's
  * arrays in the loop over particles.  Read in place, the compiler vectorises that loop for a
  * 2D law without state; it cannot for 3D tensors or a law's state (runs of 9, 11 or 12
- * values a particle).  The copies pay where the law calls exp, log or pow (their vector
- * forms replace several scalar calls): the 3D column's step took 0.89 of its time so, the
- * Taylor bar's 0.93; for a law of sums and products alone they cost more than they save (the
- * 3D plate: 1.04), and a runtime routine (the 3D spectral split) is not vectorised at all. */
+ * values a particle), and there the copies pay: the 3D column's step took 0.89 of its time
+ * so, the Taylor bar's 0.93 (laws that call exp, log or pow: their vector forms replace
+ * several scalar calls), the 3D plate's stress pass 0.78-0.86 (SVK, sums and products
+ * alone; GCC 12 and AVX-512: on an AVX2 machine with an older compiler its step had taken
+ * 1.04).  A runtime routine (the 3D spectral split) is not vectorised at all. */
 static int stress_staged(const Model *m, const LawRoots *r, const SGraph *law)
 {
     if (m->dim == 2 && r->nslots == 0)
@@ -38,7 +39,7 @@ static int stress_staged(const Model *m, const LawRoots *r, const SGraph *law)
             return 0;
         calls |= (nd->op == SN_CALL && nd->fn != BI_sqrt) || nd->op == SN_POW;
     }
-    return calls;
+    return calls || m->dim == 3; /* (a 2D law with state and no calls: not measured) */
 }
 
 _Static_assert(BODY_NSETTINGS <= 32, "BodyPlan.terms has a bit per body setting");
