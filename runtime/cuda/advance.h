@@ -33,9 +33,10 @@ __device__ static inline void sph_clock_choose_on(sph_cuda_clock *c)
         const double *red = b->red, v2 = red[SPH_RED_VMAX2], a2 = red[SPH_RED_AMAX2];
         const double f = sph_stretch_factor(c->lambda_on, b->lam2 != NULL, sph_red_lam2min(red));
         c->dt_factor = fmin(c->dt_factor, f);
-        const double own = sph_body_dt(f, b->h, b->c0, v2, a2);
+        int bound;
+        const double own = sph_body_dt_which(f, b->h, b->c0, v2, a2, &bound);
         if (own < dt) /* (what set it: as sph_sim_stable_dt says) */
-            dt = own, c->body = i, c->bound = sph_body_dt_bound(f, b->h, b->c0, v2, a2);
+            dt = own, c->body = i, c->bound = bound;
         vmax2 = fmax(vmax2, v2), amax2 = fmax(amax2, a2);
     }
     if (c->contact_sums) { /* the stiffest contact, where a pair is in contact or near it */

@@ -157,11 +157,10 @@ double sph_sim_stable_dt(sph_sim *s)
         const sph_body *b = &s->bodies[i];
         const double f = sph_stretch_factor(m->dt_lambda_on, b->lam2 != NULL, b->lam2min);
         s->dt_factor = fmin(s->dt_factor, f);
-        const double own = sph_body_dt(f, b->h, b->c0, b->vmax2, b->amax2);
-        if (own < dt) {
-            dt = own, s->dt_body = i;
-            s->dt_bound = (sph_dt_bound)sph_body_dt_bound(f, b->h, b->c0, b->vmax2, b->amax2);
-        }
+        int bound;
+        const double own = sph_body_dt_which(f, b->h, b->c0, b->vmax2, b->amax2, &bound);
+        if (own < dt)
+            dt = own, s->dt_body = i, s->dt_bound = (sph_dt_bound)bound;
     }
     /* the stiffest contact, where a pair is in contact or near it */
     const double contact = sph_contact_dt(s, sph_chosen_dt(m->dt_fixed, m->cfl, dt));

@@ -39,22 +39,22 @@ SPH_HD static inline double sph_bound_stretch2(double l2)
     return l2 > 0 ? l2 : 0.0;
 }
 
-/* A body's bound on the time step before eq. 64's CFL: eq. 65 on its factor f and eq. 66. */
-SPH_HD static inline double sph_body_dt(double f, double h, double c0, double vmax2, double amax2)
+/* A body's bound on the time step before eq. 64's CFL: eq. 65 on its factor f and eq. 66;
+ * *bound (where not NULL) which of them it is: eq. 66 where it is the smaller, otherwise
+ * eq. 65, as compression where the factor f cut it. */
+SPH_HD static inline double sph_body_dt_which(double f, double h, double c0, double vmax2,
+                                              double amax2, int *bound)
 {
     const double dtv = f * h / (c0 + sqrt(vmax2));                      /* eq. 65 */
     const double dta = amax2 > 0 ? sqrt(h / sqrt(amax2)) : INFINITY;   /* eq. 66 */
+    if (bound)
+        *bound = dta < dtv ? SPH_DT_ACCELERATION : f < 1 ? SPH_DT_COMPRESSION : SPH_DT_SPEED;
     return fmin(dtv, dta);
 }
 
-/* Which of a body's bounds sph_body_dt takes on the same numbers: eq. 66 where it is the
- * smaller, otherwise eq. 65, as compression where the factor f cut it. */
-SPH_HD static inline int sph_body_dt_bound(double f, double h, double c0, double vmax2,
-                                           double amax2)
+SPH_HD static inline double sph_body_dt(double f, double h, double c0, double vmax2, double amax2)
 {
-    const double dtv = f * h / (c0 + sqrt(vmax2));
-    const double dta = amax2 > 0 ? sqrt(h / sqrt(amax2)) : INFINITY;
-    return dta < dtv ? SPH_DT_ACCELERATION : f < 1 ? SPH_DT_COMPRESSION : SPH_DT_SPEED;
+    return sph_body_dt_which(f, h, c0, vmax2, amax2, NULL);
 }
 
 /* The time step from the bodies' and contacts' smallest bound: eq. 64, or the scene's fixed

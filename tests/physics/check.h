@@ -19,6 +19,24 @@ static void check_close(const char *what, double got, double want, double tol)
 }
 
 #ifdef SPHRT_H
+/* A 3D bar's extent from its particles' current centres (X + u): the lowest and highest z
+ * and the largest distance from the z axis (the Taylor bars' shortening and mushrooming). */
+typedef struct {
+    double zmin, zmax, rmax;
+} check_extent;
+
+static check_extent check_bar_extent(const sph_body *b)
+{
+    check_extent e = {INFINITY, -INFINITY, 0};
+    for (int i = 0; i < b->n; i++) {
+        const double *X = b->X + (size_t)i * 3, *u = b->u + (size_t)i * 3;
+        const double x = X[0] + u[0], y = X[1] + u[1], z = X[2] + u[2];
+        e.zmin = fmin(e.zmin, z), e.zmax = fmax(e.zmax, z);
+        e.rmax = fmax(e.rmax, sqrt(x * x + y * y));
+    }
+    return e;
+}
+
 /* The largest |entry| of a body's P L (Q): its stress, for tests of stress-free motions. */
 static double check_max_stress(const sph_body *b)
 {

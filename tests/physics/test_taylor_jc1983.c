@@ -18,22 +18,13 @@
 
 #include "check.h"
 
-enum { D = 3 };
-
 /* The cylinder's length from the anvil (z = 0) and its radius, from the outermost particle
  * centres plus half a spacing. */
 static void extent(const sph_body *b, double dp, double *length, double *radius)
 {
-    double zmax = -INFINITY, rmax = 0;
-    for (int i = 0; i < b->n; i++) {
-        double x[3];
-        for (int k = 0; k < D; k++)
-            x[k] = b->X[i * D + k] + b->u[i * D + k];
-        zmax = fmax(zmax, x[2]);
-        rmax = fmax(rmax, sqrt(x[0] * x[0] + x[1] * x[1]));
-    }
-    *length = zmax + 0.5 * dp;
-    *radius = rmax + 0.5 * dp;
+    const check_extent e = check_bar_extent(b);
+    *length = e.zmax + 0.5 * dp;
+    *radius = e.rmax + 0.5 * dp;
 }
 
 int main(void)

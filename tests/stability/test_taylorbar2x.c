@@ -15,8 +15,6 @@
 
 #include "check.h"
 
-enum { D = 3 };
-
 static double det3(const double *F)
 {
     return F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
@@ -46,14 +44,8 @@ int main(void)
         for (int i = 0; i < b->n; i++)
             jmin = fmin(jmin, det3(b->F + 9 * (size_t)i));
     }
-    double zmin = INFINITY, zmax = -INFINITY, rmax = 0;
-    for (int i = 0; i < b->n; i++) {
-        double x[3];
-        for (int k = 0; k < D; k++)
-            x[k] = b->X[i * D + k] + b->u[i * D + k];
-        zmin = fmin(zmin, x[2]), zmax = fmax(zmax, x[2]);
-        rmax = fmax(rmax, sqrt(x[0] * x[0] + x[1] * x[1]));
-    }
+    const check_extent ext = check_bar_extent(b);
+    const double zmin = ext.zmin, zmax = ext.zmax, rmax = ext.rmax;
     printf("%ld steps to %.3g us: smallest stretch %.3g, smallest det F %.3g, length %.4g mm, "
            "outermost centre %.4g mm, energy growth %.3g J of %.4g J; smallest factor on eq. 65 "
            "%.3g\n",
