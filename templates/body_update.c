@@ -72,22 +72,12 @@ static void @B@_update(sph_body *b, double dt)
     /* simd: the particles are independent, and the loop has no branches (selects), so that
      * the compiler does several in one vector instruction (crack branching's update took
      * about half its time so) */
-//@if SIMD
 //@if CRUSH
-#pragma omp parallel for simd schedule(static) reduction(max : vmax2, amax2) \
+#pragma omp parallel for@OMP_SIMD@ schedule(static) reduction(max : vmax2, amax2) \
     reduction(+ : vsum2, asum2) reduction(min : lam2min)
 //@else
-#pragma omp parallel for simd schedule(static) reduction(max : vmax2, amax2) \
+#pragma omp parallel for@OMP_SIMD@ schedule(static) reduction(max : vmax2, amax2) \
     reduction(+ : vsum2, asum2)
-//@endif
-//@else
-//@if CRUSH
-#pragma omp parallel for schedule(static) reduction(max : vmax2, amax2) \
-    reduction(+ : vsum2, asum2) reduction(min : lam2min)
-//@else
-#pragma omp parallel for schedule(static) reduction(max : vmax2, amax2) \
-    reduction(+ : vsum2, asum2)
-//@endif
 //@endif
     for (int i = 0; i < b->nown; i++) {
         double v2 = 0, a2 = 0;

@@ -41,6 +41,9 @@ static void body_env(const Emitter *E, const BodyModel *b, const BodyPlan *p, Tp
     tpl_set(env, "LAW_ARGS", "%s%s", p->law_fdot ? "Fd, " : "", p->law_dt ? "dt, " : "");
     /* and what it gives besides S and psi: its wave speed, into cw */
     tpl_set(env, "LAW_OUTS", "%s", p->law_wave ? ", &cw" : "");
+    /* the loops over particles the compiler is told to vectorise (` simd`), none with
+     * sphc --no-simd */
+    tpl_set(env, "OMP_SIMD", "%s", p->simd ? " simd" : "");
     int k = 0;
 #define PLAN_KEY(member, key, value, when)                                                    \
     if (p->numbers >> k++ & 1)                                                                 \

@@ -73,7 +73,7 @@ _Static_assert(0 PLAN_NUMBERS(PLAN_ROW) <= 32, "BodyPlan.numbers has a bit per r
  * body_particle.c), 1 otherwise: the bound before the first stress pass. */
 static double lam2_rest(const BodyModel *b, const BodyPlan *p)
 {
-    if (p->roots.wavespeed < 0 || p->roots.wavespeed >= p->law.n)
+    if (p->roots.wavespeed < 0 || p->roots.wavespeed >= p->law.n) /* (a law that did not build) */
         return 1;
     const double c = law_wavespeed_at_rest(&p->law, &p->roots);
     return isfinite(c) && c > b->c0 ? (b->c0 / c) * (b->c0 / c) : 1;

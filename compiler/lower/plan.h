@@ -62,7 +62,7 @@
     X(beta1, BETA1, b->beta1, 1) /* eq. 58 */                                                      \
     X(beta2_value, BETA2, b->beta2, 1)                                                             \
     X(c0, C0, b->c0, 1) /* eq. 59 */                                                               \
-    X(lam2_rest, LAM2_REST, lam2_rest(b, p), p->law_wave) /* the bound's stretch at rest */         \
+    X(lam2_rest, LAM2_REST, lam2_rest(b, p), p->law_wave) /* the bound's stretch at rest (desc) */  \
     X(hg, HG, 0.5 * b->hourglass * b->E, 1) /* alpha E / 2 */                                      \
     X(g0, G0, m->gravity[0], 1) /* gravity, compact components */                                  \
     X(g1, G1, m->dim == 2 ? m->gravity[2] : m->gravity[1], 1)                                      \

@@ -222,8 +222,10 @@ void sph_offset_blocks_setup(sph_body *b)
         return;
     b->nob = nblocks;
     b->ob_u = rows_of(3, n, reach, &b->ob_pad, &b->ob_stride); /* u by component */
-    if (b->desc->fdot) /* and v, for the velocity's gradient (the same pad and stride) */
-        b->ob_v = rows_of(3, n, reach, &b->ob_pad, &b->ob_stride);
+    if (b->desc->fdot) { /* and v, for the velocity's gradient (the same pad and stride) */
+        int pad, stride;
+        b->ob_v = rows_of(3, n, reach, &pad, &stride);
+    }
 }
 
 /* The momentum pass's blocks: stripe by stripe, a block's pairs touch its stripe and the
