@@ -267,6 +267,9 @@ static void @B@_momentum_pass(sph_body *b)
         const double g[3] = {@G0@, @G1@, @G2@};
         for (int r = 0; r < D; r++)
             b->a[i * D + r] = g[r] + fi[r];
+//@if VHEAT
+        b->vq[i] = -0.5 * (double)pv; /* its half of its pairs' heat, per unit mass */
+//@endif
 //@if VISCOSITY
         return -0.5 * b->mass * (double)pv; /* each pair twice */
 //@endif
@@ -349,6 +352,10 @@ static void @B@_update(sph_body *b, sph_time dt)
             v2 += b->v[i * D + k] * b->v[i * D + k];
             a2 += ak * ak;
         }
+//@if VHEAT
+        /* the artificial viscosity's heat of the step into the law's `viscousheat` state */
+        b->state[(size_t)i * @NSTATE@ + @VHEAT_SLOT@] += b->rho0 * dt * b->vq[i];
+//@endif
 //@if CRUSH
         /* the compression bound (runtime/run/sim.c): 1 / lambda^2, infinite at lambda = 0 */
         return sph_max3{v2, a2, 1.0 / sph_bound_stretch2(b->lam2[i])};

@@ -594,7 +594,9 @@ SPH_IVDEP /* particle i reads and writes entry i of arrays that never overlap */
  * i into *force (a pointer: a returned vector would change the ABI), and with `both` (the
  * half lists, each pair visited once) each pair's force on j subtracted from acc; without
  * (pairs with the halo of a run on many processes) only i's share, the other process
- * computing j's.  *power gets the pairs' f_visc . (v_i - v_j), half of it without `both`. */
+ * computing j's.  *power gets the pairs' f_visc . (v_i - v_j), half of it without `both`;
+ * with a law's viscous heat, half of each pair's -f_visc . (v_i - v_j) goes to b->vq of i
+ * (and of j with `both`): the heating rate of each particle, per unit mass. */
 static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
                                       const int *restrict hb, const int *restrict hk, int both,
                                       double *restrict acc, @B@_vec *force, sph_real *power)
@@ -612,6 +614,10 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
     const vec *Ci = Cv + (size_t)i * D;
     const sph_real Csi = Cs[i];
     sph_real pv = 0;
+//@endif
+//@if VHEAT
+    double *vq = b->vq;
+    double qi = 0;
 //@endif
     vec fi = {0};
     for (int p = p0; p < p1; p++) {
@@ -647,6 +653,12 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
         f -= hpi * fv;
         pv -= hpi * vw;
 //@endif
+//@if VHEAT
+        const double hq = 0.5 * (double)(hpi * vw); /* each particle's half of the heat */
+        qi += hq;
+        if (both)
+            vq[j] += hq;
+//@endif
 //@if PAIR_TERMS
         sph_real fh[D];
         for (int r = 0; r < D; r++)
@@ -665,6 +677,9 @@ static inline void @B@_momentum_pairs(const sph_body *b, int i, int p0, int p1,
                 acc[j * D + r] -= f[r];
         }
     }
+//@if VHEAT
+    vq[i] += qi;
+//@endif
 //@if VISCOSITY
     *power = both ? pv : (sph_real)0.5 * pv;
 //@else
@@ -908,13 +923,17 @@ static void @B@_momentum_pass(sph_body *b)
     b->par->post(b, halo_in, nhalo_in);
 //@endif
 #pragma omp parallel for schedule(static)
-    for (int i = 0; i < b->nown; i++)
+    for (int i = 0; i < b->nown; i++) {
         for (int r = 0; r < D; r++)
 //@if GRAVITY
             acc[i * D + r] = @B@_gravity[r];
 //@else
             acc[i * D + r] = 0;
 //@endif
+//@if VHEAT
+        b->vq[i] = 0;
+//@endif
+    }
 //@if MOMENTUM_BLOCKS
     if (b->mb)
         @B@_momentum_copy(b);

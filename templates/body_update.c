@@ -69,6 +69,13 @@ static void @B@_update(sph_body *b, double dt)
     const double *restrict lam2 = b->lam2;
     double lam2min = 1; /* the smallest principal stretch squared (stress pass) */
 //@endif
+//@if VHEAT
+    /* the artificial viscosity's heat of the step into the law's `viscousheat` state [J/m^3]:
+     * its rate per unit mass (the momentum pass's) times rho0 dt */
+    double *restrict heat = b->state + @VHEAT_SLOT@;
+    const double *restrict vq = b->vq;
+    const double rho0_dt = b->rho0 * dt;
+//@endif
     /* simd: the particles are independent, and the loop has no branches (selects), so that
      * the compiler does several in one vector instruction (crack branching's update took
      * about half its time so) */
@@ -106,6 +113,9 @@ static void @B@_update(sph_body *b, double dt)
             v2 += vk * vk;
             a2 += ak * ak;
         }
+//@if VHEAT
+        heat[(size_t)i * @NSTATE@] += rho0_dt * vq[i];
+//@endif
         vmax2 = v2 > vmax2 ? v2 : vmax2;
         amax2 = a2 > amax2 ? a2 : amax2;
         vsum2 += v2;

@@ -187,16 +187,20 @@ static void bodies_desc(Emitter *E)
             fprintf(out, "        .nstate = %d,\n        .state_init = %s_state_init,\n"
                          "        .state_names = %s_state_names,\n",
                     E->plans[i].nstate, b->name, b->name);
+        /* (in the order of sph_body_desc's members: C++ wants it, for nvcc) */
+        if (E->plans[i].roots.dissipation)
+            fprintf(out, "        .dissipation = %d, /* plastic work in state value %d */\n",
+                    E->plans[i].roots.dissipation, E->plans[i].roots.dissipation - 1);
         if (E->plans[i].roots.temperature)
             fprintf(out, "        .temperature = %d, /* the temperature in state value %d */\n"
                          "        .heat_capacity = %.17g, /* its specific heat, J/(kg K) */\n",
                     E->plans[i].roots.temperature, E->plans[i].roots.temperature - 1,
                     E->plans[i].roots.heat_capacity);
-        if (E->plans[i].roots.dissipation)
-            fprintf(out, "        .dissipation = %d, /* plastic work in state value %d */\n",
-                    E->plans[i].roots.dissipation, E->plans[i].roots.dissipation - 1);
         if (E->plans[i].viscosity)
             fputs("        .viscous = 1,\n", out);
+        if (E->plans[i].vheat)
+            fprintf(out, "        .vheat = %d, /* the viscosity's heat into state value %d */\n",
+                    E->plans[i].roots.viscous_heat, E->plans[i].roots.viscous_heat - 1);
         if (E->plans[i].crush)
             fputs("        .crush = 1,\n", out);
         if (b->has_clamp) {

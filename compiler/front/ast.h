@@ -86,7 +86,8 @@ typedef enum {
     MS_DISSIPATION, /* dissipation name: state `name` is the dissipated energy density */
     MS_REQUIRE, /* require cond [, "message"]: what the parameters must satisfy (law_require.c) */
     MS_TEMPERATURE, /* temperature name, c: state `name` is a temperature, c its specific heat */
-    MS_WAVESPEED /* wavespeed c: the particle's longitudinal wave speed now (the time step) */
+    MS_WAVESPEED, /* wavespeed c: the particle's longitudinal wave speed now (the time step) */
+    MS_VISCOUSHEAT /* viscousheat name: state `name` gathers the artificial viscosity's heat */
 } MatStmtKind;
 
 typedef struct MatStmt MatStmt;

@@ -148,6 +148,9 @@ static void dump_matstmt(const MatStmt *m, FILE *out, int depth)
     case MS_DISSIPATION:
         fprintf(out, "(dissipation %s)", m->name);
         break;
+    case MS_VISCOUSHEAT:
+        fprintf(out, "(viscousheat %s)", m->name);
+        break;
     case MS_WAVESPEED:
         fputs("(wavespeed ", out);
         ast_dump_expr(m->value, out);

@@ -314,6 +314,7 @@ static void report_unclosed(ParseState *ps, const YYLTYPE *at, int at_eof, const
 %token IMPORT "import" SCENE "scene" LET "let" FN "fn" MATERIAL "material" BODY "body"
 %token SHAPE "shape" STRESS "stress" ENERGY "energy" STATE "state" IF "if" ELSE "else"
 %token DISSIPATION "dissipation" REQUIRE "require" TEMPERATURE "temperature" WAVESPEED "wavespeed"
+%token VISCOUSHEAT "viscousheat"
 %token VELOCITY "velocity" FORCE "force"
 %token FROM "from" TO "to" NEAR "near" MEASURE "measure" PLANE "plane"
 %token EXPECT "expect" REFERENCE "reference" WITHIN "within"
@@ -459,6 +460,7 @@ matstmt
                                           $$.message = $4; }
     | TEMPERATURE IDENT ',' expr        { $$ = ast_matstmt(MS_TEMPERATURE, LOC(@2), $2, $4); }
     | WAVESPEED expr                    { $$ = ast_matstmt(MS_WAVESPEED, LOC(@1), NULL, $2); }
+    | VISCOUSHEAT IDENT                 { $$ = ast_matstmt(MS_VISCOUSHEAT, LOC(@2), $2, NULL); }
     ;
 
 else_opt

@@ -312,6 +312,9 @@ static void print_stmt(const MatStmt *s, int depth, FILE *out)
     case MS_DISSIPATION:
         fprintf(out, "dissipation %s\n", s->name);
         return;
+    case MS_VISCOUSHEAT:
+        fprintf(out, "viscousheat %s\n", s->name);
+        return;
     case MS_WAVESPEED:
         fputs("wavespeed ", out);
         sph_print_expr(s->value, out);

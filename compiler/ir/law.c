@@ -569,6 +569,26 @@ static int dissipation_stmt(Law *L, const MatStmt *s)
     return 0;
 }
 
+/* viscousheat name: the program adds to the scalar state variable `name` the energy density
+ * [J/m^3 of the reference volume] that the artificial viscosity dissipates at the particle,
+ * half of each of its pairs' (templates/body_forces.c), after each step; the law reads it
+ * as it reads any state (and should not assign it). */
+static int viscous_heat_stmt(Law *L, const MatStmt *s)
+{
+    LawRoots *r = &L->out;
+    if (L->in_if || L->in_tension)
+        return not_in_if(L, s, "a viscousheat declaration");
+    if (r->viscous_heat) {
+        diag_error(s->loc, "material '%s' declares its viscous heat twice", L->law->name);
+        return -1;
+    }
+    const int slot = scalar_state(L, s, "viscousheat", "state q = 0");
+    if (slot < 0)
+        return -1;
+    r->viscous_heat = 1 + slot;
+    return 0;
+}
+
 /* temperature name, c: the scalar state variable `name` is the particle's temperature [K],
  * of specific heat c [J/(kg K)] (a constant or an expression of the parameters): the
  * program reports the body's heat, sum m c (T - T at the start), and writes T to the VTU
@@ -809,6 +829,8 @@ static int statement(Law *L, const MatStmt *s)
         return dissipation_stmt(L, s);
     case MS_TEMPERATURE:
         return temperature_stmt(L, s);
+    case MS_VISCOUSHEAT:
+        return viscous_heat_stmt(L, s);
     case MS_WAVESPEED:
         return wavespeed_stmt(L, s);
     case MS_REQUIRE: /* a condition on the parameters, no part of the graph (check/law_require.c) */
@@ -984,14 +1006,15 @@ static int zero_state_entry(const SNode *s, void *ctx)
  * every result, so that the emitted law leaves out what they multiply.  The largest such
  * set: every slot that starts at 0, less those whose end value does not fold to 0 with the
  * set put to 0, until none is left out.  (The state's values come from the law alone: its
- * constant initial values, then its end values step by step.) */
+ * constant initial values, then its end values step by step; except the `viscousheat`
+ * slot, to which the program adds, never taken for 0.) */
 static void fold_zero_state(Law *L)
 {
     LawRoots *r = &L->out;
     char zero[LAW_MAX_SLOTS] = {0};
     int nzero = 0;
     for (int k = 0; k < r->nslots; k++)
-        nzero += zero[k] = r->init[k] == 0;
+        nzero += zero[k] = r->init[k] == 0 && k != r->viscous_heat - 1;
     ZeroState z = {L->g, zero};
     for (int changed = nzero > 0; changed;) {
         int next[LAW_MAX_SLOTS];

@@ -31,6 +31,8 @@ typedef struct {
     int next[LAW_MAX_SLOTS];     /* their values at the end of the law (graph nodes) */
     int dissipation;             /* 1 + the slot of the dissipated energy density; 0: none */
     int temperature;             /* 1 + the slot of the temperature [K]; 0: none */
+    int viscous_heat;            /* 1 + the slot the artificial viscosity's heat [J/m^3] is
+                                  * added to (`viscousheat`); 0: none */
     int has_wavespeed;           /* the law gives the particle's wave speed now: */
     int wavespeed;               /* its node [m/s] (`wavespeed`) */
     double heat_capacity;        /* its specific heat [J/(kg K)] (NaN: symbolic parameters) */

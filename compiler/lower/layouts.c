@@ -35,6 +35,10 @@ static const char *pair_terms(const BodyPlan *p)
 /* (the quadratic fit's pair sums ride with the lists' pairs: templates/body_quadratic.c) */
 #define QUADRATIC "the quadratic gradient (its pair sums ride with the lists')"
 
+/* (a law's `viscousheat`: each particle's share of its pairs' viscous heat, which the lists'
+ * pairs give both particles) */
+#define VHEAT "the law's viscous heat (the lists give each particle its pairs' share)"
+
 /* (sphc --no-simd: the lists' scalar loops alone) */
 #define NO_SIMD "--no-simd"
 
@@ -61,6 +65,8 @@ const char *layout_momentum_blocks_refused(const Model *m, const BodyPlan *p)
         return QUADRATIC;
     if (!p->viscosity)
         return "no viscosity (the blocks' break-even was measured with it)";
+    if (p->vheat)
+        return VHEAT;
     return p->pair_terms ? pair_terms(p) : NULL;
 }
 
@@ -72,6 +78,8 @@ const char *layout_stencil_momentum_refused(const Model *m, const BodyPlan *p)
         return "3D";
     if (p->quadratic)
         return QUADRATIC;
+    if (p->vheat)
+        return VHEAT;
     return p->pair_terms ? pair_terms(p) : NULL;
 }
 

@@ -124,6 +124,10 @@ static int law_combinations(const Model *m, const BodyModel *b, const BodyPlan *
         diag_warning(b->loc, "'timestep undeformed' keeps the paper's time step "
                      "on the undeformed spacing: the wave speed material '%s' gives (body "
                      "'%s') does not bound it", b->law->name, b->name);
+    if (p->roots.viscous_heat && !p->viscosity)
+        diag_warning(b->loc, "material '%s' takes in the artificial viscosity's heat "
+                     "(`viscousheat`), but body '%s' has no viscosity: its heat stays 0",
+                     b->law->name, b->name);
     if (p->fracture && (p->law_dt || p->law_fdot)) {
         diag_error(b->fracture.loc, "fracture cannot be combined with material '%s', which "
                    "reads %s: the paper's phase field is for elastic materials (section "

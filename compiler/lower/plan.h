@@ -27,6 +27,7 @@
     X(fracture, "fracture", FRACTURE, b->fracture.on) /* phase field, eq. 6-9, 61-63 */            \
     X(restrict_phase, "restrict", RESTRICT, b->fracture.restrict_expr != NULL)                     \
     X(state, "state", STATE, r->nslots > 0) /* its law has state (plasticity) */                   \
+    X(vheat, NULL, VHEAT, r->viscous_heat > 0 && p->viscosity) /* the viscosity's heat to it */ \
     X(law_dt, NULL, LAW_DT, law_reads(&p->law, r, LAW_INPUT_DT)) /* its law reads dt */      \
     X(law_fdot, NULL, LAW_FDOT, law_reads(&p->law, r, LAW_INPUT_FDOT)) /* ... and Fdot */   \
     X(law_wave, NULL, LAW_WAVE, r->has_wavespeed) /* it gives its wave speed */             \
@@ -63,6 +64,7 @@
     X(beta2_value, BETA2, b->beta2, 1)                                                             \
     X(c0, C0, b->c0, 1) /* eq. 59 */                                                               \
     X(lam2_rest, LAM2_REST, lam2_rest(b, p), p->law_wave) /* the bound's stretch at rest (desc) */  \
+    X(vheat_slot, VHEAT_SLOT, p->roots.viscous_heat - 1, p->vheat) /* its state value */        \
     X(hg, HG, 0.5 * b->hourglass * b->E, 1) /* alpha E / 2 */                                      \
     X(g0, G0, m->gravity[0], 1) /* gravity, compact components */                                  \
     X(g1, G1, m->dim == 2 ? m->gravity[2] : m->gravity[1], 1)                                      \

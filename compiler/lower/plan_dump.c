@@ -86,6 +86,16 @@ static void fast_graph(const BodyPlan *p, FILE *out)
     graph_print(&p->law, o, plan_law_fast_outputs(p, o), 0, out);
 }
 
+/* The name of the state variable the law's `viscousheat` names. */
+static const char *viscous_heat_name(const BodyPlan *p)
+{
+    const LawRoots *r = &p->roots;
+    for (int k = 0; k < r->nstates; k++)
+        if (r->states[k].offset == r->viscous_heat - 1)
+            return r->states[k].name;
+    return "?";
+}
+
 void plan_dump(const Plan *plan, FILE *out)
 {
     const Model *m = plan->model;
@@ -111,6 +121,9 @@ void plan_dump(const Plan *plan, FILE *out)
                     p->law_dt ? " dt (the time since its last evaluation)" : "",
                     p->law_fdot ? (p->law_dt ? ", Fdot (the velocity's gradient)"
                                              : " Fdot (the velocity's gradient)") : "");
+        if (p->vheat)
+            fprintf(out, "  the program adds the artificial viscosity's heat to state value %d "
+                         "(%s)\n", p->roots.viscous_heat - 1, viscous_heat_name(p));
         law_graph(p, 0, out);
         if (p->rare) {
             fprintf(out, "  fast path (the CPU's stress pass; no `if` without `else` taken, rare "

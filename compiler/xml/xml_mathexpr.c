@@ -24,7 +24,7 @@ static int is_keyword(const char *s)
 {
     static const char *const words[] = {
         "import", "scene", "let", "fn", "material", "body", "shape", "stress", "energy",
-        "dissipation", "require", "temperature", "wavespeed",
+        "dissipation", "require", "temperature", "wavespeed", "viscousheat",
         "state", "if", "else", "velocity", "force", "from", "to", "near", "measure", "plane",
         "expect", "reference", "within", "and", "or", "not", "skip", "Skip", "notch",
         "fracture", NULL};

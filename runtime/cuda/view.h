@@ -43,6 +43,7 @@ static sph_body *sph_cuda_body(const sph_body *h)
     b->vs = (double *)sph_dev_alloc(n * d * sizeof(double)); /* writes the one it reads */
     b->lam2 = (double *)sph_dev_copy(h->lam2, n * sizeof(double)); /* NULL without crush */
     b->psi = (double *)sph_dev_copy(h->psi, n * sizeof(double));
+    b->vq = (double *)sph_dev_copy(h->vq, n * sizeof(double)); /* NULL without viscous heat */
     b->fix = (uint8_t *)sph_dev_copy(h->fix, n);
     b->state = (double *)sph_dev_copy(h->state, n * (size_t)h->desc->nstate * sizeof(double));
     b->Fd = (double *)sph_dev_copy(h->Fd, n * 9 * sizeof(double)); /* a law that reads a rate */

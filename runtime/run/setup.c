@@ -146,6 +146,8 @@ static void allocate(sph_body *b)
         b->Qq = zalloc_lines(n * SPH_QN(D) * SPH_ROW(D), sizeof *b->Qq);
     }
     b->psi = zalloc(n, sizeof(double));
+    if (b->desc->vheat) /* (each momentum pass writes it whole) */
+        b->vq = zalloc(n, sizeof(double));
     b->sigma = zalloc(n * 6, sizeof(double));
     b->fix = zalloc(n, 1);
     /* a law whose wave speed at rest exceeds c0 bounds the first step as the later ones */
@@ -733,7 +735,7 @@ void sph_body_free(sph_body *b)
         free(b->ms_list[k]);
     free(b->bc_list), free(b->bc_count), free(b->ms_list), free(b->ms_count);
     free(b->X), free(b->u), free(b->v), free(b->a), free(b->work), free(b->F), free(b->L);
-    free(b->Q), free(b->Cv), free(b->Cs), free(b->lam2), free(b->psi), free(b->sigma), free(b->fix),
+    free(b->Q), free(b->Cv), free(b->Cs), free(b->lam2), free(b->psi), free(b->vq), free(b->sigma), free(b->fix),
         free(b->rare_hint);
     free(b->nb_start), free(b->nb), free(b->nb_k), free(b->wtab), free(b->gtab), free(b->htab);
     free(b->hb_start), free(b->hb), free(b->hb_k), free(b->stripe), free(b->stripe_sum), free(b->A);

@@ -55,6 +55,9 @@ struct sph_body {
     sph_real *Cv;       /* cof(F) = J F^-T for artificial viscosity, SPH_TENSOR */
     sph_real *Cs;       /* 1 / cof(F)'s largest singular value (sph_viscous_scale) */
     double *psi;        /* n strain energy density */
+    double *vq;         /* n the artificial viscosity's heating rate per unit mass: half of
+                           each of the particle's pairs' f_visc . (v_j - v_i), the momentum
+                           pass's (desc->vheat; NULL without) */
     double *sigma;      /* n*6 Cauchy stress, filled at output */
     double *work;       /* n*dim scratch for integrators (symplectic: v at n) */
     uint8_t *fix;       /* n bit masks: bit k = component k has a prescribed velocity */

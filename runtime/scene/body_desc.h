@@ -70,6 +70,9 @@ typedef struct {
                                    sum m c (T - T at the start) */
     int viscous;                /* 1: artificial viscosity, whose dissipated energy the run
                                    reports */
+    int vheat;                  /* 1 + the state value the artificial viscosity's heat [J/m^3]
+                                   is added to after each step (a law's `viscousheat`; b->vq);
+                                   0: none */
     int crush;                  /* 1: the time step follows the current spacing where the body
                                    is compressed (sph_model.dt_lambda_on; lam2 below) */
     /* `clamp P, N`: clamped on the plane through clamp_p with unit normal clamp_n into the
