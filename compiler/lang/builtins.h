@@ -39,6 +39,9 @@ typedef enum {
     X(cosh, 1, BF_CALL,  "cosh",  cosh(a[0]),  call(sinh, x))                                    \
     X(tanh, 1, BF_CALL,  "tanh",  tanh(a[0]),  sub(num(1), mul(fx, fx)))                         \
     X(coth, 1, BF_RECIP, "tanh",  1.0 / tanh(a[0]), NONE)                                        \
+    X(asin, 1, BF_CALL,  "asin",  asin(a[0]),  divide(num(1), call(sqrt, sub(num(1), mul(x, x))))) \
+    X(acos, 1, BF_CALL,  "acos",  acos(a[0]),  divide(num(-1), call(sqrt, sub(num(1), mul(x, x))))) \
+    X(atan, 1, BF_CALL,  "atan",  atan(a[0]),  divide(num(1), add(num(1), mul(x, x))))          \
     X(sqrt, 1, BF_CALL,  "sqrt",  sqrt(a[0]),  divide(num(0.5), fx))                             \
     X(log,  1, BF_CALL,  "log10", log10(a[0]), divide(num(1 / log(10.0)), x))                    \
     X(ln,   1, BF_CALL,  "log",   log(a[0]),   divide(num(1), x))                                \
