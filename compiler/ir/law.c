@@ -551,22 +551,35 @@ static int scalar_state(Law *L, const MatStmt *s, const char *what, const char *
     return -1;
 }
 
+/* A declaration `word name` that names the scalar state variable `name` for what the
+ * program does with it (dissipation, viscousheat, temperature): once a law, not inside an
+ * `if` or `tension` block; *field gets 1 + its slot.  what: the declaration's thing ("viscous
+ * heat"), example: a state to name.  Returns 0, or -1 after an error at it. */
+static int declare_state(Law *L, const MatStmt *s, const char *word, const char *what,
+                         const char *example, int *field)
+{
+    if (L->in_if || L->in_tension) {
+        char decl[64];
+        snprintf(decl, sizeof decl, "a %s declaration", word);
+        return not_in_if(L, s, decl);
+    }
+    if (*field) {
+        diag_error(s->loc, "material '%s' declares its %s twice", L->law->name, what);
+        return -1;
+    }
+    const int slot = scalar_state(L, s, word, example);
+    if (slot < 0)
+        return -1;
+    *field = 1 + slot;
+    return 0;
+}
+
 /* dissipation name: the scalar state variable `name` accumulates the energy density the law
  * has dissipated (plastic work); the program reports its volume integral per body. */
 static int dissipation_stmt(Law *L, const MatStmt *s)
 {
-    LawRoots *r = &L->out;
-    if (L->in_if || L->in_tension)
-        return not_in_if(L, s, "a dissipation declaration");
-    if (r->dissipation) {
-        diag_error(s->loc, "material '%s' declares its dissipation twice", L->law->name);
-        return -1;
-    }
-    const int slot = scalar_state(L, s, "dissipation", "state wp = 0");
-    if (slot < 0)
-        return -1;
-    r->dissipation = 1 + slot;
-    return 0;
+    return declare_state(L, s, "dissipation", "dissipation", "state wp = 0",
+                         &L->out.dissipation);
 }
 
 /* viscousheat name: the program adds to the scalar state variable `name` the energy density
@@ -575,18 +588,8 @@ static int dissipation_stmt(Law *L, const MatStmt *s)
  * as it reads any state (and should not assign it). */
 static int viscous_heat_stmt(Law *L, const MatStmt *s)
 {
-    LawRoots *r = &L->out;
-    if (L->in_if || L->in_tension)
-        return not_in_if(L, s, "a viscousheat declaration");
-    if (r->viscous_heat) {
-        diag_error(s->loc, "material '%s' declares its viscous heat twice", L->law->name);
-        return -1;
-    }
-    const int slot = scalar_state(L, s, "viscousheat", "state q = 0");
-    if (slot < 0)
-        return -1;
-    r->viscous_heat = 1 + slot;
-    return 0;
+    return declare_state(L, s, "viscousheat", "viscous heat", "state q = 0",
+                         &L->out.viscous_heat);
 }
 
 /* temperature name, c: the scalar state variable `name` is the particle's temperature [K],
@@ -596,14 +599,7 @@ static int viscous_heat_stmt(Law *L, const MatStmt *s)
 static int temperature_stmt(Law *L, const MatStmt *s)
 {
     LawRoots *r = &L->out;
-    if (L->in_if || L->in_tension)
-        return not_in_if(L, s, "a temperature declaration");
-    if (r->temperature) {
-        diag_error(s->loc, "material '%s' declares its temperature twice", L->law->name);
-        return -1;
-    }
-    const int slot = scalar_state(L, s, "temperature", "state T = T0");
-    if (slot < 0)
+    if (declare_state(L, s, "temperature", "temperature", "state T = T0", &r->temperature))
         return -1;
     Val c = need_scalar(s->value, eval(L, s->value), "a specific heat");
     if (!ok(c))
@@ -613,7 +609,6 @@ static int temperature_stmt(Law *L, const MatStmt *s)
                    "expression of its parameters", L->law->name);
         return -1;
     }
-    r->temperature = 1 + slot;
     return 0;
 }
 
