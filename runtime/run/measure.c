@@ -23,7 +23,21 @@ static void *zalloc(size_t n, size_t size)
     return p;
 }
 
-void sph_body_energies(const sph_body *b, double *strain, double *kinetic)
+/* |v|^2 of particle i at the middle of the last step, of length dt: v - dt/2 a on its free
+ * components (a prescribed one is held through the step: v) */
+static double v2_centred(const sph_body *b, int i, double dt)
+{
+    double s = 0;
+    for (int c = 0; c < b->dim; c++) {
+        const size_t k = (size_t)i * b->dim + c;
+        const int held = b->fix && (b->fix[i] >> c & 1);
+        const double v = b->v[k] - (held ? 0.0 : 0.5 * dt * b->a[k]);
+        s += v * v;
+    }
+    return s;
+}
+
+void sph_body_energies_at(const sph_body *b, double dt, double *strain, double *kinetic)
 {
     /* Summed in blocks of a fixed size, the blocks' sums in order: the same bits on any
      * number of threads (a run's team changes with the machine's load, par/team.h). */
@@ -36,6 +50,10 @@ void sph_body_energies(const sph_body *b, double *strain, double *kinetic)
         double es = 0, ek = 0;
         for (int i = k * BLOCK; i < end; i++) {
             es += b->psi[i];
+            if (dt > 0) {
+                ek += v2_centred(b, i, dt);
+                continue;
+            }
             for (int c = 0; c < D; c++)
                 ek += b->v[(size_t)i * D + c] * b->v[(size_t)i * D + c];
         }
@@ -45,9 +63,18 @@ void sph_body_energies(const sph_body *b, double *strain, double *kinetic)
     for (int k = 0; k < nblocks; k++)
         es += part[2 * k], ek += part[2 * k + 1];
     free(part);
-    ek -= sph_clamp_image_v2(b); /* (a clamp's images are not material) */
+    if (dt > 0) /* (a clamp's images are not material) */
+        for (int k = 0; k < b->nimages; k++)
+            ek -= v2_centred(b, b->image[k], dt);
+    else
+        ek -= sph_clamp_image_v2(b);
     *strain = es * b->vol;
     *kinetic = 0.5 * b->mass * ek;
+}
+
+void sph_body_energies(const sph_body *b, double *strain, double *kinetic)
+{
+    sph_body_energies_at(b, 0.0, strain, kinetic);
 }
 
 /* The sum over own particles of state value `slot` of the body's law less base (each term

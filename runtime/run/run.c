@@ -351,7 +351,7 @@ static int record(run_state *r)
     double *row = calloc((size_t)ncol + 1, sizeof(double)), total[2];
     double *held = malloc(2 * (size_t)s->nbodies * sizeof *held);
     for (int i = 0; i < s->nbodies; i++)
-        sph_body_energies(&s->bodies[i], &held[2 * i], &held[2 * i + 1]);
+        sph_body_energies_at(&s->bodies[i], s->dt, &held[2 * i], &held[2 * i + 1]);
     row[0] = s->t;
     for (int k = 0; k < ncol; k++)
         if (slot[k].col->value)
