@@ -140,12 +140,3 @@ void sph_clamp_reactions(sph_body *b, const double *g)
     for (int k = 0; k < b->nimages; k++)
         sph_clamp_image_reaction(b, k, g);
 }
-
-double sph_clamp_image_v2(const sph_body *b)
-{
-    double s = 0;
-    for (int k = 0; k < b->nimages; k++)
-        for (int c = 0; c < b->dim; c++)
-            s += b->v[(size_t)b->image[k] * b->dim + c] * b->v[(size_t)b->image[k] * b->dim + c];
-    return s;
-}

@@ -19,8 +19,6 @@ void sph_clamp_quiet(sph_body *b);
 /* After the momentum pass: each image's force (its acceleration less g, which may be NULL)
  * moved to its particle with the opposite sign, the image's acceleration zero. */
 void sph_clamp_reactions(sph_body *b, const double *g);
-/* sum |v|^2 over the images (which carry no kinetic energy: measure.c takes it out). */
-double sph_clamp_image_v2(const sph_body *b);
 
 SPH_C_END
 

@@ -5,7 +5,6 @@
 #include <string.h>
 
 #include "measure.h"
-#include "clamp.h"
 #include "core/alloc.h"
 #include "core/defs.h"
 #include "core/exit_codes.h"
@@ -24,13 +23,13 @@ static void *zalloc(size_t n, size_t size)
 }
 
 /* |v|^2 of particle i at the middle of the last step, of length dt: v - dt/2 a on its free
- * components (a prescribed one is held through the step: v) */
+ * components (a prescribed one is held through the step: v); with dt = 0, |v|^2 */
 static double v2_centred(const sph_body *b, int i, double dt)
 {
     double s = 0;
     for (int c = 0; c < b->dim; c++) {
         const size_t k = (size_t)i * b->dim + c;
-        const int held = b->fix && (b->fix[i] >> c & 1);
+        const int held = dt == 0 || (b->fix && (b->fix[i] >> c & 1));
         const double v = b->v[k] - (held ? 0.0 : 0.5 * dt * b->a[k]);
         s += v * v;
     }
@@ -42,7 +41,7 @@ void sph_body_energies_at(const sph_body *b, double dt, double *strain, double *
     /* Summed in blocks of a fixed size, the blocks' sums in order: the same bits on any
      * number of threads (a run's team changes with the machine's load, par/team.h). */
     enum { BLOCK = 4096 };
-    const int D = b->dim, nblocks = (b->nown + BLOCK - 1) / BLOCK;
+    const int nblocks = (b->nown + BLOCK - 1) / BLOCK;
     double *part = zalloc(2 * (size_t)nblocks + 1, sizeof(double));
 #pragma omp parallel for schedule(static)
     for (int k = 0; k < nblocks; k++) {
@@ -50,12 +49,7 @@ void sph_body_energies_at(const sph_body *b, double dt, double *strain, double *
         double es = 0, ek = 0;
         for (int i = k * BLOCK; i < end; i++) {
             es += b->psi[i];
-            if (dt > 0) {
-                ek += v2_centred(b, i, dt);
-                continue;
-            }
-            for (int c = 0; c < D; c++)
-                ek += b->v[(size_t)i * D + c] * b->v[(size_t)i * D + c];
+            ek += v2_centred(b, i, dt);
         }
         part[2 * k] = es, part[2 * k + 1] = ek;
     }
@@ -63,11 +57,8 @@ void sph_body_energies_at(const sph_body *b, double dt, double *strain, double *
     for (int k = 0; k < nblocks; k++)
         es += part[2 * k], ek += part[2 * k + 1];
     free(part);
-    if (dt > 0) /* (a clamp's images are not material) */
-        for (int k = 0; k < b->nimages; k++)
-            ek -= v2_centred(b, b->image[k], dt);
-    else
-        ek -= sph_clamp_image_v2(b);
+    for (int k = 0; k < b->nimages; k++) /* (a clamp's images are not material) */
+        ek -= v2_centred(b, b->image[k], dt);
     *strain = es * b->vol;
     *kinetic = 0.5 * b->mass * ek;
 }
