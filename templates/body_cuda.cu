@@ -177,7 +177,7 @@ static void @B@_stress_pass(sph_body *b
 //@if LAW_DT
                             , (double)law_dt
 //@endif
-                            );
+                            , 1);
 //@if QUADRATIC
         @B@_quad_stress_of(b, i, quad_k, aq);
 //@endif

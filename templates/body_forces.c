@@ -315,6 +315,19 @@ static inline void @B@_spare_Cs(sph_body *b, int i)
  * vector instruction: crack branching's stress pass took 0.55 of its time so. */
 enum { @B@_BLOCK = 32 };
 
+/* Whether this step's stress pass stores F: where something reads it after the step (the
+ * monitor, an output, a checkpoint: sph_body.want_F), or always where the body's own steps
+ * read it.  Its store every step took a fifth of crack branching's stress pass. */
+static inline int @B@_store_F(const sph_body *b)
+{
+//@if F_EVERY_STEP
+    (void)b;
+    return 1; /* (the hourglass term or the quadratic fit reads it every step) */
+//@else
+    return b->want_F;
+//@endif
+}
+
 //@if STAGED
 /* This body's law calls exp, log or pow, but its particles' values come in runs of 9, 11 or
  * 12 (3D tensors, the law's state), which the compiler does not vectorise in place: the
@@ -483,6 +496,7 @@ static void @B@_stress_block(sph_body *b, int i0, int m)
 //@endif
     }
     @B@_stress_lanes(b, &g, i0, m);
+    const int store_F = @B@_store_F(b);
     double *restrict Fb = b->F + (size_t)i0 * 9;
     sph_real *restrict Qb = b->Q;
 //@if VISCOSITY
@@ -492,7 +506,8 @@ static void @B@_stress_block(sph_body *b, int i0, int m)
         const size_t i = (size_t)(i0 + q);
         for (int r = 0; r < D; r++)
             for (int c = 0; c < D; c++) {
-                Fb[q * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] = g.F[r * D + c][q];
+                if (store_F)
+                    Fb[q * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] = g.F[r * D + c][q];
 //@if LAW_FDOT
                 b->Fd[i * 9 + (size_t)(sph_axis(D, r) * 3 + sph_axis(D, c))] = g.Fd[r * D + c][q];
 //@endif
@@ -534,48 +549,59 @@ static void @B@_stress_pass(sph_body *b)
 //@endif
 }
 //@else
-static void @B@_stress_pass(sph_body *b)
+/* Particles i0 .. i1 - 1 of the stress pass, with F stored or not (store_F a constant at
+ * each call: the loop is built twice, each vectorised). */
+SPH_FLAT void @B@_stress_run(sph_body *b, int i0, int i1, int store_F)
 {
     enum { D = @DIM@, R = SPH_ROW(D) };
-    const int n = b->nown;
     sph_real *restrict Ac = b->A;
+SPH_IVDEP /* particle i reads and writes entry i of arrays that never overlap */
+    for (int i = i0; i < i1; i++) {
+        sph_real *Ai = Ac + (size_t)i * D * R;
+        double A[D * D];
+        for (int r = 0; r < D; r++)
+            for (int c = 0; c < D; c++)
+                A[r * D + c] = Ai[r * R + c];
+        for (int k = 0; k < D * R; k++)
+            Ai[k] = 0; /* ready for the next step's gradient pass */
+//@if LAW_FDOT
+        sph_real *Adi = b->Ad + (size_t)i * D * R; /* the velocity's, the same way */
+        double Ad[D * D];
+        for (int r = 0; r < D; r++)
+            for (int c = 0; c < D; c++)
+                Ad[r * D + c] = Adi[r * R + c];
+        for (int k = 0; k < D * R; k++)
+            Adi[k] = 0;
+//@endif
+        @B@_particle_stress(b, i, A
+//@if LAW_FDOT
+                            , Ad
+//@endif
+//@if LAW_DT
+                            , b->law_dt
+//@endif
+                            , store_F);
+//@if VISCOSITY
+        @B@_spare_Cs(b, i);
+//@endif
+    }
+}
+
+static void @B@_stress_pass(sph_body *b)
+{
+    const int n = b->nown;
     @B@_gradient_pass(b);
+    const int store_F = @B@_store_F(b);
 #pragma omp parallel for schedule(static)
     for (int i0 = 0; i0 < n; i0 += @B@_BLOCK) {
         const int i1 = n - i0 < @B@_BLOCK ? n : i0 + @B@_BLOCK;
 //@if STENCIL
         @B@_stencil_gradient(b, i0, i1); /* (the run particles' A and Laplacian) */
 //@endif
-SPH_IVDEP /* particle i reads and writes entry i of arrays that never overlap */
-        for (int i = i0; i < i1; i++) {
-            sph_real *Ai = Ac + (size_t)i * D * R;
-            double A[D * D];
-            for (int r = 0; r < D; r++)
-                for (int c = 0; c < D; c++)
-                    A[r * D + c] = Ai[r * R + c];
-            for (int k = 0; k < D * R; k++)
-                Ai[k] = 0; /* ready for the next step's gradient pass */
-//@if LAW_FDOT
-            sph_real *Adi = b->Ad + (size_t)i * D * R; /* the velocity's, the same way */
-            double Ad[D * D];
-            for (int r = 0; r < D; r++)
-                for (int c = 0; c < D; c++)
-                    Ad[r * D + c] = Adi[r * R + c];
-            for (int k = 0; k < D * R; k++)
-                Adi[k] = 0;
-//@endif
-            @B@_particle_stress(b, i, A
-//@if LAW_FDOT
-                                , Ad
-//@endif
-//@if LAW_DT
-                                , b->law_dt
-//@endif
-                                );
-//@if VISCOSITY
-            @B@_spare_Cs(b, i);
-//@endif
-        }
+        if (store_F)
+            @B@_stress_run(b, i0, i1, 1);
+        else
+            @B@_stress_run(b, i0, i1, 0);
     }
 //@if QUADRATIC
     @B@_quad_stress(b);

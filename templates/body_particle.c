@@ -182,7 +182,8 @@ SPH_FLAT void @B@_stress_of(const double *A, const double *L,
 //@if ONE_PARTICLE
 /* One particle's stress (@B@_stress_of) from A_i and the body's arrays, the results into
  * them: the CUDA target's thread of a particle, and the CPU's stress pass where it runs over
- * the body's arrays themselves (body_forces.c).
+ * the body's arrays themselves (body_forces.c).  F is stored where store_F (a constant at
+ * each call, so that the CPU's loop is built once with the store and once without).
 //@if LAW_FDOT
  * Ad: the particle's sum of the velocity's gradient (D x D), for the rate of F.
 //@endif
@@ -197,7 +198,7 @@ SPH_FLAT void @B@_particle_stress(sph_body *b, int i, const double *A
 //@if LAW_DT
                                   , double dt
 //@endif
-                                  )
+                                  , int store_F)
 {
     enum { D = @DIM@ };
     double F[D * D], Q[D * D];
@@ -243,7 +244,8 @@ SPH_FLAT void @B@_particle_stress(sph_body *b, int i, const double *A
 //@endif
     for (int r = 0; r < D; r++)
         for (int c = 0; c < D; c++) {
-            b->F[(size_t)i * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] = F[r * D + c];
+            if (store_F)
+                b->F[(size_t)i * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] = F[r * D + c];
 //@if LAW_FDOT
             b->Fd[(size_t)i * 9 + sph_axis(D, r) * 3 + sph_axis(D, c)] = Fdp[r * D + c];
 //@endif

@@ -41,6 +41,8 @@
     X(pair_terms, NULL, PAIR_TERMS, plan_has_pair_terms(p)) /* any term of B_pair_terms */       \
     X(pair_v, NULL, PAIR_V, /* pairs read v of a neighbour */                                 \
       p->viscosity || p->pair_terms || p->law_fdot)                                            \
+    X(f_every_step, NULL, F_EVERY_STEP, /* its steps read F (the hourglass term, the fit) */  \
+      p->pair_terms || p->quadratic)                                                           \
     X(dim3, NULL, DIM3, m->dim == 3) /* else 2D (plane strain) */                               \
     X(simd, NULL, SIMD, !m->no_simd) /* loops over particles vectorised (not --no-simd) */      \
     X(stencil, NULL, STENCIL, m->dim == 2 && !m->no_simd) /* 2D: the lattice stencil's code */ \

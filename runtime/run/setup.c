@@ -133,6 +133,7 @@ static void allocate(sph_body *b)
     b->F = zalloc(n * 9, sizeof(double));
     for (size_t i = 0; i < n; i++)
         b->F[9 * i] = b->F[9 * i + 4] = b->F[9 * i + 8] = 1.0;
+    b->want_F = 1;
     b->Q = zalloc_lines(n * SPH_TENSOR_SIZE(D), sizeof *b->Q);
     b->A = zalloc_lines(n * SPH_TENSOR_SIZE(D), sizeof *b->A);
     b->Cv = zalloc_lines(n * SPH_TENSOR_SIZE(D), sizeof *b->Cv);

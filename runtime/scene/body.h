@@ -50,6 +50,9 @@ struct sph_body {
     double *X;          /* n*dim reference positions */
     double *u, *v, *a;  /* n*dim displacement, velocity, acceleration */
     double *F;          /* n*9 deformation gradient (3×3) */
+    int want_F;         /* whether the next stress pass stores F: only where something reads it
+                         * after the step (sph_sim_advance), unless the body's code reads it
+                         * every step (the plan's F_EVERY_STEP) */
     double *L;          /* n*dim*dim correction */
     sph_real *Q;        /* P·L (first Piola–Kirchhoff times correction), SPH_TENSOR */
     sph_real *Cv;       /* cof(F) = J F^-T for artificial viscosity, SPH_TENSOR */
