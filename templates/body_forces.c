@@ -783,7 +783,7 @@ static double @B@_momentum_stripe(sph_body *b, int s)
     int r = sph_run_after(b, b->stripe[s]), c = b->rest ? sph_rest_after(b, b->stripe[s]) : 0;
 //@endif
     for (int i = b->stripe[s]; i < end; i++) {
-        int p0 = hs[i], p1 = hs[i + 1];
+        int p0, p1;
         const int *lj = hb, *lk = hk;
 //@if STENCIL_MOMENTUM
         while (r < b->nruns && b->st_run[2 * r + 1] <= i)
@@ -794,12 +794,16 @@ static double @B@_momentum_stripe(sph_body *b, int s)
             i = e - 1;
             continue;
         }
+        /* (the half lists' start read only where they are the lists: read for every run
+         * as well, it missed the cache there and took a twentieth of crack branching's
+         * run) */
         if (b->rest) { /* (every particle not in a run has its rest list) */
             while (b->rest[c] < i)
                 c++;
             p0 = b->rest_start[c], p1 = b->rest_start[c + 1], lj = b->rest_j, lk = b->rest_k;
-        }
+        } else
 //@endif
+            p0 = hs[i], p1 = hs[i + 1];
         sph_real pv = 0;
         @B@_vec fi;
         @B@_momentum_pairs(b, i, p0, p1, lj, lk, 1, acc, &fi, &pv);
