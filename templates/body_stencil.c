@@ -164,6 +164,9 @@ static int @B@_stencil_momentum(sph_body *b, int a, int e, double *power)
     const double *restrict Q = b->Q;
     double *restrict acc = b->a;
     double f_run[2 * @B@_STENCIL]; /* the offset's forces on i, x and y */
+    /* (divided once here: in the loop the compiler divided every four pairs, unable to tell
+     * that the stores to the accelerations leave b->rho0 as it was) */
+    const double inv_rho = 1.0 / b->rho0;
 //@if VISCOSITY
     typedef @B@_v4 v4;
     const double *restrict Cv = b->Cv, *restrict Cs = b->Cs, *restrict v = b->v;
@@ -182,7 +185,7 @@ static int @B@_stencil_momentum(sph_body *b, int a, int e, double *power)
             const v8 q1 = (*(const v8 *)(Q + 4 * i + 8) + *(const v8 *)(Q + 4 * j + 8)) * w;
             v8 f = (__builtin_shufflevector(q0, q1, 0, 1, 4, 5, 8, 9, 12, 13) +
                     __builtin_shufflevector(q0, q1, 2, 3, 6, 7, 10, 11, 14, 15)) *
-                   (1.0 / b->rho0);
+                   inv_rho;
 //@if VISCOSITY
             const v8 c0 = (*(const v8 *)(Cv + 4 * i) + *(const v8 *)(Cv + 4 * j)) * w;
             const v8 c1 = (*(const v8 *)(Cv + 4 * i + 8) + *(const v8 *)(Cv + 4 * j + 8)) * w;
