@@ -801,9 +801,12 @@ static double @B@_momentum_stripe(sph_body *b, int s)
             while (b->rest[c] < i)
                 c++;
             p0 = b->rest_start[c], p1 = b->rest_start[c + 1], lj = b->rest_j, lk = b->rest_k;
-        } else
-//@endif
+        } else {
             p0 = hs[i], p1 = hs[i + 1];
+        }
+//@else
+        p0 = hs[i], p1 = hs[i + 1];
+//@endif
         sph_real pv = 0;
         @B@_vec fi;
         @B@_momentum_pairs(b, i, p0, p1, lj, lk, 1, acc, &fi, &pv);
