@@ -234,9 +234,9 @@ static void @B@_gradient_blocks(sph_body *b)
 static void @B@_gradient_lists(sph_body *b)
 {
     const int *restrict hs = b->hb_start, *restrict hb = b->hb, *restrict hk = b->hb_k;
-    for (int colour = 0; colour < 2; colour++) {
+    for (int colour = 0; colour < b->ncolours; colour++) {
 #pragma omp parallel for schedule(static)
-        for (int s = colour; s < b->nstripes; s += 2) {
+        for (int s = colour; s < b->nstripes; s += b->ncolours) {
 //@if DIM3
 //@else
             /* With the lattice stencil, only what its runs leave (the rest lists,
@@ -971,9 +971,9 @@ static void @B@_momentum_pass(sph_body *b)
     if (b->mb)
         @B@_momentum_copy(b);
 //@endif
-    for (int colour = 0; colour < 2; colour++) {
+    for (int colour = 0; colour < b->ncolours; colour++) {
 #pragma omp parallel for schedule(static)
-        for (int s = colour; s < b->nstripes; s += 2)
+        for (int s = colour; s < b->nstripes; s += b->ncolours)
 //@if MOMENTUM_BLOCKS
             b->stripe_sum[s] = b->mb ? @B@_momentum_blocks(b, s) : @B@_momentum_stripe(b, s);
 //@else

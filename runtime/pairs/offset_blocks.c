@@ -229,7 +229,7 @@ void sph_offset_blocks_setup(sph_body *b)
 }
 
 /* The momentum pass's blocks: stripe by stripe, a block's pairs touch its stripe and the
- * next one only, as the half lists' do. */
+ * next ncolours - 1 only, as the half lists' do. */
 void sph_momentum_blocks_setup(sph_body *b)
 {
     if (!blocks_wanted(b, 2) || b->nstripes < 1)

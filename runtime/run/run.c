@@ -506,7 +506,8 @@ static double min_nan(double a, double b)
 /* What summary.json says of a body: its extent and largest displacement and speed now, over
  * all processes. */
 typedef struct {
-    double lo[3], hi[3], umax, vmax, particles, pairs, stencil, blocked, mblocked;
+    double lo[3], hi[3], umax, vmax, particles, pairs, stencil, blocked, mblocked, mtasks;
+    double stripes, colours;
 } body_stats;
 
 static void body_stats_of(const sph_body *b, body_stats *st)
@@ -529,12 +530,15 @@ static void body_stats_of(const sph_body *b, body_stats *st)
     double most[16] = {hi[0], hi[1], hi[2], -lo[0], -lo[1], -lo[2], umax, vmax};
     for (int k = 0; k < 8; k++)
         most[8 + k] = isnan(most[k]);
-    double count[5] = {b->nown, (double)b->npairs, 0, (double)b->ob_pairs, (double)b->mb_pairs};
+    double count[7] = {b->nown, (double)b->npairs, 0, (double)b->ob_pairs, (double)b->mb_pairs,
+                       b->mb ? b->mb_start[b->nmb] : 0, b->nstripes};
     for (int r = 0; r < b->nruns; r++) /* the particles of the lattice stencil's runs */
         count[2] += b->st_run[2 * r + 1] - b->st_run[2 * r];
+    double colours = b->ncolours;
     if (b->par->size > 1) {
         b->par->max(most, 16);
-        b->par->sum(count, 5);
+        b->par->sum(count, 7);
+        b->par->max(&colours, 1);
     }
     for (int k = 0; k < 8; k++)
         most[k] = most[8 + k] > 0 ? NAN : most[k];
@@ -542,7 +546,8 @@ static void body_stats_of(const sph_body *b, body_stats *st)
         st->hi[k] = most[k], st->lo[k] = -most[3 + k];
     st->umax = most[6], st->vmax = most[7];
     st->particles = count[0], st->pairs = count[1], st->stencil = count[2];
-    st->blocked = count[3], st->mblocked = count[4];
+    st->blocked = count[3], st->mblocked = count[4], st->mtasks = count[5];
+    st->stripes = count[6], st->colours = colours;
 }
 
 static void body_summary(sph_json *j, const sph_body *b, const body_stats *st)
@@ -555,6 +560,11 @@ static void body_summary(sph_json *j, const sph_body *b, const body_stats *st)
     sph_json_int(j, "stencil_particles", (long)st->stencil); /* (pairs/stencil.c) */
     sph_json_int(j, "offset_block_pairs", (long)st->blocked); /* (pairs/offset_blocks.c) */
     sph_json_int(j, "momentum_block_pairs", (long)st->mblocked);
+    /* the share of the momentum blocks' lanes that hold a pair (particle_order.c) */
+    sph_json_num(j, "momentum_block_lanes",
+                 st->mtasks > 0 ? st->mblocked / (st->mtasks * SPH_OB_LANES) : 0);
+    sph_json_int(j, "stripes", (long)st->stripes); /* (setup.c: the half lists' stripes) */
+    sph_json_int(j, "colours", (long)st->colours);
     sph_json_num(j, "dx", b->dx);
     sph_json_num(j, "h", b->h);
     sph_json_num(j, "c0", b->c0);

@@ -23,6 +23,7 @@
 #include "pairs/quadratic.h"
 #include "pairs/stencil.h"
 #include "run/clamp.h"
+#include "run/particle_order.h"
 #include "par/par.h"
 #include "scene/body.h"
 #include "scene/body_desc.h"
@@ -56,69 +57,6 @@ static void *zalloc_lines(size_t n, size_t size)
         exit(SPH_EXIT_SETUP);
     }
     return memset(p, 0, bytes);
-}
-
-/* ------------------------------------------------------------------ particle order */
-
-/* Particles sorted by slabs across the body's longest extent, the shortest axis fastest:
- * for beams, plates and columns every neighbour of a particle is then within a few slabs in
- * memory, so the gathers of the force passes stay in cache. */
-static int order_axes[3];
-static const double *order_X;
-static int order_dim;
-
-static int by_slab(const void *pa, const void *pb)
-{
-    const double *a = order_X + (size_t)(*(const int *)pa) * order_dim;
-    const double *b = order_X + (size_t)(*(const int *)pb) * order_dim;
-    for (int q = 0; q < order_dim; q++) {
-        int k = order_axes[q];
-        if (a[k] != b[k])
-            return a[k] < b[k] ? -1 : 1;
-    }
-    return 0;
-}
-
-static void order_particles(sph_body *b)
-{
-    const int D = b->dim, n = b->nown; /* (a halo stays after the own particles) */
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (int i = 0; i < n; i++)
-        for (int k = 0; k < D; k++) {
-            lo[k] = fmin(lo[k], b->X[(size_t)i * D + k]);
-            hi[k] = fmax(hi[k], b->X[(size_t)i * D + k]);
-        }
-    for (int k = 0; k < D; k++)
-        order_axes[k] = k;
-    for (int a = 0; a < D; a++) /* longest extent first (slowest), shortest last */
-        for (int c = a + 1; c < D; c++)
-            if (hi[order_axes[c]] - lo[order_axes[c]] > hi[order_axes[a]] - lo[order_axes[a]]) {
-                int t = order_axes[a];
-                order_axes[a] = order_axes[c];
-                order_axes[c] = t;
-            }
-    int *perm = zalloc((size_t)n, sizeof(int));
-    for (int i = 0; i < n; i++)
-        perm[i] = i;
-    order_X = b->X;
-    order_dim = D;
-    qsort(perm, (size_t)n, sizeof(int), by_slab);
-    double *X = zalloc((size_t)b->n * D, sizeof(double));
-    memcpy(X, b->X, (size_t)b->n * D * sizeof *X);
-    for (int i = 0; i < n; i++)
-        for (int k = 0; k < D; k++)
-            X[(size_t)i * D + k] = b->X[(size_t)perm[i] * D + k];
-    if (b->gid) {
-        int64_t *gid = zalloc((size_t)b->n, sizeof *gid);
-        memcpy(gid, b->gid, (size_t)b->n * sizeof *gid);
-        for (int i = 0; i < n; i++)
-            gid[i] = b->gid[perm[i]];
-        free(b->gid);
-        b->gid = gid;
-    }
-    free(b->X);
-    free(perm);
-    b->X = X;
 }
 
 int sph_fast_law_off;
@@ -442,14 +380,23 @@ static void half_lists(sph_body *b)
     /* The passes use only the half lists; the full ones are not kept. */
     free(b->nb_start), free(b->nb), free(b->nb_k);
     b->nb_start = b->nb = b->nb_k = NULL;
-    /* Stripes of at least `reach` particles; fewer than 4 stripes: one, run serially.  A
-     * multiple of 4 stripes (of 8 from 8 on), so that each colour's split evenly among 2
-     * threads (and 4), which a pass of few stripes feels: with 27 stripes, one of two threads
-     * idled through a seventh of the odd colour.  The count depends on the body alone, never
-     * on the threads: the order of the sums, and so their bits, are the same on any number
-     * of threads. */
-    int ns = n / reach;
-    ns = ns < 4 ? 1 : ns < 8 ? 4 : ns / 8 * 8;
+    /* Stripes in C colours (stripe s's colour: s mod C), each at least reach / (C - 1)
+     * particles long: a pair of stripe s then touches stripes s .. s + C - 1 only, and the
+     * stripes of a colour never share a particle.  Two colours where that gives 4 stripes
+     * or more; else more colours, for a body whose reach is over a quarter of it (the
+     * Taylor bar, its particles along its axis fastest: particle_order.c), up to 8; else one
+     * stripe, run serially.  A multiple of 2C stripes (of 4C from 4C on), so that each
+     * colour's split evenly among 2 threads (and 4), which a pass of few stripes feels: with
+     * 27 stripes, one of two threads idled through a seventh of the odd colour.  The counts
+     * depend on the body alone, never on the threads: the order of the sums, and so their
+     * bits, are the same on any number of threads. */
+    int ns = 1, nc = 1;
+    for (int c = 2; c <= 8 && ns == 1; c++) {
+        const int most = n / ((reach + c - 2) / (c - 1));
+        if (most >= 2 * c)
+            ns = most < 4 * c ? 2 * c : most / (4 * c) * (4 * c), nc = c;
+    }
+    b->ncolours = nc;
     b->nstripes = ns;
     b->stripe = zalloc((size_t)ns + 1, sizeof(int));
     b->stripe_sum = zalloc((size_t)ns, sizeof(double));
@@ -694,7 +641,7 @@ int sph_body_setup(sph_body *b, const sph_body_desc *d, const sph_model *m, doub
         return -1;
     if (par->agree(check_size(b, b->n))) /* (with the halo, on many processes) */
         return -1;
-    SPH_TIMED("set-up: particle order", order_particles(b));
+    SPH_TIMED("set-up: particle order", sph_order_particles(b));
     if (d->clamp && sph_clamp_setup(b))
         return -1;
     SPH_TIMED("set-up: neighbour search",

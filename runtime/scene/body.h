@@ -74,13 +74,14 @@ struct sph_body {
     sph_real *htab;       /* ntab: V W(r0) / (rho0 r0^2), for the hourglass penalty */
     int ntab;
     /* Half lists (j > i only) for the passes that visit each pair once and add its share
-     * to both particles.  Particles are cut into stripes of consecutive indices, at least as
-     * long as the largest j - i, so a pair of stripe s touches only stripes s and s + 1:
-     * the even stripes can run in parallel, then the odd ones, without two threads ever
-     * writing the same particle. */
+     * to both particles.  Particles are cut into stripes of consecutive indices, in
+     * ncolours colours (stripe s's: s mod ncolours), each at least the largest j - i over
+     * ncolours - 1 long, so a pair of stripe s touches only stripes s .. s + ncolours - 1:
+     * the stripes of one colour can run in parallel, then those of the next, without two
+     * threads ever writing the same particle (mostly two colours, even and odd stripes). */
     int *hb_start, *hb, *hb_k;
     int *stripe;          /* nstripes + 1 particle indices */
-    int nstripes;
+    int nstripes, ncolours;
     double *stripe_sum;   /* nstripes: a sum over each stripe's pairs (the viscous power)
                            * or particles (SPH_STEP_SUM_OVER), added up in stripe order after
                            * the pass: the same bits on any number of threads */
