@@ -1,8 +1,8 @@
 /* stencil.c — the lattice stencil of a body's pair passes (sph_body's st_*, scene/body.h).
  *
- * On a lattice the particles are ordered slab by slab (setup.c), so away from the surfaces,
- * notches and the halo the neighbour at a given lattice offset is j = i + o, the same o for
- * every particle, and its offset table entry is the same too.  The CPU's pair passes then
+ * On a lattice the particles are ordered slab by slab (run/particle_order.c), so away from
+ * the surfaces, notches and the halo the neighbour at a given lattice offset is j = i + o,
+ * the same o for every particle, and its offset table entry is the same too.  The CPU's pair passes then
  * run such particles offset by offset (templates/body_forces.c): for one offset, the same
  * arithmetic on consecutive particles with the table entry a constant, which the compiler
  * does several particles to a vector instruction, without the lists' indices.
@@ -14,9 +14,10 @@
  * neighbours is a sum over the stencil's offsets, in both directions.  Runs shorter than
  * MIN_RUN are left to the lists.
  *
- * In 2D only: in 3D the slab order puts a body's shortest extent fastest, and runs are the
- * few particles across it more than a support radius from both faces (4 a run on the
- * benchmarks' plate and column, none on the Taylor bar), too short to gain anything. */
+ * In 2D only: in 3D the slab order puts a body's shortest extent fastest (or the axis of a
+ * prism such as the Taylor bar), and runs are the few particles across it more than a
+ * support radius from both faces (4 a run on the benchmarks' plate and column), too short
+ * to gain anything. */
 #include <stdlib.h>
 #include <string.h>
 
