@@ -13,7 +13,7 @@
  * directions, its lanes half used.  So the fastest axis is the shortest along which the
  * body is a prism: every line along it holds the same positions (the Taylor bar's axis,
  * not the rows of its disc: its blocks' lanes 0.70 full across, 0.975 along; its run took
- * 0.84 of the time on one thread).  Where no axis is one, the default order stays.  The
+ * 0.87 of the time on one thread).  Where no axis is one, the default order stays.  The
  * order depends on the particles alone, never on the threads. */
 #include <math.h>
 #include <stdlib.h>
