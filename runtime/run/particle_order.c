@@ -10,7 +10,7 @@
  * eight consecutive particles at once for each distinct offset j - i among them
  * (pairs/offset_blocks.c), and where consecutive lines differ (the rows of a round
  * cross-section) a block that spans two has its neighbours at two offsets for most
- * directions, its lanes half used.  So the fastest axis is the shortest along which the
+ * directions, some of its lanes idle.  So the fastest axis is the shortest along which the
  * body is a prism: every line along it holds the same positions (the Taylor bar's axis,
  * not the rows of its disc: its blocks' lanes 0.70 full across, 0.975 along; its run took
  * 0.87 of the time on one thread).  Where no axis is one, the default order stays.  The
