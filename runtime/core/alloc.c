@@ -12,6 +12,8 @@
 #include <sys/mman.h>
 
 #include "alloc.h"
+#include "exit_codes.h"
+#include "message.h"
 
 void *sph_alloc_large(size_t bytes, int zero)
 {
@@ -26,4 +28,14 @@ void *sph_alloc_large(size_t bytes, int zero)
     madvise(p, size, MADV_HUGEPAGE); /* advice: ordinary pages where it is not taken */
 #endif
     return zero ? memset(p, 0, bytes) : p;
+}
+
+void *sph_alloc_setup(size_t bytes, int zero)
+{
+    void *p = sph_alloc_large(bytes, zero);
+    if (!p) {
+        sph_error("out of memory (%zu bytes)", bytes);
+        exit(SPH_EXIT_SETUP);
+    }
+    return p;
 }

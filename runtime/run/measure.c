@@ -7,19 +7,12 @@
 #include "measure.h"
 #include "core/alloc.h"
 #include "core/defs.h"
-#include "core/exit_codes.h"
-#include "core/message.h"
 #include "par/par.h"
 #include "scene/body.h"
 
 static void *zalloc(size_t n, size_t size)
 {
-    void *p = sph_alloc_large(n * size, 1); /* (huge pages for large arrays: core/alloc.c) */
-    if (!p) {
-        sph_error("out of memory");
-        exit(SPH_EXIT_SETUP);
-    }
-    return p;
+    return sph_alloc_setup(n * size, 1); /* (huge pages for large arrays: core/alloc.c) */
 }
 
 /* |v|^2 of particle i at the middle of the last step, of length dt: v - dt/2 a on its free

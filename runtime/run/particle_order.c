@@ -21,8 +21,6 @@
 
 #include "particle_order.h"
 #include "core/alloc.h"
-#include "core/exit_codes.h"
-#include "core/message.h"
 
 /* The sort's key: the axes, slowest first, and the positions (qsort passes no context). */
 static int order_axes[3];
@@ -41,20 +39,10 @@ static int by_slab(const void *pa, const void *pb)
     return 0;
 }
 
-static void *alloc_or_exit(size_t bytes)
-{
-    void *p = sph_alloc_large(bytes ? bytes : 1, 0);
-    if (!p) {
-        sph_error("out of memory");
-        exit(SPH_EXIT_SETUP);
-    }
-    return p;
-}
-
 /* The permutation that sorts the n particles of X by axes (slowest first). */
 static int *sorted(const double *X, int n, int dim, const int axes[3])
 {
-    int *perm = alloc_or_exit((size_t)n * sizeof *perm);
+    int *perm = sph_alloc_setup((size_t)n * sizeof *perm, 0);
     for (int i = 0; i < n; i++)
         perm[i] = i;
     memcpy(order_axes, axes, sizeof order_axes);
@@ -109,7 +97,7 @@ static int *prism_order(const double *X, int n, const int axes[3], const double 
 static void apply_order(sph_body *b, const int *perm)
 {
     const int D = b->dim, n = b->nown;
-    double *X = alloc_or_exit((size_t)b->n * D * sizeof *X);
+    double *X = sph_alloc_setup((size_t)b->n * D * sizeof *X, 0);
     memcpy(X, b->X, (size_t)b->n * D * sizeof *X);
     for (int i = 0; i < n; i++)
         for (int k = 0; k < D; k++)
@@ -118,7 +106,7 @@ static void apply_order(sph_body *b, const int *perm)
     b->X = X;
     if (!b->gid)
         return;
-    int64_t *gid = alloc_or_exit((size_t)b->n * sizeof *gid);
+    int64_t *gid = sph_alloc_setup((size_t)b->n * sizeof *gid, 0);
     memcpy(gid, b->gid, (size_t)b->n * sizeof *gid);
     for (int i = 0; i < n; i++)
         gid[i] = b->gid[perm[i]];

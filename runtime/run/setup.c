@@ -38,12 +38,7 @@
 
 static void *zalloc(size_t n, size_t size)
 {
-    void *p = sph_alloc_large(n * size, 1); /* (huge pages for large arrays: alloc.c) */
-    if (!p) {
-        sph_error("out of memory");
-        exit(SPH_EXIT_SETUP);
-    }
-    return p;
+    return sph_alloc_setup(n * size, 1); /* (huge pages for large arrays: core/alloc.c) */
 }
 
 /* zalloc on a cache line: the pair passes read A, Q, Cv and wtab a short vector at a time

@@ -54,28 +54,35 @@ static void order_of(const char *name, const sph_shape *prims, int np, double dx
     free(before), free(after), free(b.X);
 }
 
+/* A shape of one or two primitives (the second subtracted) and its expected fastest axis. */
+typedef struct {
+    const char *name;
+    sph_shape prims[2];
+    int nprims, fast;
+} shape_case;
+
+#define BOX(x0, y0, z0, x1, y1, z1, sub)                                                     \
+    {SPH_BOX, {x0, y0, z0}, {x1, y1, z1}, 0, sub, NULL, NULL, 0}
+#define CYL(x1, y1, z1, r) {SPH_CYLINDER, {0, 0, 0}, {x1, y1, z1}, r, 0, NULL, NULL, 0}
+
+static const shape_case cases[] = {
+    /* a prism along the shortest extent, or none: the shortest fastest */
+    {"box 2 x 1 x 0.5", {BOX(0, 0, 0, 2, 1, 0.5, 0)}, 1, Z_},
+    {"box 0.4 x 1 x 2", {BOX(0, 0, 0, 0.4, 1, 2, 0)}, 1, X_},
+    {"sphere", {{SPH_SPHERE, {0, 0, 0}, {0, 0, 0}, 1, 0, NULL, NULL, 0}}, 1, Z_},
+    {"cylinder shorter than wide, along y", {CYL(0, 0.3, 0, 1)}, 1, Y_},
+    {"box with a pocket (no prism)",
+     {BOX(0, 0, 0, 2, 1, 0.6, 0), BOX(0.9, 0.45, 0.3, 1.1, 0.55, 1, 1)}, 2, Z_},
+    /* a prism along a longer axis only: that axis fastest */
+    {"cylinder along z", {CYL(0, 0, 4, 0.6)}, 1, Z_},
+    {"cylinder along x", {CYL(3, 0, 0, 0.5)}, 1, X_},
+    {"step (a box less a corner) along y",
+     {BOX(0, 0, 0, 2, 1, 0.6, 0), BOX(1, -1, 0.3, 3, 2, 1, 1)}, 2, Y_},
+};
+
 int main(void)
 {
-    /* a prism along the shortest extent, or none: the shortest fastest */
-    const sph_shape box = {SPH_BOX, {0, 0, 0}, {2, 1, 0.5}, 0, 0, NULL, NULL, 0};
-    order_of("box 2 x 1 x 0.5", &box, 1, 0.1, Z_);
-    const sph_shape flat = {SPH_BOX, {0, 0, 0}, {0.4, 1, 2}, 0, 0, NULL, NULL, 0};
-    order_of("box 0.4 x 1 x 2", &flat, 1, 0.1, X_);
-    const sph_shape ball = {SPH_SPHERE, {0, 0, 0}, {0, 0, 0}, 1, 0, NULL, NULL, 0};
-    order_of("sphere", &ball, 1, 0.1, Z_);
-    const sph_shape disc = {SPH_CYLINDER, {0, 0, 0}, {0, 0.3, 0}, 1, 0, NULL, NULL, 0};
-    order_of("cylinder shorter than wide, along y", &disc, 1, 0.1, Y_);
-    /* a prism along a longer axis only: that axis fastest */
-    const sph_shape bar = {SPH_CYLINDER, {0, 0, 0}, {0, 0, 4}, 0.6, 0, NULL, NULL, 0};
-    order_of("cylinder along z", &bar, 1, 0.1, Z_);
-    const sph_shape rod = {SPH_CYLINDER, {0, 0, 0}, {3, 0, 0}, 0.5, 0, NULL, NULL, 0};
-    order_of("cylinder along x", &rod, 1, 0.1, X_);
-    const sph_shape step[2] = {{SPH_BOX, {0, 0, 0}, {2, 1, 0.6}, 0, 0, NULL, NULL, 0},
-                               {SPH_BOX, {1, -1, 0.3}, {3, 2, 1}, 0, 1, NULL, NULL, 0}};
-    order_of("step (a box less a corner) along y", step, 2, 0.1, Y_);
-    const sph_shape notched[2] = {{SPH_BOX, {0, 0, 0}, {2, 1, 0.6}, 0, 0, NULL, NULL, 0},
-                                  {SPH_BOX, {0.9, 0.45, 0.3}, {1.1, 0.55, 1}, 0, 1, NULL, NULL,
-                                   0}};
-    order_of("box with a pocket (no prism)", notched, 2, 0.1, Z_);
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
+        order_of(cases[c].name, cases[c].prims, cases[c].nprims, 0.1, cases[c].fast);
     return failures != 0;
 }
