@@ -1005,6 +1005,6 @@ static void @B@_momentum_pass(sph_body *b)
 
 static void @B@_forces(sph_body *b)
 {
-    SPH_PASS(@B@_stress_pass, (b)); /* (timed with --profile) */
-    SPH_PASS(@B@_momentum_pass, (b));
+    SPH_BODY_PASS(b, "stress_pass", @B@_stress_pass(b)); /* (timed with --profile) */
+    SPH_BODY_PASS(b, "momentum_pass", @B@_momentum_pass(b));
 }

@@ -92,7 +92,7 @@ static void scene_monitor_cuda(Emitter *E)
           " * periodic check copies a few numbers, not the state (runtime/run/monitor.c). */\n"
           "static void model_monitor(sph_sim *s, sph_monitor_sums *out)\n{\n", out);
     for (int i = 0; i < m->nbodies; i++)
-        fprintf(out, "    %s_monitor(DEV[%d]);\n", m->bodies[i].name, i);
+        fprintf(out, "    %s_monitor(DEV[%d]);\n", emit_code_name(E, i), i);
     fputs("    SPH_CUDA_CHECK(cudaGetLastError());\n", out);
     for (int i = 0; i < m->nbodies; i++)
         fprintf(out, "    sph_cuda_monitor_sums(DEV[%d], &out[%d]);\n", i, i);

@@ -31,6 +31,14 @@ typedef struct {
     const char *file; /* PIECE_TEMPLATE, PIECE_LANES */
 } BodyPiece;
 
+/* Whether a piece is the body's code (its law and passes), which another body whose code
+ * is the same text runs too (emit_share.c), rather than its own: its boundary conditions
+ * and the bound of its phase field, whose values differ between bodies. */
+static inline int piece_is_code(PieceKind kind)
+{
+    return kind != PIECE_BCS && kind != PIECE_RESTRICT;
+}
+
 /* What differs between the targets; every member must be set (emit_program checks). */
 typedef struct {
     const char *name;   /* as in --target */
@@ -41,7 +49,8 @@ typedef struct {
      * closed at the indent given. */
     void (*loop_open)(FILE *out, const char *indent, const char *i, const char *n);
     void (*loop_close)(FILE *out, const char *indent);
-    /* A pass of body `body` in the step: `body_pass(args);`, timed for --profile. */
+    /* A pass in the step of the body `b` whose code is body `body`'s: `body_pass(args);`,
+     * timed for --profile. */
     void (*pass)(FILE *out, const char *body, const char *pass, const char *args);
     /* Whether a boundary condition's time window is evaluated inside its loop (where the
      * device reads t and dt) rather than once before it. */
@@ -51,6 +60,9 @@ typedef struct {
     int law_dt_argument;
     /* The pieces of each body's code. */
     const BodyPiece *body;
+    /* Whether a body whose code is another's text runs that body's functions (emit_share.c);
+     * its passes are then timed under its own name (SPH_BODY_PASS). */
+    int share_code;
     /* The scene's step and whatever glue the runtime calls (model_step, ...). */
     void (*scene)(Emitter *E);
     /* Before the scene description, and the members of sph_model it adds. */
@@ -66,12 +78,30 @@ struct Emitter {
     FILE *out;
     const EmitTarget *target;
     int mpi; /* sphc --mpi: the program runs on many processes (sph_mpi_main) */
+    /* For each body, the body whose code it runs: itself, or an earlier body whose code
+     * pieces are the same text (emit_share.c); NULL: each its own. */
+    const int *code;
 };
+
+/* The name of the body whose code body i runs (its passes, law and pair terms are that
+ * body's functions); its boundary conditions are its own, under its own name. */
+static inline const char *emit_code_name(const Emitter *E, int i)
+{
+    return E->m->bodies[E->code ? E->code[i] : i].name;
+}
 
 /* The targets' tables (emit_target.c) and the targets' scenes. */
 const EmitTarget *emit_target(Target t);
 void emit_scene_cpu(Emitter *E);  /* emit_step.c */
 void emit_scene_cuda(Emitter *E); /* emit_cuda.c */
+
+/* ---- a body's code and the bodies that share it */
+/* One piece of body b's code, as the target lists them (emit_piece.c); -1 after
+ * reporting. */
+int emit_body_piece(Emitter *E, const BodyPiece *piece, const BodyModel *b, const BodyPlan *p);
+/* code[i] for every body (Emitter.code), from the text of their code pieces
+ * (emit_share.c); -1 after reporting an error of a template. */
+int emit_share_code(Emitter *E, int *code);
 
 /* ---- constants, user functions and material laws (emit_functions.c) */
 void emit_consts_fns(Emitter *E);

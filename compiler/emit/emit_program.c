@@ -6,9 +6,9 @@
  *
  * What differs between the targets comes from their tables (emit_target.c). */
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "emit.h"
-#include "emit_fracture.h"
 #include "emit_internal.h"
 #include "util/diag.h"
 
@@ -27,33 +27,45 @@ static int target_complete(const EmitTarget *t)
     return missing ? -1 : 0;
 }
 
-/* One piece of body b's code; -1 after reporting. */
-static int body_piece(Emitter *E, const BodyPiece *piece, const BodyModel *b, const BodyPlan *p)
+/* Body i's pieces: all of them where it runs its own code, else its own boundary conditions
+ * after a line that says whose code it runs; -1 after reporting. */
+static int body_pieces(Emitter *E, int i)
 {
-    switch (piece->kind) {
-    case PIECE_LAW: emit_material(E, b, p); return 0;
-    case PIECE_GRAVITY: emit_gravity(E, b, p); return 0;
-    case PIECE_TEMPLATE: return emit_template(E, piece->file, b, p);
-    case PIECE_LANES: return emit_template_lanes(E, piece->file, b, p);
-    case PIECE_BCS: emit_bc_passes(E, b, p); return 0;
-    case PIECE_RESTRICT: emit_fracture_restrict(E, b); return 0;
-    case PIECE_END: return 0;
-    }
+    const BodyModel *b = &E->m->bodies[i];
+    const int own = E->code[i] == i;
+    if (!own)
+        fprintf(E->out, "/* ==== body %s: the code of body %s (the same law, constants and passes) "
+                        "==== */\n\n",
+                b->name, emit_code_name(E, i));
+    for (const BodyPiece *piece = E->target->body; piece->kind != PIECE_END; piece++)
+        if ((own || !piece_is_code(piece->kind)) &&
+            emit_body_piece(E, piece, b, &E->plans[i]))
+            return -1;
     return 0;
 }
 
 int emit_program(const Plan *plan, Target t, int mpi, const char *templates_dir, FILE *out)
 {
-    Emitter E = {plan->model, plan, plan->bodies, templates_dir, out, emit_target(t), mpi};
+    Emitter E = {plan->model, plan, plan->bodies, templates_dir, out, emit_target(t), mpi, NULL};
     if (target_complete(E.target))
         return -1;
+    int *code = malloc((size_t)(plan->nbodies > 0 ? plan->nbodies : 1) * sizeof *code);
+    if (!code)
+        diag_fatal_noloc("out of memory");
+    if (!code || emit_share_code(&E, code)) {
+        free(code);
+        return -1;
+    }
+    E.code = code;
     E.target->header(&E);
     emit_consts_fns(&E);
-    for (int i = 0; i < plan->nbodies; i++)
-        for (const BodyPiece *piece = E.target->body; piece->kind != PIECE_END; piece++)
-            if (body_piece(&E, piece, &plan->model->bodies[i], &plan->bodies[i]))
-                return -1;
-    E.target->scene(&E);
-    emit_model_desc(&E);
-    return 0;
+    int rc = 0;
+    for (int i = 0; i < plan->nbodies && !rc; i++)
+        rc = body_pieces(&E, i);
+    if (!rc) {
+        E.target->scene(&E);
+        emit_model_desc(&E);
+    }
+    free(code);
+    return rc;
 }

@@ -5,8 +5,15 @@
 
 #include "emit_internal.h"
 
-/* One pass of body i in the step, as the target calls it. */
+/* One pass of body i's code in the step, as the target calls it: the functions of the body
+ * whose code it runs (emit_share.c)... */
 static void emit_pass(Emitter *E, int i, const char *pass, const char *args)
+{
+    E->target->pass(E->out, emit_code_name(E, i), pass, args);
+}
+
+/* ... and of its own: its boundary conditions and the bound of its phase field. */
+static void emit_own_pass(Emitter *E, int i, const char *pass, const char *args)
 {
     E->target->pass(E->out, E->m->bodies[i].name, pass, args);
 }
@@ -16,7 +23,7 @@ static void step_forces(Emitter *E, int i)
 {
     const BodyPlan *p = &E->plans[i];
     if (p->velocity_bcs)
-        emit_pass(E, i, "velocity_bcs", "b, t, dt");
+        emit_own_pass(E, i, "velocity_bcs", "b, t, dt");
     if (p->symplectic)
         emit_pass(E, i, "predict", "b, dt");
     /* the time since its law's last evaluation: the stress pass is at the step's start
@@ -26,8 +33,8 @@ static void step_forces(Emitter *E, int i)
     if (p->law_dt && !arg)
         fprintf(E->out, "        b->law_dt = %s;\n",
                 p->symplectic ? "0.5 * (s->dt_prev + dt)" : "s->dt_prev");
-    /* (its stress and momentum passes each through SPH_PASS on the CPU) */
-    fprintf(E->out, "        %s_forces(b%s);\n", E->m->bodies[i].name,
+    /* (its stress and momentum passes each through SPH_BODY_PASS on the CPU) */
+    fprintf(E->out, "        %s_forces(b%s);\n", emit_code_name(E, i),
             p->law_dt && arg ? ", law_dt" : "");
 }
 
@@ -36,10 +43,10 @@ static void step_update(Emitter *E, int i)
 {
     const BodyPlan *p = &E->plans[i];
     if (p->force_bcs)
-        emit_pass(E, i, "force_bcs", p->symplectic ? "b, t_half, dt" : "b, t, dt");
+        emit_own_pass(E, i, "force_bcs", p->symplectic ? "b, t_half, dt" : "b, t, dt");
     emit_pass(E, i, "update", "b, dt");
     if (p->restrict_phase)
-        emit_pass(E, i, "restrict", "b, t_next, dt");
+        emit_own_pass(E, i, "restrict", "b, t_next, dt");
 }
 
 void emit_step_bodies(Emitter *E, const char *body, const char *contact)
@@ -94,7 +101,7 @@ void emit_stress_output(Emitter *E, const char *from)
     fprintf(E->out, "/* Cauchy stress of every particle, for output%s. */\n"
                     "static void model_stress_output(sph_sim *s)\n{\n", from);
     for (int i = 0; i < E->m->nbodies; i++)
-        fprintf(E->out, "    %s_stress_output(&s->bodies[%d]);\n", E->m->bodies[i].name, i);
+        fprintf(E->out, "    %s_stress_output(&s->bodies[%d]);\n", emit_code_name(E, i), i);
     fputs("}\n\n", E->out);
 }
 

@@ -64,10 +64,11 @@ static void loop_close_cpu(FILE *out, const char *indent)
     fprintf(out, "%s}\n", indent);
 }
 
-/* Through SPH_PASS, which times the pass when the program runs with --profile (sphrt.h). */
+/* Through SPH_BODY_PASS, which times the pass when the program runs with --profile
+ * (sphrt.h), under the name of the step's body b (which may run another body's code). */
 static void pass_cpu(FILE *out, const char *body, const char *pass, const char *args)
 {
-    fprintf(out, "        SPH_PASS(%s_%s, (%s));\n", body, pass, args);
+    fprintf(out, "        SPH_BODY_PASS(b, \"%s\", %s_%s(%s));\n", pass, body, pass, args);
 }
 
 static const BodyPiece BODY_CPU[] = {
@@ -98,6 +99,7 @@ static const EmitTarget CPU = {
     .windows_in_loops = 0,
     .law_dt_argument = 0,
     .body = BODY_CPU,
+    .share_code = 1,
     .scene = emit_scene_cpu,
     .desc_prologue = "",
     .desc_members = "",
@@ -162,6 +164,7 @@ static const EmitTarget CUDA = {
     .windows_in_loops = 1,
     .law_dt_argument = 1,
     .body = BODY_CUDA,
+    .share_code = 0, /* (its profile names a kernel by the function that launches it) */
     .scene = emit_scene_cuda,
     /* C++ warns where C does not */
     .desc_prologue = "/* The descriptions name only the members a scene uses; the others are zero, "

@@ -8,9 +8,9 @@
  * stability checks and outputs between them).  sph_main prints the table at the end of the
  * run and writes it to summary.json (io/profile_report.c).  With profiling off a pass costs
  * one test of sph_profile_on. */
+#include <stdio.h>
 #include <string.h>
 
-#include "clock.h"
 #include "profile.h"
 
 int sph_profile_on;
@@ -34,11 +34,29 @@ int sph_profile_slot(const char *pass)
     return nentries++;
 }
 
-double sph_profile_start(int *slot, const char *pass)
+int sph_profile_body_slot(const char *body, const char *pass)
 {
-    if (*slot < 0 || entry[*slot].phase != sph_profile_phase)
-        *slot = sph_profile_slot(pass);
-    return sph_wall_time();
+    static char name[SPH_PROFILE_MAX][96]; /* the entries' names "BODY_PASS" */
+    static const char *of_body[SPH_PROFILE_MAX], *of_pass[SPH_PROFILE_MAX];
+    for (int k = 0; k < nentries; k++) /* the same strings as before: no string compared */
+        if (entry[k].phase == sph_profile_phase && of_body[k] == body && of_pass[k] == pass)
+            return k;
+    char want[96];
+    snprintf(want, sizeof want, "%s_%s", body, pass);
+    const int k = sph_profile_slot(want);
+    if (entry[k].name == want) { /* a new entry: its name kept here */
+        memcpy(name[k], want, sizeof want);
+        entry[k].name = name[k];
+    }
+    of_body[k] = body, of_pass[k] = pass;
+    return k;
+}
+
+int sph_profile_slot_at(int *at, const char *pass)
+{
+    if (*at < 0 || entry[*at].phase != sph_profile_phase)
+        *at = sph_profile_slot(pass);
+    return *at;
 }
 
 void sph_profile_add(int slot, double seconds)

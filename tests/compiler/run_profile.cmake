@@ -3,7 +3,7 @@
 # The CPU program and the CUDA target's emulated one (the device's passes run on the host,
 # timed by the events of runtime/cuda/launch.h) run the model to END with --profile.  Each must
 # list every pass of PASSES in summary.json's "profile", in the steps, and print the table;
-# on the CPU every one of them once per step (SPH_PASS around each call of the step), and
+# on the CPU every one of them once per step (SPH_BODY_PASS around each call of the step), and
 # the passes' times add up to at most the step timer's and to most of it (the passes are
 # the step; the rest is the choice of the time step and the loop).  The emulated program
 # launches each at least once per step, and its monitor's pass runs between the steps (at
