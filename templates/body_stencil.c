@@ -5,8 +5,8 @@
  * sum over the offsets, and for one offset the same arithmetic on consecutive particles,
  * the table entry a constant.  The gradient pass leaves their A_i (and Laplacian) to the
  * stress pass, which takes them from the stencil (@B@_stencil_gradient); the momentum pass
- * does their half lists offset by offset (@B@_stencil_momentum).  The sums are the lists'
- * sums in another order (the program's --no-stencil keeps the lists' order;
+ * does their half lists four offsets at a time (@B@_stencil_momentum).  The sums are the
+ * lists' sums in another order (the program's --no-stencil keeps the lists' order;
  * tests/physics/run_stencil.cmake compares the two).  Four particles a step, in vectors of
  * eight doubles, which the particles' x, y pairs fill as they lie in memory (the compiler
  * vectorises such loops only with gathers, and no faster than the lists); in single
@@ -145,76 +145,135 @@ static void @B@_stencil_gradient(sph_body *b, int i0, int i1)
 //@if STENCIL_MOMENTUM
 /* The momentum pass (eq. 55, 57-60; templates/physics/pairs.c has the physics) on
  * the half lists of run particles a .. a + 4 t - 1 (at most @B@_STENCIL particles; the rest
- * of a run goes by the lists): offset by offset, each pair's force added to i, and after
- * the offset's particles subtracted from their j = i + o, as the lists do.  Four pairs a
- * step: Q_i + Q_j of two particles fill a vector (column 0, column 1, column 0, column 1),
- * times (w0, w0, w1, w1, ...) the columns' shares, whose sums two shuffles pair up into the
- * forces' (x, y, x, y, ...), the layout of v and the accelerations.  Returns the number of
- * particles done (none in single precision) and adds the pairs' f_visc . (v_i - v_j) to
- * *power. */
-enum { @B@_STENCIL = 64 };
+ * of a run goes by the lists), four particles a step: Q_i + Q_j of two particles fill a
+ * vector (column 0, column 1, column 0, column 1), times (w0, w0, w1, w1, ...) the columns'
+ * shares, whose sums two shuffles pair up into the forces' (x, y, x, y, ...), the layout of
+ * v and the accelerations.
+ *
+ * The offsets go in groups of four (the last few one by one): a step loads the four
+ * particles' own values once for the group's four offsets and adds the four forces to
+ * their accelerations in registers; after the group each offset's forces are subtracted
+ * from their j = i + o, as the lists do.  Offset by offset, each step loaded the own values
+ * again and read and wrote the accelerations: the flyer plates' momentum pass took 1.1 times
+ * as long.  The order of the sums is the groups' (the same on any number of threads). */
+enum { @B@_STENCIL = 64, @B@_GROUP = 4 };
+
+#ifndef SPH_SINGLE
+/* Four run particles' own values, for every offset of a group. */
+typedef struct {
+    @B@_v8 q0, q1; /* Q of particles 0, 1 and of 2, 3 (columns side by side) */
+//@if VISCOSITY
+    @B@_v8 c0, c1, v; /* cof F alike; v (x, y of each) */
+    @B@_v4 cs;        /* Cs */
+//@endif
+} @B@_stencil_own;
+
+/* The four pairs (i, j), ..., (i + 3, j + 3) of one offset: their forces on i into *force
+ * (x and y of each side by side; a pointer: a returned vector would change the ABI where
+ * vectors of eight are not), and their viscous power added to *pv. */
+static inline __attribute__((always_inline)) void
+@B@_stencil_pairs(const sph_body *b, const @B@_stencil_own *own, int j, @B@_v8 w, double g,
+                  double inv_rho, @B@_v8 *pv, @B@_v8 *force)
+{
+    typedef @B@_v8 v8;
+    const double *restrict Q = b->Q;
+    const v8 q0 = (own->q0 + *(const v8 *)(Q + 4 * j)) * w;
+    const v8 q1 = (own->q1 + *(const v8 *)(Q + 4 * j + 8)) * w;
+    v8 f = (__builtin_shufflevector(q0, q1, 0, 1, 4, 5, 8, 9, 12, 13) +
+            __builtin_shufflevector(q0, q1, 2, 3, 6, 7, 10, 11, 14, 15)) *
+           inv_rho;
+//@if VISCOSITY
+    typedef @B@_v4 v4;
+    const double *restrict Cv = b->Cv, *restrict Cs = b->Cs, *restrict v = b->v;
+    const v8 c0 = (own->c0 + *(const v8 *)(Cv + 4 * j)) * w;
+    const v8 c1 = (own->c1 + *(const v8 *)(Cv + 4 * j + 8)) * w;
+    const v8 fv = __builtin_shufflevector(c0, c1, 0, 1, 4, 5, 8, 9, 12, 13) +
+                  __builtin_shufflevector(c0, c1, 2, 3, 6, 7, 10, 11, 14, 15);
+    const v8 p = (own->v - *(const v8 *)(v + 2 * j)) * fv;
+    const v8 vw = p + __builtin_shufflevector(p, p, 1, 0, 3, 2, 5, 4, 7, 6);
+    const v4 cs4 = own->cs + *(const v4 *)(Cs + j);
+    const v8 cs = __builtin_shufflevector(cs4, cs4, 0, 0, 1, 1, 2, 2, 3, 3);
+    /* half the viscous pressure, each pair's in its x and y lanes (eq. 58-60,
+     * templates/physics/pairs.c) */
+    const v8 hpi = @B@_viscous_pressure_v8(g, cs, vw);
+    f -= hpi * fv;
+    *pv -= hpi * vw;
+//@else
+    (void)g, (void)pv;
+//@endif
+    *force = f;
+}
+
+/* Offsets q .. q + n - 1 (n a constant at each call: its loops unroll) of the run
+ * particles a .. a + t - 1. */
+static inline __attribute__((always_inline)) void
+@B@_stencil_group(sph_body *b, int a, int t, int q, const int n, double inv_rho, @B@_v8 *pv)
+{
+    typedef @B@_v8 v8;
+    double *restrict acc = b->a;
+    double f_run[@B@_GROUP][2 * @B@_STENCIL]; /* each offset's forces on i, x and y */
+    int o[@B@_GROUP];
+    v8 w[@B@_GROUP];
+    double g[@B@_GROUP] = {0};
+    for (int u = 0; u < n; u++) {
+        const int k = b->st_k[q + u];
+        const double w0 = b->wtab[2 * k], w1 = b->wtab[2 * k + 1];
+        o[u] = b->st_o[q + u];
+        w[u] = (v8){w0, w0, w1, w1, w0, w0, w1, w1};
+//@if VISCOSITY
+        g[u] = b->gtab[k];
+//@endif
+    }
+    for (int i = a; i < a + t; i += 4) {
+        @B@_stencil_own own;
+        own.q0 = *(const v8 *)(b->Q + 4 * i), own.q1 = *(const v8 *)(b->Q + 4 * i + 8);
+//@if VISCOSITY
+        own.c0 = *(const v8 *)(b->Cv + 4 * i), own.c1 = *(const v8 *)(b->Cv + 4 * i + 8);
+        own.v = *(const v8 *)(b->v + 2 * i);
+        own.cs = *(const @B@_v4 *)(b->Cs + i);
+//@endif
+        v8 ai = *(const v8 *)(acc + 2 * i);
+        for (int u = 0; u < n; u++) {
+            v8 f;
+            @B@_stencil_pairs(b, &own, i + o[u], w[u], g[u], inv_rho, pv, &f);
+            ai += f;
+            *(v8 *)(f_run[u] + 2 * (i - a)) = f;
+        }
+        *(v8 *)(acc + 2 * i) = ai;
+    }
+    for (int u = 0; u < n; u++) {
+        double *restrict acc_j = acc + 2 * (a + o[u]);
+        for (int c = 0; c < 2 * t; c += 8)
+            *(v8 *)(acc_j + c) -= *(const v8 *)(f_run[u] + c);
+    }
+}
+#endif
+
+/* Returns the number of particles done (none in single precision) and adds the pairs'
+ * f_visc . (v_i - v_j) to *power. */
 static int @B@_stencil_momentum(sph_body *b, int a, int e, double *power)
 {
 #ifdef SPH_SINGLE
     (void)b, (void)a, (void)e, (void)power;
     return 0;
 #else
-    typedef @B@_v8 v8;
     const int t = (e - a) / 4 * 4 < @B@_STENCIL ? (e - a) / 4 * 4 : @B@_STENCIL;
-    const double *restrict Q = b->Q;
-    double *restrict acc = b->a;
-    double f_run[2 * @B@_STENCIL]; /* the offset's forces on i, x and y */
     /* (divided once here: in the loop the compiler divided every four pairs, unable to tell
      * that the stores to the accelerations leave b->rho0 as it was) */
     const double inv_rho = 1.0 / b->rho0;
-//@if VISCOSITY
-    typedef @B@_v4 v4;
-    const double *restrict Cv = b->Cv, *restrict Cs = b->Cs, *restrict v = b->v;
-    v8 pv = {0}; /* (each pair's twice: x and y lanes) */
-//@endif
-    for (int q = 0; q < b->st_m; q++) {
-        const int o = b->st_o[q], k = b->st_k[q];
-        const double w0 = b->wtab[2 * k], w1 = b->wtab[2 * k + 1];
-        const v8 w = {w0, w0, w1, w1, w0, w0, w1, w1};
-//@if VISCOSITY
-        const double g = b->gtab[k];
-//@endif
-        for (int i = a; i < a + t; i += 4) {
-            const int j = i + o;
-            const v8 q0 = (*(const v8 *)(Q + 4 * i) + *(const v8 *)(Q + 4 * j)) * w;
-            const v8 q1 = (*(const v8 *)(Q + 4 * i + 8) + *(const v8 *)(Q + 4 * j + 8)) * w;
-            v8 f = (__builtin_shufflevector(q0, q1, 0, 1, 4, 5, 8, 9, 12, 13) +
-                    __builtin_shufflevector(q0, q1, 2, 3, 6, 7, 10, 11, 14, 15)) *
-                   inv_rho;
-//@if VISCOSITY
-            const v8 c0 = (*(const v8 *)(Cv + 4 * i) + *(const v8 *)(Cv + 4 * j)) * w;
-            const v8 c1 = (*(const v8 *)(Cv + 4 * i + 8) + *(const v8 *)(Cv + 4 * j + 8)) * w;
-            const v8 fv = __builtin_shufflevector(c0, c1, 0, 1, 4, 5, 8, 9, 12, 13) +
-                          __builtin_shufflevector(c0, c1, 2, 3, 6, 7, 10, 11, 14, 15);
-            const v8 p = (*(const v8 *)(v + 2 * i) - *(const v8 *)(v + 2 * j)) * fv;
-            const v8 vw = p + __builtin_shufflevector(p, p, 1, 0, 3, 2, 5, 4, 7, 6);
-            const v4 cs4 = *(const v4 *)(Cs + i) + *(const v4 *)(Cs + j);
-            const v8 cs = __builtin_shufflevector(cs4, cs4, 0, 0, 1, 1, 2, 2, 3, 3);
-            /* half the viscous pressure, each pair's in its x and y lanes (eq. 58-60,
-             * templates/physics/pairs.c) */
-            const v8 hpi = @B@_viscous_pressure_v8(g, cs, vw);
-            f -= hpi * fv;
-            pv -= hpi * vw;
-//@endif
-            *(v8 *)(acc + 2 * i) += f;
-            *(v8 *)(f_run + 2 * (i - a)) = f;
-        }
-        double *restrict acc_j = acc + 2 * (a + o);
-        for (int c = 0; c < 2 * t; c += 8)
-            *(v8 *)(acc_j + c) -= *(const v8 *)(f_run + c);
-    }
+    @B@_v8 pv = {0}; /* (each pair's twice: x and y lanes) */
+    int q = 0;
+    for (; q + @B@_GROUP <= b->st_m; q += @B@_GROUP)
+        @B@_stencil_group(b, a, t, q, @B@_GROUP, inv_rho, &pv);
+    for (; q < b->st_m; q++)
+        @B@_stencil_group(b, a, t, q, 1, inv_rho, &pv);
 //@if VISCOSITY
     double sum = 0;
     for (int c = 0; c < 8; c++)
         sum += pv[c];
     *power += 0.5 * sum;
 //@else
-    (void)power;
+    (void)power, (void)pv;
 //@endif
     return t;
 #endif
