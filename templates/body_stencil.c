@@ -171,9 +171,9 @@ typedef struct {
 /* The four pairs (i, j), ..., (i + 3, j + 3) of one offset: their forces on i into *force
  * (x and y of each side by side; a pointer: a returned vector would change the ABI where
  * vectors of eight are not), and their viscous power added to *pv. */
-static inline __attribute__((always_inline)) void
-@B@_stencil_pairs(const sph_body *b, const @B@_stencil_own *own, int j, @B@_v8 w, double g,
-                  double inv_rho, @B@_v8 *pv, @B@_v8 *force)
+SPH_FLAT void @B@_stencil_pairs(const sph_body *b, const @B@_stencil_own *own, int j,
+                                @B@_v8 w, double g, double inv_rho, @B@_v8 *pv,
+                                @B@_v8 *force)
 {
     typedef @B@_v8 v8;
     const double *restrict Q = b->Q;
@@ -206,8 +206,8 @@ static inline __attribute__((always_inline)) void
 
 /* Offsets q .. q + n - 1 (n a constant at each call: its loops unroll) of the run
  * particles a .. a + t - 1. */
-static inline __attribute__((always_inline)) void
-@B@_stencil_group(sph_body *b, int a, int t, int q, const int n, double inv_rho, @B@_v8 *pv)
+SPH_FLAT void @B@_stencil_group(sph_body *b, int a, int t, int q, const int n,
+                                double inv_rho, @B@_v8 *pv)
 {
     typedef @B@_v8 v8;
     double *restrict acc = b->a;

@@ -50,9 +50,11 @@ int emit_program(const Plan *plan, Target t, int mpi, const char *templates_dir,
     if (target_complete(E.target))
         return -1;
     int *code = malloc((size_t)(plan->nbodies > 0 ? plan->nbodies : 1) * sizeof *code);
-    if (!code)
+    if (!code) {
         diag_fatal_noloc("out of memory");
-    if (!code || emit_share_code(&E, code)) {
+        return -1;
+    }
+    if (emit_share_code(&E, code)) {
         free(code);
         return -1;
     }

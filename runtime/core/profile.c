@@ -9,6 +9,7 @@
  * run and writes it to summary.json (io/profile_report.c).  With profiling off a pass costs
  * one test of sph_profile_on. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "profile.h"
@@ -36,18 +37,17 @@ int sph_profile_slot(const char *pass)
 
 int sph_profile_body_slot(const char *body, const char *pass)
 {
-    static char name[SPH_PROFILE_MAX][96]; /* the entries' names "BODY_PASS" */
     static const char *of_body[SPH_PROFILE_MAX], *of_pass[SPH_PROFILE_MAX];
     for (int k = 0; k < nentries; k++) /* the same strings as before: no string compared */
         if (entry[k].phase == sph_profile_phase && of_body[k] == body && of_pass[k] == pass)
             return k;
-    char want[96];
-    snprintf(want, sizeof want, "%s_%s", body, pass);
+    char *want = malloc(strlen(body) + strlen(pass) + 2); /* "BODY_PASS" */
+    if (!want)
+        return sph_profile_slot(pass); /* (out of memory: under the pass's name alone) */
+    sprintf(want, "%s_%s", body, pass);
     const int k = sph_profile_slot(want);
-    if (entry[k].name == want) { /* a new entry: its name kept here */
-        memcpy(name[k], want, sizeof want);
-        entry[k].name = name[k];
-    }
+    if (entry[k].name != want) /* an entry of that name already: it keeps its own */
+        free(want);
     of_body[k] = body, of_pass[k] = pass;
     return k;
 }

@@ -57,6 +57,15 @@ function(body_part name out code_of)
   set(${code_of} ${of} PARENT_SCOPE)
 endfunction()
 
+# The features of a plan's entry for a body, those of its own code (boundary conditions,
+# measurement planes) left out: what two bodies that run one code must have alike.
+function(code_features entry out)
+  string(REGEX MATCH "features: ([^\n]*)" _ "${entry}")
+  string(REGEX REPLACE "(velocity_bcs|force_bcs|restrict|measure|bc_fns)=[0-9]+ ?" "" f
+         "${CMAKE_MATCH_1}")
+  set(${out} "${f}" PARENT_SCOPE)
+endfunction()
+
 string(REGEX MATCHALL "body [A-Za-z0-9_]+: dim [23][^\n]*\n[^\n]*features:[^\n]*" bodies "${plan}")
 foreach(entry ${bodies})
   string(REGEX MATCH "^body ([A-Za-z0-9_]+)" _ "${entry}")
@@ -72,20 +81,10 @@ foreach(entry ${bodies})
     endif()
     foreach(e ${bodies})
       if(e MATCHES "^body ${code_body}:")
-        set(that "${e}")
+        code_features("${e}" features_that)
       endif()
     endforeach()
-    foreach(e mine that)
-      if(e STREQUAL mine)
-        set(line "${entry}")
-      else()
-        set(line "${that}")
-      endif()
-      string(REGEX MATCH "features: ([^\n]*)" _ "${line}")
-      string(REGEX REPLACE "(velocity_bcs|force_bcs|restrict|measure|bc_fns)=[0-9]+ ?" "" f
-             "${CMAKE_MATCH_1}")
-      set(features_${e} "${f}")
-    endforeach()
+    code_features("${entry}" features_mine)
     if(NOT features_mine STREQUAL features_that)
       message(FATAL_ERROR "${stem}/${body}: runs the code of ${code_body}, whose features differ:\n"
                           "${features_mine}\n${features_that}")
